@@ -1,0 +1,395 @@
+#include "cli.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "ogive/closed_form.hpp"
+#include "ogive/csv.hpp"
+#include "ogive/solve.hpp"
+#include "values.hpp"
+
+namespace ogive::cli {
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Scene options: every numeric one takes a value, a list or a range; the scenes are their product.
+
+struct SceneParameters {
+  std::string curve;
+  double eccentricity, span, thickness_ratio, support_displacement_ratio;
+  double youngs_modulus, poisson_ratio, density, gravity, shear_coefficient;
+  bool plane_strain;
+};
+
+// A numeric scene option: its flag, its text as given, the rule its values must meet.
+struct Axis {
+  std::string flag;
+  std::string text;
+  double SceneParameters::*field;
+  std::function<bool(double)> allowed;
+  std::string rule;
+  std::vector<double> values{};
+};
+
+bool positive(double v) { return v > 0; }
+
+struct SceneOptions {
+  std::string curve = "pointed";
+  bool plane_strain = false;
+  std::vector<Axis> axes{
+      // Order: the last axis varies fastest in the output.
+      {"--span", "10", &SceneParameters::span, positive, "must be > 0 (m)"},
+      {"--youngs-modulus", "14.8e9", &SceneParameters::youngs_modulus, positive, "must be > 0 (Pa)"},
+      {"--poisson-ratio", "0.2", &SceneParameters::poisson_ratio,
+       [](double v) { return v > -1 && v <= 0.5; }, "must lie in (-1, 0.5]"},
+      {"--density", "2348", &SceneParameters::density, positive, "must be > 0 (kg/m^3)"},
+      {"--gravity", "9.81", &SceneParameters::gravity, positive, "must be > 0 (m/s^2)"},
+      {"--shear-coefficient", "0.8333333333333334", &SceneParameters::shear_coefficient,
+       [](double v) { return v > 0 && v <= 2; }, "must lie in (0, 2]"},
+      {"--thickness-ratio", "0.08", &SceneParameters::thickness_ratio,
+       [](double v) { return v > 0 && v < 1; }, "must lie in (0, 1) (t/L)"},
+      {"--support-displacement-ratio", "0", &SceneParameters::support_displacement_ratio,
+       [](double v) { return std::abs(v) <= 0.01; },
+       "must lie in [-0.01, 0.01] (d/L; beyond, small-displacement theory does not hold)"},
+      {"--eccentricity", "0", &SceneParameters::eccentricity, [](double v) { return v >= 0 && v <= 100; },
+       "must lie in [0, 100]"},
+  };
+};
+
+const std::vector<std::string> kCurves = {"pointed", "semicircular"};
+
+void add_scene_options(CLI::App& cmd, SceneOptions& o) {
+  cmd.add_option("--curve", o.curve, "generator curve: pointed or semicircular")->capture_default_str();
+  for (Axis& a : o.axes)
+    cmd.add_option(a.flag, a.text, "value, list a,b,c or range start:stop:count")->capture_default_str();
+  cmd.add_flag("--plane-strain", o.plane_strain, "plane strain: E / (1 - nu^2) for axial and bending stiffness");
+}
+
+std::vector<SceneParameters> scene_grid(SceneOptions& o, const CLI::App& cmd) {
+  if (std::find(kCurves.begin(), kCurves.end(), o.curve) == kCurves.end())
+    throw UsageError(fmt::format("--curve: unknown curve '{}' (known: pointed, semicircular)", o.curve));
+  std::size_t total = 1;
+  for (Axis& a : o.axes) {
+    a.values = parse_values(a.text, a.flag);
+    for (double v : a.values)
+      if (!a.allowed(v)) throw UsageError(fmt::format("{}: {}, got {}", a.flag, a.rule, v));
+    total *= a.values.size();
+    if (total > kMaxValues)
+      throw UsageError(fmt::format("{}: the options give more than {} scenes", a.flag, kMaxValues));
+  }
+  if (o.curve == "semicircular" && cmd.count("--eccentricity") > 0)
+    throw UsageError("--eccentricity: applies to --curve pointed only");
+  std::vector<SceneParameters> grid;
+  grid.reserve(total);
+  std::vector<std::size_t> index(o.axes.size(), 0);
+  for (std::size_t n = 0; n < total; ++n) {
+    SceneParameters p{o.curve, 0, 0, 0, 0, 0, 0, 0, 0, 0, o.plane_strain};
+    for (std::size_t i = 0; i < o.axes.size(); ++i) p.*(o.axes[i].field) = o.axes[i].values[index[i]];
+    grid.push_back(p);
+    for (std::size_t i = o.axes.size(); i-- > 0;) {  // odometer: the last axis turns fastest
+      if (++index[i] < o.axes[i].values.size()) break;
+      index[i] = 0;
+    }
+  }
+  return grid;
+}
+
+Scene make_scene(const SceneParameters& p) {
+  Scene scene;
+  scene.curve = make_pointed(p.span, p.curve == "semicircular" ? 0.0 : p.eccentricity);
+  scene.thickness = p.thickness_ratio * p.span;
+  scene.support_displacement = p.support_displacement_ratio * p.span;
+  scene.material = {p.youngs_modulus, p.poisson_ratio, p.density, p.gravity, p.shear_coefficient, p.plane_strain};
+  return scene;
+}
+
+// Builds and validates every scene before anything is solved or printed.
+std::vector<Scene> make_scenes(const std::vector<SceneParameters>& grid) {
+  std::vector<Scene> scenes;
+  scenes.reserve(grid.size());
+  for (const SceneParameters& p : grid) {
+    Scene scene = make_scene(p);
+    try {
+      scene.validate();
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(fmt::format("scene with --eccentricity {} --thickness-ratio {} --span {}: {}", p.eccentricity,
+                                   p.thickness_ratio, p.span, e.what()));
+    }
+    scenes.push_back(std::move(scene));
+  }
+  return scenes;
+}
+
+const char* kSceneHeader =
+    "curve,eccentricity,span,thickness_ratio,support_displacement_ratio,youngs_modulus,poisson_ratio,"
+    "density,gravity,shear_coefficient,plane_strain";
+
+void add_scene_columns(CsvRow& row, const SceneParameters& p) {
+  row.add(p.curve).add(p.eccentricity).add(p.span).add(p.thickness_ratio).add(p.support_displacement_ratio);
+  row.add(p.youngs_modulus).add(p.poisson_ratio).add(p.density).add(p.gravity).add(p.shear_coefficient);
+  row.add(p.plane_strain ? "1" : "0");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Solver options, bound straight into ogive::Options.
+
+const std::map<std::string, Method> kMethods = {{"closed-form", Method::closed_form},
+                                                {"shooting", Method::shooting},
+                                                {"multiple-shooting", Method::multiple_shooting},
+                                                {"auto", Method::automatic}};
+const std::map<std::string, Integrator> kIntegrators = {{"adams", Integrator::adams}, {"bdf", Integrator::bdf}};
+
+void add_solver_options(CLI::App& cmd, Options& o, bool with_method = true) {
+  if (with_method)
+    cmd.add_option("--method", o.method, "closed-form, shooting, multiple-shooting or auto")
+        ->transform(CLI::CheckedTransformer(kMethods, CLI::ignore_case))
+        ->default_str("auto");
+  cmd.add_option("--integrator", o.integrator, "CVODE's method: adams or bdf")
+      ->transform(CLI::CheckedTransformer(kIntegrators, CLI::ignore_case))
+      ->default_str("adams");
+  cmd.add_option("--rtol", o.rtol, "relative tolerance, 1e-14 .. 0.1")->capture_default_str();
+  cmd.add_option("--atol", o.atol, "absolute tolerance of the scaled state (0: rtol * 1e-3)")->capture_default_str();
+  cmd.add_option("--segments", o.segments, "multiple-shooting segments over the half arch")->capture_default_str();
+}
+
+void check_options(const Options& o) {
+  std::string why;
+  if (!o.is_valid(&why)) {
+    // Options name their fields as the CLI spells them, less the dashes.
+    std::string flag = "--" + why;
+    std::replace(flag.begin(), flag.begin() + static_cast<long>(flag.find(':')), '_', '-');
+    throw UsageError(flag);
+  }
+}
+
+const char* kSolutionHeader =
+    "method,integrator,rtol,status,H,V,H_over_V,steps,rhs_evaluations,segments,condition_estimate,"
+    "boundary_residual,equilibrium_residual";
+
+void add_solution_columns(CsvRow& row, const Solution& sol, const Options& o) {
+  const bool numeric = sol.method != Method::closed_form;
+  row.add(to_string(sol.method)).add(numeric ? to_string(o.integrator) : "none").add(o.rtol);
+  row.add(to_string(sol.status)).add(sol.H).add(sol.V).add(sol.H_over_V);
+  const Diagnostics& d = sol.diagnostics;
+  row.add(d.steps).add(d.rhs_evaluations).add(d.segments).add(d.condition_estimate);
+  row.add(d.boundary_residual).add(d.equilibrium_residual);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Subcommands.
+
+int run_thrust(SceneOptions& so, const CLI::App& cmd, const Options& o, std::ostream& out) {
+  check_options(o);
+  const std::vector<SceneParameters> grid = scene_grid(so, cmd);
+  const std::vector<Scene> scenes = make_scenes(grid);
+  std::string text = std::string(kSceneHeader) + "," + kSolutionHeader + "\n";
+  CsvRow row;
+  bool all_ok = true;
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    const Solution sol = solve(scenes[i], o);
+    all_ok = all_ok && sol.ok();
+    add_scene_columns(row, grid[i]);
+    add_solution_columns(row, sol, o);
+    text += row.take();
+  }
+  out << text;
+  return all_ok ? kExitOk : kExitNotConverged;
+}
+
+int run_profile(SceneOptions& so, const CLI::App& cmd, Options o, std::ostream& out) {
+  check_options(o);
+  const std::vector<SceneParameters> grid = scene_grid(so, cmd);
+  if (grid.size() * static_cast<std::size_t>(o.stations) > 10 * kMaxValues)
+    throw UsageError(fmt::format("--stations: {} scenes x {} stations exceed {} rows", grid.size(), o.stations,
+                                 10 * kMaxValues));
+  const std::vector<Scene> scenes = make_scenes(grid);
+  std::string text = std::string(kSceneHeader) +
+                     ",method,status,H_over_V,s,x,y,theta,Ux,Uy,psi,N,V,M,e,thrust_x,thrust_y\n";
+  CsvRow row;
+  bool all_ok = true;
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    const Solution sol = solve(scenes[i], o);
+    all_ok = all_ok && sol.ok();
+    if (sol.profile.empty()) {  // unsolved: one row that says so, no numbers
+      add_scene_columns(row, grid[i]);
+      row.add(to_string(sol.method)).add(to_string(sol.status)).add(sol.H_over_V);
+      for (int k = 0; k < 14; ++k) row.add(std::numeric_limits<double>::quiet_NaN());
+      text += row.take();
+      continue;
+    }
+    for (const ArchState& st : sol.profile) {
+      add_scene_columns(row, grid[i]);
+      row.add(to_string(sol.method)).add(to_string(sol.status)).add(sol.H_over_V);
+      row.add(st.s).add(st.x).add(st.y).add(st.theta).add(st.Ux).add(st.Uy).add(st.psi);
+      row.add(st.N).add(st.V).add(st.M).add(st.e).add(st.thrust_x).add(st.thrust_y);
+      text += row.take();
+    }
+  }
+  out << text;
+  return all_ok ? kExitOk : kExitNotConverged;
+}
+
+// Every applicable method on every scene, against the closed form.
+int run_check(SceneOptions& so, const CLI::App& cmd, const Options& base, std::ostream& out) {
+  check_options(base);
+  const std::vector<SceneParameters> grid = scene_grid(so, cmd);
+  const std::vector<Scene> scenes = make_scenes(grid);
+  std::string text = std::string(kSceneHeader) +
+                     ",method,integrator,rtol,segments,status,H_over_V,reference_H_over_V,relative_difference,"
+                     "tolerance,within_tolerance\n";
+  CsvRow row;
+  bool all_ok = true;
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    Options ref_options = base;
+    ref_options.method = Method::closed_form;
+    const Solution reference = solve(scenes[i], ref_options);
+    for (Method m : {Method::closed_form, Method::shooting, Method::multiple_shooting}) {
+      Options o = base;
+      o.method = m;
+      const Solution sol = solve(scenes[i], o);
+      const double diff = std::abs(sol.H_over_V - reference.H_over_V) / std::abs(reference.H_over_V);
+      const double tolerance = 10.0 * o.rtol;
+      const bool within = sol.ok() && reference.ok() && diff <= tolerance;
+      all_ok = all_ok && within;
+      add_scene_columns(row, grid[i]);
+      row.add(to_string(sol.method)).add(m == Method::closed_form ? "none" : to_string(o.integrator)).add(o.rtol);
+      row.add(sol.diagnostics.segments).add(to_string(sol.status)).add(sol.H_over_V).add(reference.H_over_V);
+      row.add(diff).add(tolerance).add(within ? "yes" : "no");
+      text += row.take();
+    }
+  }
+  out << text;
+  return all_ok ? kExitOk : kExitNotConverged;
+}
+
+// Time per solve (median over repeats) and error against the closed form, per method and rtol.
+int run_bench(SceneOptions& so, const CLI::App& cmd, const Options& base, const std::string& methods_text,
+              const std::string& rtols_text, int repeats, std::ostream& out) {
+  check_options(base);
+  if (repeats < 1 || repeats > 100000) throw UsageError(fmt::format("--repeats: must lie in [1, 100000], got {}", repeats));
+  std::vector<Method> methods;
+  for (std::size_t pos = 0; pos <= methods_text.size();) {
+    const std::size_t comma = std::min(methods_text.find(',', pos), methods_text.size());
+    const std::string name = methods_text.substr(pos, comma - pos);
+    const auto it = kMethods.find(name);
+    if (it == kMethods.end() || it->second == Method::automatic)
+      throw UsageError(fmt::format("--methods: unknown method '{}' (closed-form, shooting, multiple-shooting)", name));
+    methods.push_back(it->second);
+    pos = comma + 1;
+  }
+  const std::vector<double> rtols = parse_values(rtols_text, "--rtols");
+  for (double r : rtols)
+    if (!(r >= 1e-14 && r <= 0.1)) throw UsageError(fmt::format("--rtols: must lie in [1e-14, 0.1], got {}", r));
+  const std::vector<SceneParameters> grid = scene_grid(so, cmd);
+  const std::vector<Scene> scenes = make_scenes(grid);
+  std::string text = std::string(kSceneHeader) +
+                     ",method,integrator,rtol,segments,status,H_over_V,error_H_over_V,median_seconds,steps,"
+                     "rhs_evaluations,condition_estimate\n";
+  CsvRow row;
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    Options ref_options = base;
+    ref_options.method = Method::closed_form;
+    const Solution reference = solve(scenes[i], ref_options);
+    for (Method m : methods) {
+      for (double rtol : rtols) {
+        if (m == Method::closed_form && rtol != rtols.front()) continue;  // the closed form has no tolerance
+        Options o = base;
+        o.method = m;
+        o.rtol = rtol;
+        std::vector<double> seconds;
+        Solution sol;
+        for (int r = 0; r < repeats; ++r) {
+          const auto t0 = std::chrono::steady_clock::now();
+          sol = solve(scenes[i], o);
+          seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        }
+        std::nth_element(seconds.begin(), seconds.begin() + repeats / 2, seconds.end());
+        add_scene_columns(row, grid[i]);
+        row.add(to_string(m)).add(m == Method::closed_form ? "none" : to_string(o.integrator));
+        row.add(m == Method::closed_form ? 0.0 : rtol).add(sol.diagnostics.segments).add(to_string(sol.status));
+        row.add(sol.H_over_V).add(std::abs(sol.H_over_V - reference.H_over_V) / std::abs(reference.H_over_V));
+        row.add(seconds[repeats / 2]).add(sol.diagnostics.steps).add(sol.diagnostics.rhs_evaluations);
+        row.add(sol.diagnostics.condition_estimate);
+        text += row.take();
+      }
+    }
+  }
+  out << text;
+  return kExitOk;
+}
+
+}  // namespace
+
+int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  CLI::App app{"ogive: thrust and line of thrust of arches and barrel vaults (CSV on stdout)", "ogive"};
+  app.require_subcommand(1);
+  SceneOptions thrust_scene, profile_scene, check_scene, bench_scene;
+  Options thrust_options, profile_options, check_options_, bench_options;
+  profile_options.stations = 101;
+
+  CLI::App* thrust = app.add_subcommand("thrust", "reactions H, V and H/V: one row per scene");
+  add_scene_options(*thrust, thrust_scene);
+  add_solver_options(*thrust, thrust_options);
+
+  CLI::App* profile = app.add_subcommand("profile", "N, V, M, e and the thrust line along the arch");
+  add_scene_options(*profile, profile_scene);
+  add_solver_options(*profile, profile_options);
+  profile->add_option("--stations", profile_options.stations, "stations, springing to springing (>= 2)")
+      ->capture_default_str();
+
+  CLI::App* check = app.add_subcommand("check", "every method's H/V against the closed form");
+  add_scene_options(*check, check_scene);
+  add_solver_options(*check, check_options_, false);
+
+  CLI::App* bench = app.add_subcommand("bench", "median time per solve and true error, per method and rtol");
+  add_scene_options(*bench, bench_scene);
+  add_solver_options(*bench, bench_options, false);
+  std::string bench_methods = "closed-form,shooting,multiple-shooting", bench_rtols = "1e-6,1e-8,1e-10";
+  int repeats = 21;
+  bench->add_option("--methods", bench_methods, "comma-separated methods")->capture_default_str();
+  bench->add_option("--rtols", bench_rtols, "tolerances: list or range")->capture_default_str();
+  bench->add_option("--repeats", repeats, "solves per row; the median time is printed")->capture_default_str();
+
+  std::vector<const char*> argv{"ogive"};
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  try {
+    app.parse(static_cast<int>(argv.size()), argv.data());
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e, out, err);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e, out, err);
+  } catch (const CLI::ParseError& e) {
+    std::string what = e.what();
+    std::replace(what.begin(), what.end(), '\n', ' ');
+    err << "ogive: " << what << "\n";
+    return kExitUsage;
+  }
+  try {
+    if (thrust->parsed()) return run_thrust(thrust_scene, *thrust, thrust_options, out);
+    if (profile->parsed()) return run_profile(profile_scene, *profile, profile_options, out);
+    if (check->parsed()) return run_check(check_scene, *check, check_options_, out);
+    if (bench->parsed()) return run_bench(bench_scene, *bench, bench_options, bench_methods, bench_rtols, repeats, out);
+  } catch (const UsageError& e) {
+    err << "ogive: " << e.what() << "\n";
+    return kExitUsage;
+  } catch (const std::invalid_argument& e) {
+    err << "ogive: " << e.what() << "\n";
+    return kExitUsage;
+  } catch (const std::exception& e) {
+    err << "ogive: internal error: " << e.what() << "\n";
+    return kExitInternal;
+  }
+  return kExitUsage;
+}
+
+}  // namespace ogive::cli

@@ -1,0 +1,27 @@
+// Parsing of numeric option values: one number, a list "a,b,c", or a range "start:stop:count"
+// (count equally spaced values, both ends included). Errors throw UsageError naming the option.
+#pragma once
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ogive::cli {
+
+// Bad input from the user: the CLI prints what() as one line and exits with status 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// At most this many values from one option, and scenes from one command.
+inline constexpr std::size_t kMaxValues = 1'000'000;
+
+// Every value must be finite; `option` (e.g. "--span") names the option in messages.
+std::vector<double> parse_values(std::string_view text, std::string_view option);
+
+// One finite number, the whole text; nullopt-like failure throws UsageError.
+double parse_number(std::string_view text, std::string_view option);
+
+}  // namespace ogive::cli

@@ -1,0 +1,31 @@
+// CSV rows for the CLI: comma-separated, no quoting needed (ogive prints no commas inside fields),
+// numbers in their shortest round-trip decimal form so that output is exact and deterministic.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace ogive {
+
+// Shortest decimal that reads back to the same double; "nan", "inf", "-inf" for the non-finite.
+void append_number(std::string& out, double value);
+
+class CsvRow {
+ public:
+  CsvRow& add(double value);
+  CsvRow& add(std::int64_t value);
+  CsvRow& add(int value) { return add(static_cast<std::int64_t>(value)); }
+  CsvRow& add(std::string_view text);
+  // The row with its newline; the row is cleared for reuse.
+  std::string take();
+
+ private:
+  void separate() {
+    if (fields_++ > 0) line_ += ',';
+  }
+  std::string line_;
+  int fields_ = 0;
+};
+
+}  // namespace ogive

@@ -1,0 +1,80 @@
+// Generator curves of symmetric arches, described by arc length.
+//
+// A Curve is the axis of the LEFT HALF of a symmetric arch: arc length s runs from the left springing
+// (s = 0, at x = 0, y = 0) to the crown (s = S = half_length(), at x = span/2). The right half is its
+// mirror image about x = span/2. Units: metres and radians.
+//   theta(s): angle of the tangent (direction of increasing s) to the horizontal; pi/2 at a vertical
+//             springing, 0 at a smooth crown, > 0 at a pointed crown's kink.
+//   kappa(s): d theta / ds (1/m); negative for an arch that curves downwards (kappa = -1/R on a circle).
+// Invariants every Curve keeps: span() > 0; half_length() > 0; at(0) is (0, 0); at(S).x == span()/2;
+// breakpoints() are strictly increasing and strictly inside (0, S).
+#pragma once
+
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace ogive {
+
+// One point of the axis with its tangent angle and curvature.
+struct CurvePoint {
+  double x = 0;      // m, horizontal, from the left springing towards the crown
+  double y = 0;      // m, vertical, up from the springing line
+  double theta = 0;  // rad
+  double kappa = 0;  // 1/m
+};
+
+// A circular arc (or a straight piece when kappa == 0) of a piecewise-circular curve.
+struct CircularArc {
+  double s_start = 0;  // m, arc length at the arc's start
+  double length = 0;   // m
+  double x_start = 0, y_start = 0, theta_start = 0;
+  double kappa = 0;  // 1/m, constant on the arc
+};
+
+class Curve {
+ public:
+  virtual ~Curve() = default;
+  virtual std::string family() const = 0;
+  virtual double span() const = 0;         // L, m
+  virtual double half_length() const = 0;  // S, m
+  virtual CurvePoint at(double s) const = 0;
+  // Interior arc lengths where the curvature jumps: integrators restart there.
+  virtual std::vector<double> breakpoints() const { return {}; }
+  // Non-empty exactly when the curve is piecewise circular; then the closed form applies arc by arc.
+  virtual std::span<const CircularArc> arcs() const { return {}; }
+  double rise() const { return at(half_length()).y; }
+  // Integral of x(s) ds over the half arch (m^2): the weight's moment about the springing per unit w.
+  virtual double first_moment_x() const;
+};
+
+// A curve made of circular arcs that join with a continuous position (tangent jumps are allowed only at
+// the crown). Positions, angles and the first moment are exact.
+class PiecewiseCircularCurve final : public Curve {
+ public:
+  PiecewiseCircularCurve(std::string family, double span, std::vector<CircularArc> arcs);
+  std::string family() const override { return family_; }
+  double span() const override { return span_; }
+  double half_length() const override { return half_length_; }
+  CurvePoint at(double s) const override;
+  std::vector<double> breakpoints() const override;
+  std::span<const CircularArc> arcs() const override { return arcs_; }
+  double first_moment_x() const override;
+
+ private:
+  std::string family_;
+  double span_;
+  double half_length_;
+  std::vector<CircularArc> arcs_;
+};
+
+// Position, angle and curvature on one arc, at distance ds (0 <= ds <= arc.length) from its start.
+CurvePoint point_on_arc(const CircularArc& arc, double ds);
+
+// The pointed (two-centred) arch of MODEL.md: radius R = (0.5 + eccentricity) * span, centre on the
+// springing line at eccentricity * span beyond mid-span; eccentricity 0 is the semicircle.
+// Throws std::invalid_argument naming `span` or `eccentricity` for a value outside its domain.
+std::shared_ptr<const Curve> make_pointed(double span, double eccentricity);
+
+}  // namespace ogive

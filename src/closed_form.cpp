@@ -1,0 +1,110 @@
+#include "ogive/closed_form.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <unsupported/Eigen/MatrixFunctions>
+
+#include "bvp.hpp"
+
+namespace ogive {
+namespace {
+
+using Matrix8 = Eigen::Matrix<double, 8, 8>;
+constexpr int kCos = 6, kSin = 7;  // the appended trigonometric states
+
+// Local (tangential/radial) components from global ones at tangent angle theta: u = R y.
+SystemMatrix to_local(double theta) {
+  const double c = std::cos(theta), sn = std::sin(theta);
+  SystemMatrix R = SystemMatrix::Identity();
+  R(kUx, kUx) = c;   R(kUx, kUy) = sn;
+  R(kUy, kUx) = -sn; R(kUy, kUy) = c;
+  R(kFx, kFx) = c;   R(kFx, kFy) = sn;
+  R(kFy, kFx) = -sn; R(kFy, kFy) = c;
+  return R;
+}
+
+// exp(A8 l) for one arc (scaled curvature k), local order (u, v, psi, N, V, M, c, sn).
+Matrix8 arc_exponential(const ArchModel& model, double k, double l) {
+  Matrix8 A = Matrix8::Zero();
+  A(kUx, kUy) = k;   A(kUx, kFx) = model.a_N();                      // u'   = k v + a_N N
+  A(kUy, kUx) = -k;  A(kUy, kPsi) = 1.0; A(kUy, kFy) = model.a_V();  // v'   = -k u + psi + a_V V
+  A(kPsi, kM) = 1.0;                                                 // psi' = M
+  A(kFx, kFy) = k;   A(kFx, kSin) = 1.0;                             // N'   = k V + sn
+  A(kFy, kFx) = -k;  A(kFy, kCos) = 1.0;                             // V'   = -k N + c
+  A(kM, kFy) = -1.0;                                                 // M'   = -V
+  A(kCos, kSin) = -k;                                                // c'   = -k sn
+  A(kSin, kCos) = k;                                                 // sn'  = k c
+  return (A * l).exp();
+}
+
+// Transfer over [ds0, ds1] of one arc (distances from the arc's start, scaled).
+Transfer arc_transfer(const ArchModel& model, const CircularArc& arc, double ds0, double ds1) {
+  const double L = model.scales().length;
+  const double k = arc.kappa * L;
+  const double th0 = arc.theta_start + arc.kappa * ds0 * L;
+  const double th1 = arc.theta_start + arc.kappa * ds1 * L;
+  const Matrix8 E = arc_exponential(model, k, ds1 - ds0);
+  const SystemMatrix back = to_local(th1).transpose();
+  Transfer t;
+  t.Phi = back * E.topLeftCorner<6, 6>() * to_local(th0);
+  t.p = back * (E.block<6, 1>(0, kCos) * std::cos(th0) + E.block<6, 1>(0, kSin) * std::sin(th0));
+  return t;
+}
+
+// The closed form's field: exact state anywhere, from the springing state.
+class ClosedFormField final : public StateField {
+ public:
+  ClosedFormField(std::shared_ptr<const ArchModel> model, const StateVector& y0)
+      : model_(std::move(model)), y0_(y0) {}
+  void sample(std::span<const double> s, std::span<StateVector> out) const override {
+    // Walk forwards: each station continues from the previous one, so each costs one short exponential.
+    double s_prev = 0.0;
+    StateVector y = y0_;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const Transfer t = closed_form_transfer(*model_, s_prev, s[i]);
+      y = t.Phi * y + t.p;
+      s_prev = s[i];
+      out[i] = y;
+    }
+  }
+
+ private:
+  std::shared_ptr<const ArchModel> model_;
+  StateVector y0_;
+};
+
+}  // namespace
+
+Transfer closed_form_transfer(const ArchModel& model, double s0, double s1) {
+  const double L = model.scales().length;
+  Transfer total;
+  for (const CircularArc& arc : model.scene().curve->arcs()) {
+    const double a0 = arc.s_start / L, a1 = (arc.s_start + arc.length) / L;
+    const double lo = std::max(s0, a0), hi = std::min(s1, a1);
+    if (hi <= lo) continue;
+    const Transfer t = arc_transfer(model, arc, lo - a0, hi - a0);
+    total.Phi = t.Phi * total.Phi;
+    total.p = t.Phi * total.p + t.p;
+  }
+  return total;
+}
+
+Solution solve_closed_form(std::shared_ptr<const ArchModel> model, const Options& options) {
+  Solution sol;
+  sol.method = Method::closed_form;
+  sol.model = model;
+  if (model->scene().curve->arcs().empty()) {
+    sol.status = Status::not_applicable;
+    sol.message = "closed form needs a piecewise-circular curve; " + model->scene().curve->family() +
+                  " is not";
+    return sol;
+  }
+  const Transfer t = closed_form_transfer(*model, 0.0, model->half_length());
+  const BvpSolution bvp = solve_single_segment(*model, t.Phi, t.p);
+  sol.diagnostics.segments = static_cast<int>(model->scene().curve->arcs().size());
+  finish_solution(sol, bvp, std::make_shared<ClosedFormField>(model, bvp.y0), options.rtol);
+  return sol;
+}
+
+}  // namespace ogive

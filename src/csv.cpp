@@ -1,0 +1,49 @@
+#include "ogive/csv.hpp"
+
+#include <charconv>
+#include <cmath>
+
+namespace ogive {
+
+void append_number(std::string& out, double value) {
+  if (std::isnan(value)) {
+    out += "nan";
+    return;
+  }
+  if (std::isinf(value)) {
+    out += value > 0 ? "inf" : "-inf";
+    return;
+  }
+  char buf[32];
+  // std::to_chars without a format gives the shortest representation that round-trips.
+  const auto result = std::to_chars(buf, buf + sizeof buf, value);
+  out.append(buf, result.ptr);
+}
+
+CsvRow& CsvRow::add(double value) {
+  separate();
+  append_number(line_, value);
+  return *this;
+}
+
+CsvRow& CsvRow::add(std::int64_t value) {
+  separate();
+  line_ += std::to_string(value);
+  return *this;
+}
+
+CsvRow& CsvRow::add(std::string_view text) {
+  separate();
+  line_ += text;
+  return *this;
+}
+
+std::string CsvRow::take() {
+  std::string out = std::move(line_);
+  line_.clear();
+  fields_ = 0;
+  out += '\n';
+  return out;
+}
+
+}  // namespace ogive

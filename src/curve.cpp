@@ -1,0 +1,121 @@
+#include "ogive/curve.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace ogive {
+namespace {
+
+// sin(z)/z, accurate near 0 where the quotient would cancel.
+double sinc(double z) { return std::abs(z) < 1e-4 ? 1.0 - z * z / 6.0 : std::sin(z) / z; }
+
+// Gauss-Legendre nodes and weights on [-1, 1], 8 points.
+constexpr std::array<double, 4> kGaussNodes = {0.1834346424956498, 0.5255324099163290,
+                                               0.7966664774136267, 0.9602898564975363};
+constexpr std::array<double, 4> kGaussWeights = {0.3626837833783620, 0.3137066458778873,
+                                                 0.2223810344533745, 0.1012285362903763};
+
+}  // namespace
+
+CurvePoint point_on_arc(const CircularArc& arc, double ds) {
+  const double half_turn = 0.5 * arc.kappa * ds;
+  const double mid = arc.theta_start + half_turn;
+  // x1 - x0 = (sin th1 - sin th0)/kappa = ds cos(mid) sinc(half_turn): no cancellation as kappa -> 0.
+  const double chord = ds * sinc(half_turn);
+  return {arc.x_start + chord * std::cos(mid), arc.y_start + chord * std::sin(mid),
+          arc.theta_start + arc.kappa * ds, arc.kappa};
+}
+
+double Curve::first_moment_x() const {
+  // Composite 8-point Gauss-Legendre between breakpoints: the integrand is smooth on each piece.
+  std::vector<double> knots{0.0};
+  for (double b : breakpoints()) knots.push_back(b);
+  knots.push_back(half_length());
+  constexpr int kPanelsPerPiece = 32;
+  double sum = 0;
+  for (std::size_t k = 0; k + 1 < knots.size(); ++k) {
+    const double h = (knots[k + 1] - knots[k]) / kPanelsPerPiece;
+    for (int p = 0; p < kPanelsPerPiece; ++p) {
+      const double mid = knots[k] + (p + 0.5) * h;
+      for (std::size_t i = 0; i < kGaussNodes.size(); ++i) {
+        const double dx = 0.5 * h * kGaussNodes[i];
+        sum += 0.5 * h * kGaussWeights[i] * (at(mid - dx).x + at(mid + dx).x);
+      }
+    }
+  }
+  return sum;
+}
+
+PiecewiseCircularCurve::PiecewiseCircularCurve(std::string family, double span,
+                                               std::vector<CircularArc> arcs)
+    : family_(std::move(family)), span_(span), half_length_(0), arcs_(std::move(arcs)) {
+  if (!(span_ > 0) || !std::isfinite(span_))
+    throw std::invalid_argument("span: must be a finite positive length");
+  if (arcs_.empty()) throw std::invalid_argument("curve: a piecewise-circular curve needs an arc");
+  for (const CircularArc& arc : arcs_) {
+    if (!(arc.length > 0) || !std::isfinite(arc.length) || !std::isfinite(arc.kappa))
+      throw std::invalid_argument("curve: every arc needs a finite positive length and curvature");
+    if (std::abs(arc.s_start - half_length_) > 1e-12 * span_)
+      throw std::invalid_argument("curve: arcs must follow each other without gaps");
+    half_length_ += arc.length;
+  }
+}
+
+CurvePoint PiecewiseCircularCurve::at(double s) const {
+  // The last arc whose start is <= s; s outside [0, S] extrapolates the end arcs.
+  auto it = std::upper_bound(arcs_.begin(), arcs_.end(), s,
+                             [](double v, const CircularArc& a) { return v < a.s_start; });
+  const CircularArc& arc = it == arcs_.begin() ? arcs_.front() : *std::prev(it);
+  return point_on_arc(arc, s - arc.s_start);
+}
+
+std::vector<double> PiecewiseCircularCurve::breakpoints() const {
+  std::vector<double> out;
+  for (std::size_t i = 1; i < arcs_.size(); ++i)
+    if (arcs_[i].kappa != arcs_[i - 1].kappa) out.push_back(arcs_[i].s_start);
+  return out;
+}
+
+double PiecewiseCircularCurve::first_moment_x() const {
+  // On an arc, x(s0 + u) = x0 + int_0^u cos(theta0 + k v) dv, so int x ds = x0 l + l^2 Re[e^{i theta0} g(i k l)]
+  // with g(z) = (e^z - 1 - z) / z^2; near z = 0 g comes from its series, which avoids the cancellation.
+  double sum = 0;
+  for (const CircularArc& arc : arcs_) {
+    const std::complex<double> z(0.0, arc.kappa * arc.length);
+    std::complex<double> g;
+    if (std::abs(z) < 0.5) {
+      std::complex<double> term = 0.5;  // z^n / (n + 2)!
+      g = term;
+      for (int n = 1; n < 16; ++n) {
+        term *= z / double(n + 2);
+        g += term;
+      }
+    } else {
+      g = (std::exp(z) - 1.0 - z) / (z * z);
+    }
+    sum += arc.x_start * arc.length +
+           arc.length * arc.length * (std::polar(1.0, arc.theta_start) * g).real();
+  }
+  return sum;
+}
+
+std::shared_ptr<const Curve> make_pointed(double span, double eccentricity) {
+  if (!(span > 0) || !std::isfinite(span))
+    throw std::invalid_argument("span: must be a finite positive length");
+  if (!(eccentricity >= 0) || !std::isfinite(eccentricity))
+    throw std::invalid_argument("eccentricity: must be finite and >= 0");
+  const double radius = (0.5 + eccentricity) * span;
+  // Half-arch angle: cos(alpha_c) = eccentricity / (0.5 + eccentricity).
+  const double alpha_c = std::acos(eccentricity / (0.5 + eccentricity));
+  const std::string family = eccentricity == 0 ? "semicircular" : "pointed";
+  return std::make_shared<PiecewiseCircularCurve>(
+      family, span,
+      std::vector<CircularArc>{{0.0, radius * alpha_c, 0.0, 0.0, std::numbers::pi / 2, -1.0 / radius}});
+}
+
+}  // namespace ogive

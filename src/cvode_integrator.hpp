@@ -1,0 +1,63 @@
+// CVODE wrapper (private header): the only translation unit that includes <cvode/cvode.h> is
+// cvode_integrator.cpp. Every SUNDIALS object is owned by RAII handles; every return flag is checked.
+//
+// It integrates the matrix ODE  Y' = A(theta(s)) Y + b e_last^T  of ArchModel, Y being 6 x columns:
+// with columns = 7 and Y(s0) = [I | 0] it yields the fundamental matrix and the load's particular
+// solution of a shooting segment; with columns = 1 it carries one state. One CVODE instance is created
+// per integrator and re-initialised for every span, never rebuilt.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+
+#include <Eigen/Dense>
+
+#include "ogive/solve.hpp"
+
+namespace ogive {
+
+struct IntegratorStats {
+  std::int64_t steps = 0, rhs_evaluations = 0, error_test_failures = 0, jacobian_evaluations = 0;
+};
+
+struct IntegrationError {
+  int flag = 0;           // CVODE's return flag
+  std::string flag_name;  // e.g. "CV_TOO_MUCH_WORK"
+  double s = 0;           // scaled arc length where CVODE stopped
+  std::string detail;     // CVODE's own message, if it gave one
+};
+
+class CvodeIntegrator {
+ public:
+  using Matrix = Eigen::Matrix<double, kStateSize, Eigen::Dynamic>;
+  // Receives output index i and Y at s_out[i].
+  using Observer = std::function<void(std::size_t, const Matrix&)>;
+
+  // Adams uses CVODE's fixed-point (functional) iteration: the system is not stiff. BDF uses Newton
+  // with the dense direct solver and the analytic Jacobian (block diagonal, A(theta) per column).
+  // atol applies to every scaled component. Throws std::runtime_error if SUNDIALS cannot allocate.
+  CvodeIntegrator(const ArchModel& model, Integrator kind, double rtol, double atol,
+                  std::int64_t max_steps, int columns);
+  ~CvodeIntegrator();
+  CvodeIntegrator(const CvodeIntegrator&) = delete;
+  CvodeIntegrator& operator=(const CvodeIntegrator&) = delete;
+
+  // From Y0 at s0 through the ascending outputs s_out (each >= s0), restarting at the model's
+  // breakpoints that lie in between so that no step straddles a jump of curvature.
+  std::optional<IntegrationError> integrate(double s0, const Matrix& Y0, std::span<const double> s_out,
+                                            const Observer& observer);
+
+  // Accumulated over every integrate() call.
+  const IntegratorStats& stats() const { return stats_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  IntegratorStats stats_;
+};
+
+}  // namespace ogive

@@ -1,0 +1,49 @@
+#include "ogive/scene.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <fmt/format.h>
+
+namespace ogive {
+namespace {
+
+[[noreturn]] void refuse(const char* field, const char* rule, double value) {
+  throw std::invalid_argument(fmt::format("{}: {}, got {}", field, rule, value));
+}
+
+void require_positive(const char* field, double value) {
+  if (!std::isfinite(value) || !(value > 0)) refuse(field, "must be finite and > 0", value);
+}
+
+}  // namespace
+
+void Scene::validate() const {
+  if (!curve) throw std::invalid_argument("curve: a scene needs a generator curve");
+  require_positive("thickness", thickness);
+  require_positive("youngs_modulus", material.youngs_modulus);
+  require_positive("density", material.density);
+  require_positive("gravity", material.gravity);
+  require_positive("shear_coefficient", material.shear_coefficient);
+  const double nu = material.poisson_ratio;
+  if (!std::isfinite(nu) || !(nu > -1.0 && nu <= 0.5)) refuse("poisson_ratio", "must lie in (-1, 0.5]", nu);
+  if (material.plane_strain && nu == 0.5)
+    refuse("poisson_ratio", "must be < 0.5 in plane strain (E / (1 - nu^2) stays finite)", nu);
+  if (!std::isfinite(support_displacement))
+    refuse("support_displacement", "must be finite", support_displacement);
+  // A section deeper than twice the radius of curvature would overlap itself on the intrados.
+  double max_curvature = 0;
+  for (const CircularArc& arc : curve->arcs()) max_curvature = std::max(max_curvature, std::abs(arc.kappa));
+  if (curve->arcs().empty()) {
+    constexpr int kSamples = 512;
+    for (int i = 0; i <= kSamples; ++i)
+      max_curvature = std::max(max_curvature, std::abs(curve->at(curve->half_length() * i / kSamples).kappa));
+  }
+  if (thickness * max_curvature >= 2.0)
+    throw std::invalid_argument(fmt::format(
+        "thickness: must be less than twice the smallest radius of curvature ({} m), got {} m",
+        2.0 / max_curvature, thickness));
+}
+
+}  // namespace ogive

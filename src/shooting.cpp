@@ -1,0 +1,185 @@
+#include "ogive/shooting.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+#include <fmt/format.h>
+
+#include "bvp.hpp"
+#include "cvode_integrator.hpp"
+
+namespace ogive {
+namespace {
+
+double absolute_tolerance(const Options& o) { return o.atol > 0 ? o.atol : o.rtol * 1e-3; }
+
+std::string failure_message(const IntegrationError& e, const ArchModel& model, std::size_t segment,
+                            std::size_t segments) {
+  std::string text = fmt::format("CVODE {} at s = {:.6g} m (shooting segment {} of {})", e.flag_name,
+                                 e.s * model.scales().length, segment + 1, segments);
+  if (!e.detail.empty()) text += ": " + e.detail;
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  return text;
+}
+
+// The shooting solution's field: integrates the solved state from the nearest segment start.
+class ShootingField final : public StateField {
+ public:
+  ShootingField(std::shared_ptr<const ArchModel> model, const Options& options, std::vector<double> knots,
+                std::vector<StateVector> starts)
+      : model_(std::move(model)), options_(options), knots_(std::move(knots)), starts_(std::move(starts)) {}
+
+  void sample(std::span<const double> s, std::span<StateVector> out) const override {
+    CvodeIntegrator integrator(*model_, options_.integrator, options_.rtol, absolute_tolerance(options_),
+                               options_.max_steps, 1);
+    std::size_t i = 0;
+    for (std::size_t k = 0; k < starts_.size() && i < s.size(); ++k) {
+      const bool last = k + 1 == starts_.size();
+      std::size_t j = i;
+      while (j < s.size() && (last || s[j] < knots_[k + 1])) ++j;
+      if (j == i) continue;
+      const auto failure = integrator.integrate(
+          knots_[k], starts_[k], s.subspan(i, j - i),
+          [&](std::size_t n, const CvodeIntegrator::Matrix& Y) { out[i + n] = Y.col(0); });
+      if (failure)  // Marked, never plausible: the caller sees non-finite states.
+        for (std::size_t n = i; n < j; ++n) out[n].setConstant(std::numeric_limits<double>::quiet_NaN());
+      i = j;
+    }
+  }
+
+ private:
+  std::shared_ptr<const ArchModel> model_;
+  Options options_;
+  std::vector<double> knots_;
+  std::vector<StateVector> starts_;
+};
+
+// Hager's estimate of ||Q^-1||_1 from solves with Q and Q^T (Higham, Accuracy and Stability, 15.3).
+template <class Lu>
+double inverse_norm1_estimate(Lu& lu, Eigen::Index n) {
+  Eigen::VectorXd x = Eigen::VectorXd::Constant(n, 1.0 / static_cast<double>(n));
+  double estimate = 0;
+  for (int iter = 0; iter < 5; ++iter) {
+    const Eigen::VectorXd y = lu.solve(x);
+    estimate = y.lpNorm<1>();
+    const Eigen::VectorXd xi = y.unaryExpr([](double v) { return v >= 0 ? 1.0 : -1.0; });
+    const Eigen::VectorXd z = lu.transpose().solve(xi);
+    Eigen::Index j = 0;
+    if (z.cwiseAbs().maxCoeff(&j) <= z.dot(x)) break;
+    x.setZero();
+    x(j) = 1.0;
+  }
+  return estimate;
+}
+
+}  // namespace
+
+std::vector<double> shooting_knots(const ArchModel& model, int segments) {
+  const double S = model.half_length();
+  std::vector<double> knots;
+  for (int k = 0; k <= segments; ++k) knots.push_back(S * k / segments);
+  knots.back() = S;
+  if (segments > 1)
+    for (double b : model.breakpoints()) knots.push_back(b);
+  std::sort(knots.begin(), knots.end());
+  // Merge knots closer than a part in 1e9 of the half arch: a breakpoint on a uniform knot.
+  knots.erase(std::unique(knots.begin(), knots.end(), [S](double a, double b) { return b - a < 1e-9 * S; }),
+              knots.end());
+  knots.back() = S;
+  return knots;
+}
+
+Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& options, int segments) {
+  Solution sol;
+  sol.method = segments == 1 ? Method::shooting : Method::multiple_shooting;
+  sol.model = model;
+  const std::vector<double> knots = shooting_knots(*model, segments);
+  const std::size_t K = knots.size() - 1;
+  sol.diagnostics.segments = static_cast<int>(K);
+
+  CvodeIntegrator integrator(*model, options.integrator, options.rtol, absolute_tolerance(options),
+                             options.max_steps, kStateSize + 1);
+  CvodeIntegrator::Matrix Y0 = CvodeIntegrator::Matrix::Zero(kStateSize, kStateSize + 1);
+  Y0.leftCols<kStateSize>().setIdentity();
+  std::vector<SystemMatrix> Phi(K);
+  std::vector<StateVector> p(K);
+  for (std::size_t k = 0; k < K; ++k) {
+    const double end = knots[k + 1];
+    const auto failure = integrator.integrate(knots[k], Y0, std::span<const double>(&end, 1),
+                                              [&](std::size_t, const CvodeIntegrator::Matrix& Y) {
+                                                Phi[k] = Y.leftCols<kStateSize>();
+                                                p[k] = Y.col(kStateSize);
+                                              });
+    if (failure) {
+      sol.status = Status::integrator_failure;
+      sol.message = failure_message(*failure, *model, k, K);
+      break;
+    }
+  }
+  const IntegratorStats& st = integrator.stats();
+  sol.diagnostics.steps = st.steps;
+  sol.diagnostics.rhs_evaluations = st.rhs_evaluations;
+  sol.diagnostics.error_test_failures = st.error_test_failures;
+  sol.diagnostics.jacobian_evaluations = st.jacobian_evaluations;
+  if (sol.status == Status::integrator_failure) return sol;
+
+  if (K == 1) {
+    const BvpSolution bvp = solve_single_segment(*model, Phi[0], p[0]);
+    finish_solution(sol, bvp, std::make_shared<ShootingField>(model, options, knots, std::vector{bvp.y0}),
+                    options.rtol);
+    return sol;
+  }
+
+  // Unknowns: the start state of every segment. Rows: 3 springing conditions, 6 continuity rows per
+  // interior knot, 3 crown conditions; block-bidiagonal, so the LU has little fill.
+  const BoundaryConditions bc = model->boundary_conditions();
+  const Eigen::Index n = static_cast<Eigen::Index>(kStateSize * K);
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
+  for (int r = 0; r < 3; ++r) {
+    for (int j = 0; j < kStateSize; ++j)
+      if (bc.at_springing(r, j) != 0) entries.emplace_back(r, j, bc.at_springing(r, j));
+    rhs(r) = bc.rhs(r);
+  }
+  for (std::size_t k = 0; k + 1 < K; ++k) {
+    const Eigen::Index row = 3 + kStateSize * static_cast<Eigen::Index>(k);
+    const Eigen::Index col = kStateSize * static_cast<Eigen::Index>(k);
+    for (int i = 0; i < kStateSize; ++i) {
+      for (int j = 0; j < kStateSize; ++j)
+        if (Phi[k](i, j) != 0) entries.emplace_back(row + i, col + j, Phi[k](i, j));
+      entries.emplace_back(row + i, col + kStateSize + i, -1.0);
+      rhs(row + i) = -p[k](i);
+    }
+  }
+  const Eigen::Index last_col = kStateSize * static_cast<Eigen::Index>(K - 1);
+  const Eigen::Matrix<double, 3, kStateSize> crown = bc.at_crown.bottomRows<3>() * Phi[K - 1];
+  const Eigen::Vector3d crown_rhs = bc.rhs.tail<3>() - bc.at_crown.bottomRows<3>() * p[K - 1];
+  for (int r = 0; r < 3; ++r) {
+    for (int j = 0; j < kStateSize; ++j)
+      if (crown(r, j) != 0) entries.emplace_back(n - 3 + r, last_col + j, crown(r, j));
+    rhs(n - 3 + r) = crown_rhs(r);
+  }
+  Eigen::SparseMatrix<double> Q(n, n);
+  Q.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+  lu.compute(Q);
+  BvpSolution bvp;
+  std::vector<StateVector> starts(K);
+  if (lu.info() == Eigen::Success) {
+    const Eigen::VectorXd z = lu.solve(rhs);
+    for (std::size_t k = 0; k < K; ++k) starts[k] = z.segment<kStateSize>(kStateSize * static_cast<Eigen::Index>(k));
+    double norm1 = 0;  // ||Q||_1: the largest column sum
+    for (Eigen::Index j = 0; j < n; ++j) norm1 = std::max(norm1, Q.col(j).cwiseAbs().sum());
+    bvp.rcond = 1.0 / (norm1 * inverse_norm1_estimate(lu, n));
+    bvp.y0 = starts.front();
+    bvp.yS = Phi[K - 1] * starts.back() + p[K - 1];
+  }
+  finish_solution(sol, bvp, std::make_shared<ShootingField>(model, options, knots, std::move(starts)),
+                  options.rtol);
+  return sol;
+}
+
+}  // namespace ogive
