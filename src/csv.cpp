@@ -14,6 +14,7 @@ void append_number(std::string& out, double value) {
     out += value > 0 ? "inf" : "-inf";
     return;
   }
+  if (value == 0.0) value = 0.0;  // no "-0" in the output
   char buf[32];
   // std::to_chars without a format gives the shortest representation that round-trips.
   const auto result = std::to_chars(buf, buf + sizeof buf, value);

@@ -1,0 +1,1 @@
+#include "ogive/curve_families.hpp"
