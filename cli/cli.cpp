@@ -160,6 +160,7 @@ void add_solver_options(CLI::App& cmd, Options& o, bool with_method = true) {
   cmd.add_option("--rtol", o.rtol, "relative tolerance, 1e-14 .. 0.1")->capture_default_str();
   cmd.add_option("--atol", o.atol, "absolute tolerance of the scaled state (0: rtol * 1e-3)")->capture_default_str();
   cmd.add_option("--segments", o.segments, "multiple-shooting segments over the half arch")->capture_default_str();
+  cmd.add_option("--max-steps", o.max_steps, "CVODE step limit per integration span")->capture_default_str();
 }
 
 void check_options(const Options& o) {
@@ -207,6 +208,7 @@ int run_thrust(SceneOptions& so, const CLI::App& cmd, const Options& o, std::ost
 }
 
 int run_profile(SceneOptions& so, const CLI::App& cmd, Options o, std::ostream& out) {
+  if (o.stations < 2) throw UsageError(fmt::format("--stations: must be >= 2, got {}", o.stations));
   check_options(o);
   const std::vector<SceneParameters> grid = scene_grid(so, cmd);
   if (grid.size() * static_cast<std::size_t>(o.stations) > 10 * kMaxValues)

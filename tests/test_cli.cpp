@@ -1,0 +1,184 @@
+// The CLI, in-process: CSV on stdout, one line on stderr and exit 2 for bad input, determinism.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli.hpp"
+#include "ogive/solve.hpp"
+#include "tolerances.hpp"
+
+using ogive::cli::run_cli;
+
+namespace {
+
+struct Run {
+  int status;
+  std::string out, err;
+};
+
+Run cli(std::vector<std::string> args) {
+  std::ostringstream out, err;
+  const int status = run_cli(args, out, err);
+  return {status, out.str(), err.str()};
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+std::vector<std::string> fields(const std::string& line) {
+  std::vector<std::string> out;
+  std::string field;
+  std::istringstream in(line);
+  while (std::getline(in, field, ',')) out.push_back(field);
+  if (!line.empty() && line.back() == ',') out.push_back("");
+  return out;
+}
+
+// The value of column `name` in data row `row` (1-based, after the header).
+std::string column(const std::string& csv, const std::string& name, std::size_t row = 1) {
+  const auto ls = lines(csv);
+  const auto header = fields(ls.at(0));
+  const auto it = std::find(header.begin(), header.end(), name);
+  REQUIRE_MESSAGE(it != header.end(), "no column " << name);
+  return fields(ls.at(row)).at(static_cast<std::size_t>(it - header.begin()));
+}
+
+}  // namespace
+
+TEST_CASE("cli: thrust prints a header and one row per scene of the cartesian product") {
+  const Run r = cli({"thrust", "--eccentricity", "0:1:11", "--thickness-ratio", "0.06,0.08,0.10"});
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  const auto ls = lines(r.out);
+  REQUIRE(ls.size() == 1 + 33);
+  for (const char* name : {"H", "V", "H_over_V", "eccentricity", "thickness_ratio", "method", "status"})
+    CHECK(std::find(fields(ls[0]).begin(), fields(ls[0]).end(), std::string(name)) != fields(ls[0]).end());
+  // The last option in the documented order varies fastest: eccentricity within thickness.
+  CHECK(column(r.out, "thickness_ratio", 1) == "0.06");
+  CHECK(column(r.out, "eccentricity", 2) == "0.1");
+  CHECK(column(r.out, "thickness_ratio", 12) == "0.08");
+  for (std::size_t row = 1; row < ls.size(); ++row) {
+    CHECK(fields(ls[row]).size() == fields(ls[0]).size());
+    CHECK(column(r.out, "status", row) == "success");
+    CHECK(column(r.out, "method", row) == "closed-form");
+  }
+  // H_over_V printed exactly (shortest round-trip) equals the library's value.
+  ogive::Scene scene;
+  scene.curve = ogive::make_pointed(10.0, 0.5);
+  scene.thickness = 0.06 * 10.0;
+  CHECK(std::stod(column(r.out, "H_over_V", 6)) == ogive::solve(scene).H_over_V);
+}
+
+TEST_CASE("cli: profile prints --stations rows per scene with the internal forces and e") {
+  const Run r = cli({"profile", "--eccentricity", "0,0.5", "--stations", "7"});
+  REQUIRE(r.status == 0);
+  const auto ls = lines(r.out);
+  REQUIRE(ls.size() == 1 + 14);
+  for (const char* name : {"s", "x", "y", "N", "V", "M", "e", "thrust_x", "thrust_y"})
+    CHECK(std::find(fields(ls[0]).begin(), fields(ls[0]).end(), std::string(name)) != fields(ls[0]).end());
+  CHECK(std::stod(column(r.out, "x", 1)) == 0.0);
+  CHECK(ogive::close(std::stod(column(r.out, "x", 7)), 10.0, ogive::kExact));
+}
+
+TEST_CASE("cli: check reports every method within tolerance; methods and integrators selectable") {
+  const Run r = cli({"check", "--eccentricity", "0,1", "--rtol", "1e-7", "--integrator", "bdf"});
+  REQUIRE(r.status == 0);
+  const auto ls = lines(r.out);
+  REQUIRE(ls.size() == 1 + 6);
+  for (std::size_t row = 1; row < ls.size(); ++row) CHECK(column(r.out, "within_tolerance", row) == "yes");
+  const Run s = cli({"thrust", "--method", "multiple-shooting", "--segments", "4", "--rtol", "1e-9"});
+  REQUIRE(s.status == 0);
+  CHECK(column(s.out, "method") == "multiple-shooting");
+  CHECK(column(s.out, "segments") == "4");
+}
+
+TEST_CASE("cli: a solver failure is a status in the row, no number, and exit 3") {
+  const Run r = cli({"thrust", "--method", "shooting", "--rtol", "1e-12", "--max-steps", "3", "--eccentricity", "0,0.5"});
+  CHECK(r.status == 3);
+  CHECK(r.err.empty());
+  REQUIRE(lines(r.out).size() == 3);
+  for (std::size_t row : {1, 2}) {
+    CHECK(column(r.out, "status", row) == "integrator_failure");
+    CHECK(column(r.out, "H_over_V", row) == "nan");
+  }
+}
+
+TEST_CASE("cli: bad input is one line on stderr, exit 2, nothing on stdout") {
+  const std::vector<std::vector<std::string>> cases = {
+      {"thrust", "--eccentricity", "-0.5"},
+      {"thrust", "--eccentricity", "nan"},
+      {"thrust", "--eccentricity", "inf"},
+      {"thrust", "--eccentricity", "abc"},
+      {"thrust", "--eccentricity", ""},
+      {"thrust", "--eccentricity", "0,,1"},
+      {"thrust", "--eccentricity", "0:1"},
+      {"thrust", "--eccentricity", "0:1:0"},
+      {"thrust", "--eccentricity", "0:1:2.5"},
+      {"thrust", "--eccentricity", "1:0:1"},
+      {"thrust", "--eccentricity", "0:1:1e9"},
+      {"thrust", "--eccentricity", "0:1:1000", "--thickness-ratio", "0:0.1:1001", "--span", "1:2:3"},
+      {"thrust", "--span", "0"},
+      {"thrust", "--span", "-10"},
+      {"thrust", "--thickness-ratio", "0"},
+      {"thrust", "--thickness-ratio", "1.5"},
+      {"thrust", "--support-displacement-ratio", "0.5"},
+      {"thrust", "--youngs-modulus", "0"},
+      {"thrust", "--poisson-ratio", "0.7"},
+      {"thrust", "--poisson-ratio", "-1"},
+      {"thrust", "--poisson-ratio", "0.5", "--plane-strain"},
+      {"thrust", "--density", "0"},
+      {"thrust", "--gravity", "-9.81"},
+      {"thrust", "--shear-coefficient", "0"},
+      {"thrust", "--curve", "gothic"},
+      {"thrust", "--curve", "semicircular", "--eccentricity", "0.5"},
+      {"thrust", "--method", "magic"},
+      {"thrust", "--integrator", "rk4"},
+      {"thrust", "--rtol", "0"},
+      {"thrust", "--rtol", "2"},
+      {"thrust", "--atol", "-1"},
+      {"thrust", "--segments", "0"},
+      {"thrust", "--max-steps", "0"},
+      {"profile", "--stations", "0"},
+      {"profile", "--stations", "1"},
+      {"profile", "--stations", "x"},
+      {"bench", "--methods", "closed-form,magic"},
+      {"bench", "--repeats", "0"},
+      {"thrust", "--unknown-option", "1"},
+      {"nonsense"},
+      {},
+  };
+  for (const auto& args : cases) {
+    std::string joined;
+    for (const auto& a : args) joined += a + " ";
+    CAPTURE(joined);
+    const Run r = cli(args);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(lines(r.err).size() == 1);
+    CHECK(r.err.rfind("ogive: ", 0) == 0);
+  }
+  // The message names the option and the rule.
+  CHECK(cli({"thrust", "--poisson-ratio", "0.7"}).err.find("--poisson-ratio") != std::string::npos);
+  CHECK(cli({"thrust", "--poisson-ratio", "0.7"}).err.find("(-1, 0.5]") != std::string::npos);
+  CHECK(cli({"thrust", "--rtol", "0"}).err.find("--rtol") != std::string::npos);
+  CHECK(cli({"profile", "--stations", "1"}).err.find("--stations") != std::string::npos);
+  CHECK(cli({"thrust", "--thickness-ratio", "1.5"}).err.find("--thickness-ratio") != std::string::npos);
+}
+
+TEST_CASE("cli: help goes to stdout with exit 0; output is deterministic") {
+  const Run h = cli({"--help"});
+  CHECK(h.status == 0);
+  CHECK(h.out.find("thrust") != std::string::npos);
+  const std::vector<std::string> args = {"profile", "--eccentricity", "0,0.7", "--method", "multiple-shooting",
+                                         "--stations", "9", "--support-displacement-ratio", "1e-4"};
+  const Run a = cli(args), b = cli(args);
+  CHECK(a.status == 0);
+  CHECK(a.out == b.out);
+}

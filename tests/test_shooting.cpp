@@ -1,0 +1,218 @@
+// CVODE single and multiple shooting against the closed form: accuracy, convergence, slender arches,
+// profiles, breakpoints and failure reporting.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "ogive/closed_form.hpp"
+#include "ogive/shooting.hpp"
+#include "ogive/solve.hpp"
+#include "tolerances.hpp"
+
+using namespace ogive;
+
+namespace {
+
+Scene paper_scene(double eps, double t_over_L = 0.08, double d_over_L = 0.0) {
+  Scene s;
+  s.curve = make_pointed(10.0, eps);
+  s.thickness = t_over_L * 10.0;
+  s.support_displacement = d_over_L * 10.0;
+  return s;
+}
+
+Solution run(const Scene& scene, Method m, Integrator i = Integrator::adams, double rtol = 1e-8, int stations = 0,
+             int segments = 8) {
+  Options o;
+  o.method = m;
+  o.integrator = i;
+  o.rtol = rtol;
+  o.stations = stations;
+  o.segments = segments;
+  return solve(scene, o);
+}
+
+// The error of H/V scaled by V's own scale: H/V itself crosses zero as d grows.
+double hv_error(const Solution& a, const Solution& ref) {
+  return std::abs(a.H_over_V - ref.H_over_V) / std::max(std::abs(ref.H_over_V), 0.1);
+}
+
+const std::vector<double> kRtols = {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11};
+
+}  // namespace
+
+TEST_CASE("shooting: single and multiple shooting agree with the closed form to 10 rtol, both integrators") {
+  for (double eps : {0.0, 0.5, 1.0, 2.0})
+    for (double t : {0.06, 0.2})
+      for (double d : {0.0, 3e-4}) {
+        const Scene scene = paper_scene(eps, t, d);
+        const Solution ref = run(scene, Method::closed_form);
+        for (Integrator integ : {Integrator::adams, Integrator::bdf})
+          for (Method m : {Method::shooting, Method::multiple_shooting})
+            for (double rtol : kRtols) {
+              const Solution sol = run(scene, m, integ, rtol);
+              CAPTURE(eps);
+              CAPTURE(t);
+              CAPTURE(d);
+              CAPTURE(to_string(integ));
+              CAPTURE(to_string(m));
+              CAPTURE(rtol);
+              REQUIRE(sol.status == Status::success);
+              CHECK(hv_error(sol, ref) <= 10 * rtol);
+              CHECK(sol.diagnostics.steps > 0);
+              CHECK(sol.diagnostics.rhs_evaluations >= sol.diagnostics.steps);
+              CHECK(sol.diagnostics.boundary_residual <= 10 * rtol);
+              CHECK(sol.diagnostics.equilibrium_residual <= 10 * rtol);
+            }
+      }
+}
+
+TEST_CASE("shooting: tightening rtol 100-fold cuts the error roughly 100-fold") {
+  // Least-squares slope of log(error) against log(rtol) over 1e-4 .. 1e-10: about 1 (tolerance
+  // proportionality). Single errors scatter, so the slope, not each ratio, is the claim.
+  for (Integrator integ : {Integrator::adams, Integrator::bdf})
+    for (Method m : {Method::shooting, Method::multiple_shooting}) {
+      const Scene scene = paper_scene(0.5);
+      const Solution ref = run(scene, Method::closed_form);
+      std::vector<double> lx, ly;
+      for (double rtol : {1e-4, 1e-6, 1e-8, 1e-10}) {
+        const double err = hv_error(run(scene, m, integ, rtol), ref);
+        REQUIRE(err > 0);
+        lx.push_back(std::log10(rtol));
+        ly.push_back(std::log10(err));
+      }
+      const double mx = (lx[0] + lx[1] + lx[2] + lx[3]) / 4, my = (ly[0] + ly[1] + ly[2] + ly[3]) / 4;
+      double sxy = 0, sxx = 0;
+      for (int k = 0; k < 4; ++k) {
+        sxy += (lx[k] - mx) * (ly[k] - my);
+        sxx += (lx[k] - mx) * (lx[k] - mx);
+      }
+      const double slope = sxy / sxx;
+      CAPTURE(to_string(integ));
+      CAPTURE(to_string(m));
+      CHECK(slope > 0.7);
+      CHECK(slope < 1.4);
+      // Over the whole range the error falls by at least 10^4 (ideal: 10^6).
+      CHECK(ly.front() - ly.back() > 4.0);
+    }
+}
+
+TEST_CASE("shooting: slender arches, t/L = 1e-3 and 1e-4, multiple shooting agrees with the closed form to 1e-7") {
+  for (double t : {1e-3, 1e-4})
+    for (double eps : {0.0, 0.5, 1.0}) {
+      const Scene scene = paper_scene(eps, t);
+      const Solution ref = run(scene, Method::closed_form);
+      REQUIRE(ref.ok());
+      for (Integrator integ : {Integrator::adams, Integrator::bdf}) {
+        const Solution sol = run(scene, Method::multiple_shooting, integ, 1e-9);
+        CAPTURE(t);
+        CAPTURE(eps);
+        CAPTURE(to_string(integ));
+        REQUIRE(sol.ok());
+        CHECK(hv_error(sol, ref) <= 1e-7);
+      }
+    }
+}
+
+TEST_CASE("shooting: the profile matches the closed form's at every station") {
+  constexpr int kStations = 61;
+  for (double eps : {0.0, 1.0}) {
+    const Scene scene = paper_scene(eps, 0.1, 1e-4);
+    const Solution ref = run(scene, Method::closed_form, Integrator::adams, 1e-8, kStations);
+    for (Method m : {Method::shooting, Method::multiple_shooting}) {
+      const double rtol = 1e-8;
+      const Solution sol = run(scene, m, Integrator::adams, rtol, kStations);
+      REQUIRE(sol.profile.size() == ref.profile.size());
+      // Each quantity against its own scale along the arch (max |.|), since each crosses zero.
+      auto scale_of = [&](auto get) {
+        double s = 0;
+        for (const ArchState& st : ref.profile) s = std::max(s, std::abs(get(st)));
+        return s;
+      };
+      const double sN = scale_of([](const ArchState& s) { return s.N; });
+      const double sV = scale_of([](const ArchState& s) { return s.V; });
+      const double sM = scale_of([](const ArchState& s) { return s.M; });
+      const double sUx = scale_of([](const ArchState& s) { return s.Ux; });
+      const double sUy = scale_of([](const ArchState& s) { return s.Uy; });
+      const double sPsi = scale_of([](const ArchState& s) { return s.psi; });
+      for (std::size_t k = 0; k < ref.profile.size(); ++k) {
+        const ArchState &a = sol.profile[k], &b = ref.profile[k];
+        CAPTURE(k);
+        CHECK(close(a.s, b.s, kExact));
+        CHECK(std::abs(a.N - b.N) <= 10 * rtol * sN);
+        CHECK(std::abs(a.V - b.V) <= 10 * rtol * sV);
+        CHECK(std::abs(a.M - b.M) <= 10 * rtol * sM);
+        CHECK(std::abs(a.Ux - b.Ux) <= 10 * rtol * sUx);
+        CHECK(std::abs(a.Uy - b.Uy) <= 10 * rtol * sUy);
+        CHECK(std::abs(a.psi - b.psi) <= 10 * rtol * sPsi);
+        // e = 600 M / (N t): relative to the kern, its error follows from M's and N's.
+        CHECK(std::abs(a.e - b.e) <= 600.0 * 10 * rtol * (sM / std::abs(b.N) + std::abs(b.M) * sN / (b.N * b.N)) / 1.0);
+      }
+      // The state view at any s, right half included, agrees as well.
+      const double s = 1.2345 * scene.curve->half_length();
+      CHECK(std::abs(sol.at(s).M - ref.at(s).M) <= 10 * rtol * sM);
+    }
+  }
+}
+
+TEST_CASE("shooting: segment boundaries include the curve's breakpoints") {
+  // A three-centred half arch built by hand: haunch arc r1 = 2 m over 60 deg, crown arc r2 = 8 m.
+  const double r1 = 2.0, r2 = 8.0, a1 = std::numbers::pi / 3, a2 = std::numbers::pi / 6;
+  CircularArc haunch{0.0, r1 * a1, 0.0, 0.0, std::numbers::pi / 2, -1.0 / r1};
+  const CurvePoint join = point_on_arc(haunch, haunch.length);
+  CircularArc crown{haunch.length, r2 * a2, join.x, join.y, join.theta, -1.0 / r2};
+  const double span = 2.0 * point_on_arc(crown, crown.length).x;
+  Scene scene;
+  scene.curve = std::make_shared<PiecewiseCircularCurve>("three-centred", span, std::vector{haunch, crown});
+  scene.thickness = 0.08 * span;
+  const ArchModel model(scene);
+  const std::vector<double> knots = shooting_knots(model, 3);
+  const double b = haunch.length / span;
+  CHECK(std::any_of(knots.begin(), knots.end(), [&](double k) { return std::abs(k - b) < kExact; }));
+  CHECK(shooting_knots(model, 1).size() == 2);  // single shooting: one segment; the integrator restarts
+  const Solution ref = run(scene, Method::closed_form);
+  for (Method m : {Method::shooting, Method::multiple_shooting})
+    for (Integrator integ : {Integrator::adams, Integrator::bdf}) {
+      const Solution sol = run(scene, m, integ, 1e-9, 0, 3);
+      REQUIRE(sol.ok());
+      CHECK(hv_error(sol, ref) <= 1e-8);
+    }
+}
+
+TEST_CASE("shooting: a CVODE failure is a status naming the flag and where, never a number") {
+  Options o;
+  o.method = Method::multiple_shooting;
+  o.rtol = 1e-12;
+  o.max_steps = 5;
+  const Solution sol = solve(paper_scene(0.5), o);
+  CHECK(sol.status == Status::integrator_failure);
+  CHECK(sol.message.find("CV_TOO_MUCH_WORK") != std::string::npos);
+  CHECK(sol.message.find("s = ") != std::string::npos);
+  CHECK(std::isnan(sol.H_over_V));
+  CHECK(sol.profile.empty());
+  CHECK_THROWS_AS(sol.at(1.0), std::logic_error);
+}
+
+TEST_CASE("closed form on a non-circular curve is not applicable, with a reason") {
+  struct Sine final : Curve {
+    std::string family() const override { return "sine"; }
+    double span() const override { return 10.0; }
+    double half_length() const override { return 8.0; }
+    CurvePoint at(double s) const override {
+      // A made-up smooth curve: theta = pi/2 (1 - s/8)^2 is enough for this test's purpose.
+      const double th = std::numbers::pi / 2 * (1 - s / 8) * (1 - s / 8);
+      return {s < 8 ? 5.0 * s / 8 : 5.0, 0.0, th, -std::numbers::pi / 8 * (1 - s / 8)};
+    }
+  };
+  Scene scene;
+  scene.curve = std::make_shared<Sine>();
+  scene.thickness = 0.5;
+  Options o;
+  o.method = Method::closed_form;
+  const Solution sol = solve(scene, o);
+  CHECK(sol.status == Status::not_applicable);
+  CHECK(sol.message.find("piecewise-circular") != std::string::npos);
+  CHECK(std::isnan(sol.H_over_V));
+}
