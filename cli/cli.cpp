@@ -149,18 +149,35 @@ const std::map<std::string, Method> kMethods = {{"closed-form", Method::closed_f
                                                 {"auto", Method::automatic}};
 const std::map<std::string, Integrator> kIntegrators = {{"adams", Integrator::adams}, {"bdf", Integrator::bdf}};
 
-void add_solver_options(CLI::App& cmd, Options& o, bool with_method = true) {
+// Method and integrator are bound as text and mapped here, so that only their names are accepted.
+struct SolverText {
+  std::string method = "auto";
+  std::string integrator = "adams";
+};
+
+void add_solver_options(CLI::App& cmd, Options& o, SolverText& text, bool with_method = true) {
   if (with_method)
-    cmd.add_option("--method", o.method, "closed-form, shooting, multiple-shooting or auto")
-        ->transform(CLI::CheckedTransformer(kMethods, CLI::ignore_case))
-        ->default_str("auto");
-  cmd.add_option("--integrator", o.integrator, "CVODE's method: adams or bdf")
-      ->transform(CLI::CheckedTransformer(kIntegrators, CLI::ignore_case))
-      ->default_str("adams");
-  cmd.add_option("--rtol", o.rtol, "relative tolerance, 1e-14 .. 0.1")->capture_default_str();
-  cmd.add_option("--atol", o.atol, "absolute tolerance of the scaled state (0: rtol * 1e-3)")->capture_default_str();
+    cmd.add_option("--method", text.method, "closed-form, shooting, multiple-shooting or auto")->capture_default_str();
+  cmd.add_option("--integrator", text.integrator, "CVODE's method: adams or bdf")->capture_default_str();
+  cmd.add_option("--rtol", o.rtol, "accuracy asked of the result, 1e-14 .. 0.1")->capture_default_str();
+  cmd.add_option("--atol", o.atol, "CVODE's absolute tolerance on the scaled state (0: 1e-6 of CVODE's rtol)")
+      ->capture_default_str();
   cmd.add_option("--segments", o.segments, "multiple-shooting segments over the half arch")->capture_default_str();
   cmd.add_option("--max-steps", o.max_steps, "CVODE step limit per integration span")->capture_default_str();
+}
+
+template <class Enum>
+Enum lookup(const std::map<std::string, Enum>& names, const std::string& text, const char* flag) {
+  const auto it = names.find(text);
+  if (it != names.end()) return it->second;
+  std::string known;
+  for (const auto& [name, value] : names) known += (known.empty() ? "" : ", ") + name;
+  throw UsageError(fmt::format("{}: unknown value '{}' (known: {})", flag, text, known));
+}
+
+void apply_solver_text(Options& o, const SolverText& text) {
+  o.method = lookup(kMethods, text.method, "--method");
+  o.integrator = lookup(kIntegrators, text.integrator, "--integrator");
 }
 
 void check_options(const Options& o) {
@@ -337,25 +354,26 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   app.require_subcommand(1);
   SceneOptions thrust_scene, profile_scene, check_scene, bench_scene;
   Options thrust_options, profile_options, check_options_, bench_options;
+  SolverText thrust_text, profile_text, check_text, bench_text;
   profile_options.stations = 101;
 
   CLI::App* thrust = app.add_subcommand("thrust", "reactions H, V and H/V: one row per scene");
   add_scene_options(*thrust, thrust_scene);
-  add_solver_options(*thrust, thrust_options);
+  add_solver_options(*thrust, thrust_options, thrust_text);
 
   CLI::App* profile = app.add_subcommand("profile", "N, V, M, e and the thrust line along the arch");
   add_scene_options(*profile, profile_scene);
-  add_solver_options(*profile, profile_options);
+  add_solver_options(*profile, profile_options, profile_text);
   profile->add_option("--stations", profile_options.stations, "stations, springing to springing (>= 2)")
       ->capture_default_str();
 
   CLI::App* check = app.add_subcommand("check", "every method's H/V against the closed form");
   add_scene_options(*check, check_scene);
-  add_solver_options(*check, check_options_, false);
+  add_solver_options(*check, check_options_, check_text, false);
 
   CLI::App* bench = app.add_subcommand("bench", "median time per solve and true error, per method and rtol");
   add_scene_options(*bench, bench_scene);
-  add_solver_options(*bench, bench_options, false);
+  add_solver_options(*bench, bench_options, bench_text, false);
   std::string bench_methods = "closed-form,shooting,multiple-shooting", bench_rtols = "1e-6,1e-8,1e-10";
   int repeats = 21;
   bench->add_option("--methods", bench_methods, "comma-separated methods")->capture_default_str();
@@ -377,6 +395,10 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     return kExitUsage;
   }
   try {
+    apply_solver_text(thrust_options, thrust_text);
+    apply_solver_text(profile_options, profile_text);
+    apply_solver_text(check_options_, check_text);
+    apply_solver_text(bench_options, bench_text);
     if (thrust->parsed()) return run_thrust(thrust_scene, *thrust, thrust_options, out);
     if (profile->parsed()) return run_profile(profile_scene, *profile, profile_options, out);
     if (check->parsed()) return run_check(check_scene, *check, check_options_, out);

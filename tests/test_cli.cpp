@@ -139,6 +139,8 @@ TEST_CASE("cli: bad input is one line on stderr, exit 2, nothing on stdout") {
       {"thrust", "--curve", "gothic"},
       {"thrust", "--curve", "semicircular", "--eccentricity", "0.5"},
       {"thrust", "--method", "magic"},
+      {"thrust", "--method", "3"},
+      {"thrust", "--integrator", "0"},
       {"thrust", "--integrator", "rk4"},
       {"thrust", "--rtol", "0"},
       {"thrust", "--rtol", "2"},
