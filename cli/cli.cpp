@@ -291,6 +291,19 @@ int run_check(SceneOptions& so, const CLI::App& cmd, const Options& base, std::o
   return all_ok ? kExitOk : kExitNotConverged;
 }
 
+constexpr int kProfileStations = 41;
+
+// max |M - M_ref| over the stations, relative to max |M_ref|; nan when either has no profile.
+double moment_error(const Solution& sol, const Solution& ref) {
+  if (sol.profile.size() != ref.profile.size() || ref.profile.empty()) return std::numeric_limits<double>::quiet_NaN();
+  double diff = 0, scale = 0;
+  for (std::size_t k = 0; k < ref.profile.size(); ++k) {
+    diff = std::max(diff, std::abs(sol.profile[k].M - ref.profile[k].M));
+    scale = std::max(scale, std::abs(ref.profile[k].M));
+  }
+  return diff / scale;
+}
+
 // Time per solve (median over repeats) and error against the closed form, per method and rtol.
 int run_bench(SceneOptions& so, const CLI::App& cmd, const Options& base, const std::string& methods_text,
               const std::string& rtols_text, int repeats, std::ostream& out) {
@@ -312,12 +325,13 @@ int run_bench(SceneOptions& so, const CLI::App& cmd, const Options& base, const 
   const std::vector<SceneParameters> grid = scene_grid(so, cmd);
   const std::vector<Scene> scenes = make_scenes(grid);
   std::string text = std::string(kSceneHeader) +
-                     ",method,integrator,rtol,segments,status,H_over_V,error_H_over_V,median_seconds,steps,"
+                     ",method,integrator,rtol,segments,status,H_over_V,error_H_over_V,error_profile,median_seconds,steps,"
                      "rhs_evaluations,condition_estimate\n";
   CsvRow row;
   for (std::size_t i = 0; i < scenes.size(); ++i) {
     Options ref_options = base;
     ref_options.method = Method::closed_form;
+    ref_options.stations = kProfileStations;
     const Solution reference = solve(scenes[i], ref_options);
     for (Method m : methods) {
       for (double rtol : rtols) {
@@ -333,10 +347,15 @@ int run_bench(SceneOptions& so, const CLI::App& cmd, const Options& base, const 
           seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         }
         std::nth_element(seconds.begin(), seconds.begin() + repeats / 2, seconds.end());
+        // The profile's error, outside the timing: the bending moment, the quantity that sets e.
+        Options profiled = o;
+        profiled.stations = kProfileStations;
+        const double profile_error = moment_error(solve(scenes[i], profiled), reference);
         add_scene_columns(row, grid[i]);
         row.add(to_string(m)).add(m == Method::closed_form ? "none" : to_string(o.integrator));
         row.add(m == Method::closed_form ? 0.0 : rtol).add(sol.diagnostics.segments).add(to_string(sol.status));
         row.add(sol.H_over_V).add(std::abs(sol.H_over_V - reference.H_over_V) / std::abs(reference.H_over_V));
+        row.add(profile_error);
         row.add(seconds[repeats / 2]).add(sol.diagnostics.steps).add(sol.diagnostics.rhs_evaluations);
         row.add(sol.diagnostics.condition_estimate);
         text += row.take();
