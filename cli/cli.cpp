@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "ogive/closed_form.hpp"
+#include "ogive/curve_families.hpp"
 #include "ogive/csv.hpp"
 #include "ogive/solve.hpp"
 #include "values.hpp"
@@ -26,12 +27,14 @@ namespace {
 
 struct SceneParameters {
   std::string curve;
-  double eccentricity, span, thickness_ratio, support_displacement_ratio;
+  double eccentricity, rise_ratio, haunch_angle, crown_angle;
+  double span, thickness_ratio, support_displacement_ratio;
   double youngs_modulus, poisson_ratio, density, gravity, shear_coefficient;
   bool plane_strain;
 };
 
-// A numeric scene option: its flag, its text as given, the rule its values must meet.
+// A numeric scene option: its flag, its text as given ("" = the curve family's default), the rule
+// its values must meet.
 struct Axis {
   std::string flag;
   std::string text;
@@ -43,9 +46,32 @@ struct Axis {
 
 bool positive(double v) { return v > 0; }
 
+// Which parameters each generator curve takes, and its defaults (see include/ogive/curve_families.hpp).
+struct CurveFamily {
+  std::string name;
+  bool eccentricity = false, rise = false, haunch = false, crown = false, file = false;
+  const char* default_rise = "";
+  const char* default_haunch = "";
+  const char* default_crown = "";
+};
+
+const std::vector<CurveFamily> kFamilies = {
+    {"pointed", true},
+    {"semicircular"},
+    {"segmental", false, true, false, false, false, "0.25"},
+    {"three-centred", false, true, true, false, false, "0.3333333333333333", "60"},
+    {"four-centred", false, true, true, true, false, "0.42", "45", "15"},
+    {"elliptical", false, true, false, false, false, "0.5"},
+    {"parabolic", false, true, false, false, false, "0.5"},
+    {"catenary", false, true, false, false, false, "0.5"},
+    {"points", false, false, false, false, true},
+};
+
 struct SceneOptions {
   std::string curve = "pointed";
+  std::string curve_file;
   bool plane_strain = false;
+  std::shared_ptr<const Curve> points;  // read once from curve_file
   std::vector<Axis> axes{
       // Order: the last axis varies fastest in the output.
       {"--span", "10", &SceneParameters::span, positive, "must be > 0 (m)"},
@@ -61,40 +87,86 @@ struct SceneOptions {
       {"--support-displacement-ratio", "0", &SceneParameters::support_displacement_ratio,
        [](double v) { return std::abs(v) <= 0.01; },
        "must lie in [-0.01, 0.01] (d/L; beyond, small-displacement theory does not hold)"},
+      {"--haunch-angle", "", &SceneParameters::haunch_angle, [](double v) { return v > 0 && v < 90; },
+       "must lie in (0, 90) degrees"},
+      {"--crown-angle", "", &SceneParameters::crown_angle, [](double v) { return v > 0 && v < 90; },
+       "must lie in (0, 90) degrees"},
+      {"--rise-ratio", "", &SceneParameters::rise_ratio, [](double v) { return v > 0 && v <= 2; },
+       "must lie in (0, 2] (h/L)"},
       {"--eccentricity", "0", &SceneParameters::eccentricity, [](double v) { return v >= 0 && v <= 100; },
        "must lie in [0, 100]"},
   };
 };
 
-const std::vector<std::string> kCurves = {"pointed", "semicircular"};
-
 void add_scene_options(CLI::App& cmd, SceneOptions& o) {
-  cmd.add_option("--curve", o.curve, "generator curve: pointed or semicircular")->capture_default_str();
+  std::string names;
+  for (const CurveFamily& f : kFamilies) names += (names.empty() ? "" : ", ") + f.name;
+  cmd.add_option("--curve", o.curve, "generator curve: " + names)->capture_default_str();
+  cmd.add_option("--curve-file", o.curve_file, "with --curve points: CSV of axis points x,y, springing to crown");
   for (Axis& a : o.axes)
-    cmd.add_option(a.flag, a.text, "value, list a,b,c or range start:stop:count")->capture_default_str();
+    cmd.add_option(a.flag, a.text, "value, list a,b,c or range start:stop:count" +
+                                       std::string(a.text.empty() ? " (default: the curve's)" : ""))
+        ->capture_default_str();
   cmd.add_flag("--plane-strain", o.plane_strain, "plane strain: E / (1 - nu^2) for axial and bending stiffness");
 }
 
+// "rise_ratio: rule" from the library becomes "--rise-ratio: rule".
+std::string as_option_message(const std::string& what) {
+  const std::size_t colon = what.find(':');
+  if (colon == std::string::npos || what.find_first_not_of("abcdefghijklmnopqrstuvwxyz_") < colon) return what;
+  std::string flag = "--" + what.substr(0, colon);
+  std::replace(flag.begin(), flag.end(), '_', '-');
+  return flag + what.substr(colon);
+}
+
 std::vector<SceneParameters> scene_grid(SceneOptions& o, const CLI::App& cmd) {
-  if (std::find(kCurves.begin(), kCurves.end(), o.curve) == kCurves.end())
-    throw UsageError(fmt::format("--curve: unknown curve '{}' (known: pointed, semicircular)", o.curve));
+  const auto family = std::find_if(kFamilies.begin(), kFamilies.end(), [&](const CurveFamily& f) { return f.name == o.curve; });
+  if (family == kFamilies.end()) {
+    std::string names;
+    for (const CurveFamily& f : kFamilies) names += (names.empty() ? "" : ", ") + f.name;
+    throw UsageError(fmt::format("--curve: unknown curve '{}' (known: {})", o.curve, names));
+  }
+  auto refuse_unless = [&](bool applies, const char* flag) {
+    if (!applies && cmd.count(flag) > 0) throw UsageError(fmt::format("{}: does not apply to --curve {}", flag, o.curve));
+  };
+  refuse_unless(family->eccentricity, "--eccentricity");
+  refuse_unless(family->rise, "--rise-ratio");
+  refuse_unless(family->haunch, "--haunch-angle");
+  refuse_unless(family->crown, "--crown-angle");
+  refuse_unless(family->file, "--curve-file");
+  refuse_unless(!family->file, "--span");  // a points file sets its own span
+  if (family->file) {
+    if (o.curve_file.empty()) throw UsageError("--curve-file: --curve points needs a file of axis points");
+    try {
+      o.points = read_points_curve(o.curve_file);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(e.what());
+    }
+  }
   std::size_t total = 1;
   for (Axis& a : o.axes) {
-    a.values = parse_values(a.text, a.flag);
+    std::string text = a.text;
+    if (text.empty()) {
+      if (a.flag == "--rise-ratio") text = family->default_rise;
+      if (a.flag == "--haunch-angle") text = family->default_haunch;
+      if (a.flag == "--crown-angle") text = family->default_crown;
+      if (text.empty()) text = "nan";  // not a parameter of this curve: printed as an empty field
+    }
+    if (family->file && a.flag == "--span") text = fmt::format("{}", o.points->span());
+    a.values = text == "nan" ? std::vector<double>{std::numeric_limits<double>::quiet_NaN()} : parse_values(text, a.flag);
     for (double v : a.values)
-      if (!a.allowed(v)) throw UsageError(fmt::format("{}: {}, got {}", a.flag, a.rule, v));
+      if (!std::isnan(v) && !a.allowed(v)) throw UsageError(fmt::format("{}: {}, got {}", a.flag, a.rule, v));
     total *= a.values.size();
     if (total > kMaxValues)
       throw UsageError(fmt::format("{}: the options give more than {} scenes", a.flag, kMaxValues));
   }
-  if (o.curve == "semicircular" && cmd.count("--eccentricity") > 0)
-    throw UsageError("--eccentricity: applies to --curve pointed only");
   std::vector<SceneParameters> grid;
   grid.reserve(total);
   std::vector<std::size_t> index(o.axes.size(), 0);
   for (std::size_t n = 0; n < total; ++n) {
-    SceneParameters p{o.curve, 0, 0, 0, 0, 0, 0, 0, 0, 0, o.plane_strain};
+    SceneParameters p{o.curve, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, o.plane_strain};
     for (std::size_t i = 0; i < o.axes.size(); ++i) p.*(o.axes[i].field) = o.axes[i].values[index[i]];
+    if (!family->eccentricity) p.eccentricity = std::numeric_limits<double>::quiet_NaN();
     grid.push_back(p);
     for (std::size_t i = o.axes.size(); i-- > 0;) {  // odometer: the last axis turns fastest
       if (++index[i] < o.axes[i].values.size()) break;
@@ -104,26 +176,37 @@ std::vector<SceneParameters> scene_grid(SceneOptions& o, const CLI::App& cmd) {
   return grid;
 }
 
-Scene make_scene(const SceneParameters& p) {
-  Scene scene;
-  scene.curve = make_pointed(p.span, p.curve == "semicircular" ? 0.0 : p.eccentricity);
-  scene.thickness = p.thickness_ratio * p.span;
-  scene.support_displacement = p.support_displacement_ratio * p.span;
-  scene.material = {p.youngs_modulus, p.poisson_ratio, p.density, p.gravity, p.shear_coefficient, p.plane_strain};
-  return scene;
+std::shared_ptr<const Curve> make_curve(const SceneParameters& p, const SceneOptions& o) {
+  const std::string& c = p.curve;
+  if (c == "pointed") return make_pointed(p.span, p.eccentricity);
+  if (c == "semicircular") return make_pointed(p.span, 0.0);
+  if (c == "segmental") return make_segmental(p.span, p.rise_ratio);
+  if (c == "three-centred") return make_three_centred(p.span, p.rise_ratio, p.haunch_angle);
+  if (c == "four-centred") return make_four_centred(p.span, p.rise_ratio, p.haunch_angle, p.crown_angle);
+  if (c == "elliptical") return make_elliptical(p.span, p.rise_ratio);
+  if (c == "parabolic") return make_parabolic(p.span, p.rise_ratio);
+  if (c == "catenary") return make_catenary(p.span, p.rise_ratio);
+  return o.points;
 }
 
 // Builds and validates every scene before anything is solved or printed.
-std::vector<Scene> make_scenes(const std::vector<SceneParameters>& grid) {
+std::vector<Scene> make_scenes(const std::vector<SceneParameters>& grid, const SceneOptions& o) {
   std::vector<Scene> scenes;
   scenes.reserve(grid.size());
   for (const SceneParameters& p : grid) {
-    Scene scene = make_scene(p);
+    Scene scene;
+    try {
+      scene.curve = make_curve(p, o);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(as_option_message(e.what()));
+    }
+    scene.thickness = p.thickness_ratio * p.span;
+    scene.support_displacement = p.support_displacement_ratio * p.span;
+    scene.material = {p.youngs_modulus, p.poisson_ratio, p.density, p.gravity, p.shear_coefficient, p.plane_strain};
     try {
       scene.validate();
     } catch (const std::invalid_argument& e) {
-      throw UsageError(fmt::format("scene with --eccentricity {} --thickness-ratio {} --span {}: {}", p.eccentricity,
-                                   p.thickness_ratio, p.span, e.what()));
+      throw UsageError(fmt::format("--thickness-ratio {} with --curve {}: {}", p.thickness_ratio, p.curve, e.what()));
     }
     scenes.push_back(std::move(scene));
   }
@@ -131,11 +214,22 @@ std::vector<Scene> make_scenes(const std::vector<SceneParameters>& grid) {
 }
 
 const char* kSceneHeader =
-    "curve,eccentricity,span,thickness_ratio,support_displacement_ratio,youngs_modulus,poisson_ratio,"
-    "density,gravity,shear_coefficient,plane_strain";
+    "curve,eccentricity,rise_ratio,haunch_angle,crown_angle,span,thickness_ratio,support_displacement_ratio,"
+    "youngs_modulus,poisson_ratio,density,gravity,shear_coefficient,plane_strain";
 
-void add_scene_columns(CsvRow& row, const SceneParameters& p) {
-  row.add(p.curve).add(p.eccentricity).add(p.span).add(p.thickness_ratio).add(p.support_displacement_ratio);
+// A parameter that does not apply to the scene's curve is an empty field, never "nan".
+void add_parameter(CsvRow& row, double value) {
+  if (std::isnan(value)) row.add(std::string_view{});
+  else row.add(value);
+}
+
+void add_scene_columns(CsvRow& row, const SceneParameters& p, const Scene& scene) {
+  row.add(p.curve);
+  add_parameter(row, p.eccentricity);
+  row.add(scene.curve->rise() / scene.span());  // the actual rise of every curve
+  add_parameter(row, p.haunch_angle);
+  add_parameter(row, p.crown_angle);
+  row.add(p.span).add(p.thickness_ratio).add(p.support_displacement_ratio);
   row.add(p.youngs_modulus).add(p.poisson_ratio).add(p.density).add(p.gravity).add(p.shear_coefficient);
   row.add(p.plane_strain ? "1" : "0");
 }
@@ -209,14 +303,14 @@ void add_solution_columns(CsvRow& row, const Solution& sol, const Options& o) {
 int run_thrust(SceneOptions& so, const CLI::App& cmd, const Options& o, std::ostream& out) {
   check_options(o);
   const std::vector<SceneParameters> grid = scene_grid(so, cmd);
-  const std::vector<Scene> scenes = make_scenes(grid);
+  const std::vector<Scene> scenes = make_scenes(grid, so);
   std::string text = std::string(kSceneHeader) + "," + kSolutionHeader + "\n";
   CsvRow row;
   bool all_ok = true;
   for (std::size_t i = 0; i < scenes.size(); ++i) {
     const Solution sol = solve(scenes[i], o);
     all_ok = all_ok && sol.ok();
-    add_scene_columns(row, grid[i]);
+    add_scene_columns(row, grid[i], scenes[i]);
     add_solution_columns(row, sol, o);
     text += row.take();
   }
@@ -231,7 +325,7 @@ int run_profile(SceneOptions& so, const CLI::App& cmd, Options o, std::ostream& 
   if (grid.size() * static_cast<std::size_t>(o.stations) > 10 * kMaxValues)
     throw UsageError(fmt::format("--stations: {} scenes x {} stations exceed {} rows", grid.size(), o.stations,
                                  10 * kMaxValues));
-  const std::vector<Scene> scenes = make_scenes(grid);
+  const std::vector<Scene> scenes = make_scenes(grid, so);
   std::string text = std::string(kSceneHeader) +
                      ",method,status,H_over_V,s,x,y,theta,Ux,Uy,psi,N,V,M,e,thrust_x,thrust_y\n";
   CsvRow row;
@@ -240,14 +334,14 @@ int run_profile(SceneOptions& so, const CLI::App& cmd, Options o, std::ostream& 
     const Solution sol = solve(scenes[i], o);
     all_ok = all_ok && sol.ok();
     if (sol.profile.empty()) {  // unsolved: one row that says so, no numbers
-      add_scene_columns(row, grid[i]);
+      add_scene_columns(row, grid[i], scenes[i]);
       row.add(to_string(sol.method)).add(to_string(sol.status)).add(sol.H_over_V);
       for (int k = 0; k < 14; ++k) row.add(std::numeric_limits<double>::quiet_NaN());
       text += row.take();
       continue;
     }
     for (const ArchState& st : sol.profile) {
-      add_scene_columns(row, grid[i]);
+      add_scene_columns(row, grid[i], scenes[i]);
       row.add(to_string(sol.method)).add(to_string(sol.status)).add(sol.H_over_V);
       row.add(st.s).add(st.x).add(st.y).add(st.theta).add(st.Ux).add(st.Uy).add(st.psi);
       row.add(st.N).add(st.V).add(st.M).add(st.e).add(st.thrust_x).add(st.thrust_y);
@@ -258,21 +352,38 @@ int run_profile(SceneOptions& so, const CLI::App& cmd, Options o, std::ostream& 
   return all_ok ? kExitOk : kExitNotConverged;
 }
 
-// Every applicable method on every scene, against the closed form.
+// The reference a scene's H/V is checked against: the closed form where it applies; otherwise
+// multiple shooting far tighter than anything checked against it (rtol 1e-12, 32 segments), whose
+// own error the tests bound by comparing it with the closed form on circular arcs.
+Solution reference_solution(const Scene& scene, Options o) {
+  if (!scene.curve->arcs().empty()) {
+    o.method = Method::closed_form;
+  } else {
+    o.method = Method::multiple_shooting;
+    o.integrator = Integrator::adams;
+    o.rtol = 1e-12;
+    o.segments = 32;
+  }
+  return solve(scene, o);
+}
+
+// Every applicable method on every scene, against the reference.
 int run_check(SceneOptions& so, const CLI::App& cmd, const Options& base, std::ostream& out) {
   check_options(base);
   const std::vector<SceneParameters> grid = scene_grid(so, cmd);
-  const std::vector<Scene> scenes = make_scenes(grid);
+  const std::vector<Scene> scenes = make_scenes(grid, so);
   std::string text = std::string(kSceneHeader) +
-                     ",method,integrator,rtol,segments,status,H_over_V,reference_H_over_V,relative_difference,"
-                     "tolerance,within_tolerance\n";
+                     ",method,integrator,rtol,segments,status,H_over_V,reference_method,reference_H_over_V,"
+                     "relative_difference,tolerance,within_tolerance\n";
   CsvRow row;
   bool all_ok = true;
   for (std::size_t i = 0; i < scenes.size(); ++i) {
-    Options ref_options = base;
-    ref_options.method = Method::closed_form;
-    const Solution reference = solve(scenes[i], ref_options);
+    const Solution reference = reference_solution(scenes[i], base);
+    const std::string reference_method = reference.method == Method::closed_form
+                                             ? "closed-form"
+                                             : "multiple-shooting rtol 1e-12";
     for (Method m : {Method::closed_form, Method::shooting, Method::multiple_shooting}) {
+      if (m == Method::closed_form && scenes[i].curve->arcs().empty()) continue;  // not applicable
       Options o = base;
       o.method = m;
       const Solution sol = solve(scenes[i], o);
@@ -280,15 +391,44 @@ int run_check(SceneOptions& so, const CLI::App& cmd, const Options& base, std::o
       const double tolerance = 10.0 * o.rtol;
       const bool within = sol.ok() && reference.ok() && diff <= tolerance;
       all_ok = all_ok && within;
-      add_scene_columns(row, grid[i]);
+      add_scene_columns(row, grid[i], scenes[i]);
       row.add(to_string(sol.method)).add(m == Method::closed_form ? "none" : to_string(o.integrator)).add(o.rtol);
-      row.add(sol.diagnostics.segments).add(to_string(sol.status)).add(sol.H_over_V).add(reference.H_over_V);
-      row.add(diff).add(tolerance).add(within ? "yes" : "no");
+      row.add(sol.diagnostics.segments).add(to_string(sol.status)).add(sol.H_over_V).add(reference_method);
+      row.add(reference.H_over_V).add(diff).add(tolerance).add(within ? "yes" : "no");
       text += row.take();
     }
   }
   out << text;
   return all_ok ? kExitOk : kExitNotConverged;
+}
+
+// The geometry: s, x, y, theta, kappa at equally spaced stations over the whole arch.
+int run_curve(SceneOptions& so, const CLI::App& cmd, int stations, std::ostream& out) {
+  if (stations < 2 || stations > 1000000) throw UsageError(fmt::format("--stations: must lie in [2, 1000000], got {}", stations));
+  const std::vector<SceneParameters> grid = scene_grid(so, cmd);
+  if (grid.size() * static_cast<std::size_t>(stations) > 10 * kMaxValues)
+    throw UsageError(fmt::format("--stations: {} scenes x {} stations exceed {} rows", grid.size(), stations, 10 * kMaxValues));
+  const std::vector<Scene> scenes = make_scenes(grid, so);
+  std::string text = std::string(kSceneHeader) + ",s,x,y,theta,kappa\n";
+  CsvRow row;
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    const Curve& curve = *scenes[i].curve;
+    const double S = curve.half_length(), L = curve.span();
+    for (int k = 0; k < stations; ++k) {
+      const double s = 2.0 * S * k / (stations - 1);
+      const bool right = s > S;
+      CurvePoint p = curve.at(right ? 2.0 * S - s : s);
+      if (right) {  // the mirror image, traversed onwards to the right springing
+        p.x = L - p.x;
+        p.theta = -p.theta;
+      }
+      add_scene_columns(row, grid[i], scenes[i]);
+      row.add(s).add(p.x).add(p.y).add(p.theta).add(p.kappa);
+      text += row.take();
+    }
+  }
+  out << text;
+  return kExitOk;
 }
 
 constexpr int kProfileStations = 41;
@@ -323,19 +463,19 @@ int run_bench(SceneOptions& so, const CLI::App& cmd, const Options& base, const 
   for (double r : rtols)
     if (!(r >= 1e-14 && r <= 0.1)) throw UsageError(fmt::format("--rtols: must lie in [1e-14, 0.1], got {}", r));
   const std::vector<SceneParameters> grid = scene_grid(so, cmd);
-  const std::vector<Scene> scenes = make_scenes(grid);
+  const std::vector<Scene> scenes = make_scenes(grid, so);
   std::string text = std::string(kSceneHeader) +
                      ",method,integrator,rtol,segments,status,H_over_V,error_H_over_V,error_profile,median_seconds,steps,"
                      "rhs_evaluations,condition_estimate\n";
   CsvRow row;
   for (std::size_t i = 0; i < scenes.size(); ++i) {
     Options ref_options = base;
-    ref_options.method = Method::closed_form;
     ref_options.stations = kProfileStations;
-    const Solution reference = solve(scenes[i], ref_options);
+    const Solution reference = reference_solution(scenes[i], ref_options);
     for (Method m : methods) {
       for (double rtol : rtols) {
         if (m == Method::closed_form && rtol != rtols.front()) continue;  // the closed form has no tolerance
+        if (m == Method::closed_form && scenes[i].curve->arcs().empty()) continue;  // not applicable
         Options o = base;
         o.method = m;
         o.rtol = rtol;
@@ -351,7 +491,7 @@ int run_bench(SceneOptions& so, const CLI::App& cmd, const Options& base, const 
         Options profiled = o;
         profiled.stations = kProfileStations;
         const double profile_error = moment_error(solve(scenes[i], profiled), reference);
-        add_scene_columns(row, grid[i]);
+        add_scene_columns(row, grid[i], scenes[i]);
         row.add(to_string(m)).add(m == Method::closed_form ? "none" : to_string(o.integrator));
         row.add(m == Method::closed_form ? 0.0 : rtol).add(sol.diagnostics.segments).add(to_string(sol.status));
         row.add(sol.H_over_V).add(std::abs(sol.H_over_V - reference.H_over_V) / std::abs(reference.H_over_V));
@@ -390,6 +530,12 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   add_scene_options(*check, check_scene);
   add_solver_options(*check, check_options_, check_text, false);
 
+  SceneOptions curve_scene;
+  int curve_stations = 101;
+  CLI::App* curve = app.add_subcommand("curve", "the generator curve: s, x, y, theta, kappa");
+  add_scene_options(*curve, curve_scene);
+  curve->add_option("--stations", curve_stations, "stations, springing to springing (>= 2)")->capture_default_str();
+
   CLI::App* bench = app.add_subcommand("bench", "median time per solve and true error, per method and rtol");
   add_scene_options(*bench, bench_scene);
   add_solver_options(*bench, bench_options, bench_text, false);
@@ -421,6 +567,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     if (thrust->parsed()) return run_thrust(thrust_scene, *thrust, thrust_options, out);
     if (profile->parsed()) return run_profile(profile_scene, *profile, profile_options, out);
     if (check->parsed()) return run_check(check_scene, *check, check_options_, out);
+    if (curve->parsed()) return run_curve(curve_scene, *curve, curve_stations, out);
     if (bench->parsed()) return run_bench(bench_scene, *bench, bench_options, bench_methods, bench_rtols, repeats, out);
   } catch (const UsageError& e) {
     err << "ogive: " << e.what() << "\n";

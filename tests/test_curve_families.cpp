@@ -1,2 +1,607 @@
 #include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
 #include "ogive/curve_families.hpp"
+#include "tolerances.hpp"
+
+using namespace ogive;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// Fourth-order central differences with a step d = 1e-3 times the smallest radius of curvature:
+// truncation ~(1e-3)^4 / 30, round-off ~1e-16 L / d.
+constexpr double kFiniteDifference = 1e-9;
+// An independent composite Simpson rule on 20000 panels of a smooth integrand.
+constexpr double kQuadrature = 1e-12;
+
+struct Sample {
+  std::string label;
+  std::shared_ptr<const Curve> curve;
+  double span, rise;
+  bool smooth;  // not piecewise circular
+};
+
+std::vector<Sample> family_samples() {
+  const double L = 10.0;
+  std::vector<Sample> out;
+  auto add = [&](std::string label, std::shared_ptr<const Curve> c, double rr, bool smooth) {
+    out.push_back({std::move(label), std::move(c), L, rr * L, smooth});
+  };
+  for (double rr : {0.1, 0.3, 0.45}) add("segmental " + std::to_string(rr), make_segmental(L, rr), rr, false);
+  add("three-centred 0.3", make_three_centred(L, 0.3), 0.3, false);
+  add("three-centred 0.2 at 50", make_three_centred(L, 0.2, 50), 0.2, false);
+  add("four-centred 0.35", make_four_centred(L, 0.35), 0.35, false);
+  add("four-centred 0.3 at 60/10", make_four_centred(L, 0.3, 60, 10), 0.3, false);
+  for (double rr : {0.1, 0.3, 0.5, 1.5}) add("elliptical " + std::to_string(rr), make_elliptical(L, rr), rr, true);
+  for (double rr : {0.05, 0.5, 2.0}) add("parabolic " + std::to_string(rr), make_parabolic(L, rr), rr, true);
+  for (double rr : {0.05, 0.3, 2.0}) add("catenary " + std::to_string(rr), make_catenary(L, rr), rr, true);
+  return out;
+}
+
+double simpson(const std::function<double(double)>& f, double a, double b, int panels = 20000) {
+  const double h = (b - a) / panels;
+  double sum = f(a) + f(b);
+  for (int i = 1; i < panels; ++i) sum += (i % 2 == 1 ? 4.0 : 2.0) * f(a + i * h);
+  return sum * h / 3;
+}
+
+// Fourth-order central difference of g at s with step d.
+double derivative(const std::function<double(double)>& g, double s, double d) {
+  return (-g(s + 2 * d) + 8 * g(s + d) - 8 * g(s - d) + g(s - 2 * d)) / (12 * d);
+}
+
+// The default composite-Gauss first moment of a curve (Curve::first_moment_x, not the override).
+struct DefaultMoment final : Curve {
+  std::shared_ptr<const Curve> inner;
+  std::string family() const override { return "quadrature"; }
+  double span() const override { return inner->span(); }
+  double half_length() const override { return inner->half_length(); }
+  CurvePoint at(double s) const override { return inner->at(s); }
+  std::vector<double> breakpoints() const override { return inner->breakpoints(); }
+};
+
+double parabola_y(double L, double h, double x) { return 4 * h * x * (L - x) / (L * L); }
+double parabola_theta(double L, double h, double x) { return std::atan(4 * h * (L - 2 * x) / (L * L)); }
+
+std::vector<std::pair<double, double>> parabola_points(double L, double h, int n) {
+  std::vector<std::pair<double, double>> xy;
+  for (int i = 0; i < n; ++i) {
+    const double x = 0.5 * L * i / (n - 1);
+    xy.emplace_back(x, parabola_y(L, h, x));
+  }
+  return xy;
+}
+
+std::string data_file(const char* name) {
+  return (std::filesystem::path(__FILE__).parent_path().parent_path() / "data" / "curves" / name).string();
+}
+
+std::shared_ptr<const Curve> parse_text(const std::string& text) {
+  std::istringstream in(text);
+  return parse_points_curve(in, "t.csv");
+}
+
+}  // namespace
+
+TEST_CASE("every family starts at the springing and ends at the crown (L/2, h)") {
+  for (const Sample& f : family_samples()) {
+    CAPTURE(f.label);
+    const Curve& c = *f.curve;
+    CHECK(c.span() == f.span);
+    CHECK(c.half_length() > 0);
+    const CurvePoint spring = c.at(0.0), crown = c.at(c.half_length());
+    CHECK(std::abs(spring.x) <= kExact * f.span);
+    CHECK(std::abs(spring.y) <= kExact * f.span);
+    CHECK(close(crown.x, f.span / 2, kExact));
+    CHECK(close(crown.y, f.rise, kExact));
+    CHECK(close(c.rise(), f.rise, kExact));
+    if (c.family() == "four-centred")
+      CHECK(crown.theta > 0.01);
+    else
+      CHECK(std::abs(crown.theta) <= kExact);
+    CHECK(f.smooth == c.arcs().empty());
+    if (f.smooth) CHECK(c.breakpoints().empty());
+  }
+}
+
+TEST_CASE("every family is ds-consistent: dx/ds = cos theta, dy/ds = sin theta, dtheta/ds = kappa < 0") {
+  for (const Sample& f : family_samples()) {
+    CAPTURE(f.label);
+    const Curve& c = *f.curve;
+    const double S = c.half_length();
+    const auto bps = c.breakpoints();
+    double max_kappa = 0;
+    for (int i = 0; i <= 200; ++i) max_kappa = std::max(max_kappa, std::abs(c.at(S * i / 200).kappa));
+    const double d = std::min(1e-3 * S, 1e-3 / max_kappa);  // a step small against the radius of curvature
+    for (int i = 1; i < 60; ++i) {
+      const double s = S * i / 60.0;
+      CAPTURE(s);
+      const CurvePoint p = c.at(s);
+      CHECK(p.kappa < 0);
+      bool near_break = false;
+      for (double b : bps) near_break = near_break || std::abs(s - b) < 3 * d;
+      if (near_break) continue;
+      CHECK(std::abs(derivative([&](double t) { return c.at(t).x; }, s, d) - std::cos(p.theta)) <= kFiniteDifference);
+      CHECK(std::abs(derivative([&](double t) { return c.at(t).y; }, s, d) - std::sin(p.theta)) <= kFiniteDifference);
+      CHECK(std::abs(derivative([&](double t) { return c.at(t).theta; }, s, d) - p.kappa) <=
+            kFiniteDifference * max_kappa);
+    }
+  }
+}
+
+TEST_CASE("smooth family half_length and first_moment_x agree with an independent quadrature") {
+  const double L = 10.0, U = 5.0;
+  for (double rr : {0.05, 0.3, 0.5, 2.0}) {
+    CAPTURE(rr);
+    const double h = rr * L;
+    {  // Parabola: ds = sqrt(1 + y'^2) dx.
+      const auto c = make_parabolic(L, rr);
+      auto ds = [&](double x) { return std::hypot(1.0, 4 * h * (L - 2 * x) / (L * L)); };
+      CHECK(close(c->half_length(), simpson(ds, 0, U), kQuadrature));
+      CHECK(close(c->first_moment_x(), simpson([&](double x) { return x * ds(x); }, 0, U), kQuadrature));
+    }
+    {  // Catenary.
+      const double a = catenary_parameter(L, rr);
+      const auto c = make_catenary(L, rr);
+      auto ds = [&](double x) { return std::cosh((x - U) / a); };
+      CHECK(close(c->half_length(), simpson(ds, 0, U), kQuadrature));
+      CHECK(close(c->first_moment_x(), simpson([&](double x) { return x * ds(x); }, 0, U), kQuadrature));
+    }
+    if (rr <= 1.5) {  // Ellipse: the quarter perimeter by the trapezoid rule over the whole period.
+      const auto c = make_elliptical(L, rr);
+      auto speed = [&](double t) { return std::hypot(U * std::sin(t), h * std::cos(t)); };
+      const int n = 4000;
+      double perimeter = 0;
+      for (int i = 0; i < n; ++i) perimeter += speed(2 * kPi * i / n) * (2 * kPi / n);
+      CHECK(close(c->half_length(), perimeter / 4, kQuadrature));
+      CHECK(close(c->first_moment_x(),
+                  simpson([&](double t) { return U * (1 - std::cos(t)) * speed(t); }, 0, kPi / 2), kQuadrature));
+    }
+  }
+  // Every family's first moment agrees with the default composite-Gauss rule on its own at(s).
+  for (const Sample& f : family_samples()) {
+    CAPTURE(f.label);
+    DefaultMoment q;
+    q.inner = f.curve;
+    CHECK(close(q.first_moment_x(), f.curve->first_moment_x(), kExact));
+  }
+}
+
+TEST_CASE("smooth family at(s) continues smoothly just beyond both ends") {
+  std::vector<std::shared_ptr<const Curve>> curves = {make_elliptical(10, 0.2), make_parabolic(10, 0.5),
+                                                      make_catenary(10, 0.3),
+                                                      make_points_curve(parabola_points(10, 5, 20))};
+  for (const auto& c : curves) {
+    CAPTURE(c->family());
+    const double S = c->half_length(), d = 1e-7 * S;
+    for (double s0 : {0.0, S}) {
+      const CurvePoint p = c->at(s0);
+      for (double ds : {-d, d}) {
+        const CurvePoint q = c->at(s0 + ds);
+        CHECK(std::isfinite(q.x + q.y + q.theta + q.kappa));
+        // Second order in ds: |kappa| ds^2 / 2 at most, plus round-off.
+        CHECK(std::abs(q.x - (p.x + ds * std::cos(p.theta))) <= std::abs(p.kappa) * d * d + kExact * 10);
+        CHECK(std::abs(q.y - (p.y + ds * std::sin(p.theta))) <= std::abs(p.kappa) * d * d + kExact * 10);
+      }
+    }
+  }
+}
+
+TEST_CASE("elliptical family at rise L/2 is the semicircle") {
+  const double L = 10.0;
+  const auto e = make_elliptical(L, 0.5);
+  const auto c = make_pointed(L, 0.0);
+  CHECK(close(e->half_length(), c->half_length(), kExact));
+  for (int i = 0; i <= 100; ++i) {
+    const double s = c->half_length() * i / 100;
+    CAPTURE(s);
+    const CurvePoint p = e->at(s), q = c->at(s);
+    CHECK(std::abs(p.x - q.x) <= kExact * L);
+    CHECK(std::abs(p.y - q.y) <= kExact * L);
+    CHECK(std::abs(p.theta - q.theta) <= kExact);
+    CHECK(close(p.kappa, q.kappa, kExact));
+  }
+}
+
+TEST_CASE("elliptical family lies on its ellipse with the ellipse's curvature") {
+  const double L = 10.0, a = 5.0;
+  for (double rr : {0.1, 0.3, 1.5}) {
+    const double h = rr * L;
+    const auto c = make_elliptical(L, rr);
+    for (int i = 0; i <= 50; ++i) {
+      const CurvePoint p = c->at(c->half_length() * i / 50);
+      const double u = (p.x - a) / a, v = p.y / h;
+      CHECK(std::abs(u * u + v * v - 1) <= kExact);
+      // kappa = -a h / (a^2 sin^2 t + h^2 cos^2 t)^{3/2} with cos t = -u, sin t = v.
+      const double q = a * a * v * v + h * h * u * u;
+      CHECK(close(p.kappa, -a * h / (q * std::sqrt(q)), 1e-10));
+    }
+  }
+}
+
+TEST_CASE("segmental family follows the known radius formula") {
+  const double L = 10.0;
+  for (double rr : {0.05, 0.25, 0.49}) {
+    CAPTURE(rr);
+    const double h = rr * L;
+    const double R = (L * L / 4 + h * h) / (2 * h);
+    const auto c = make_segmental(L, rr);
+    REQUIRE(c->arcs().size() == 1);
+    CHECK(close(c->arcs()[0].kappa, -1 / R, kExact));
+    CHECK(close(c->at(0).theta, std::asin(L / (2 * R)), kExact));
+    CHECK(close(c->half_length(), R * std::asin(L / (2 * R)), kExact));
+    for (int i = 0; i <= 20; ++i) {
+      const CurvePoint p = c->at(c->half_length() * i / 20);
+      CHECK(close(std::hypot(p.x - L / 2, p.y - (h - R)), R, kExact));
+    }
+  }
+}
+
+TEST_CASE("three-centred family: tangent-continuous, curvature jumps from -1/r1 to -1/r2 at the breakpoint") {
+  const double L = 10.0;
+  for (double phi_deg : {30.0, 60.0, 75.0}) {
+    const auto [lo, hi] = three_centred_rise_range(phi_deg);
+    CHECK(close(lo, (1 - std::sin(phi_deg * kPi / 180)) / (2 * std::cos(phi_deg * kPi / 180)), kExact));
+    CHECK(hi == 0.5);
+    for (double t : {0.02, 0.5, 0.98}) {
+      const double rr = lo + t * (hi - lo), h = rr * L, phi = phi_deg * kPi / 180;
+      CAPTURE(phi_deg);
+      CAPTURE(rr);
+      const auto c = make_three_centred(L, rr, phi_deg);
+      const auto bps = c->breakpoints();
+      REQUIRE(bps.size() == 1);
+      const double b = bps[0], eps = 1e-9 * c->half_length();
+      const CurvePoint before = c->at(b - eps), after = c->at(b + eps), at = c->at(b);
+      // Tangent-continuous: the jump across 2 eps is the turning of the arcs over that length.
+      CHECK(std::abs(after.theta - before.theta) <= eps * (std::abs(before.kappa) + std::abs(after.kappa)) + kExact);
+      const CurvePoint haunch_end = point_on_arc(c->arcs()[0], c->arcs()[0].length);
+      CHECK(std::abs(haunch_end.theta - c->arcs()[1].theta_start) <= kExact);
+      CHECK(close(at.theta, kPi / 2 - phi, kExact));
+      const double r1 = -1 / before.kappa, r2 = -1 / after.kappa;
+      CHECK(r1 > 0);
+      CHECK(r2 > r1);
+      // Independent geometry: haunch centre (r1, 0); crown centre (L/2, h - r2); the joint is on both
+      // circles and on the line through both centres.
+      CHECK(close(std::hypot(at.x - r1, at.y), r1, kExact));
+      CHECK(close(std::hypot(at.x - L / 2, at.y - (h - r2)), r2, kExact));
+      CHECK(close(std::hypot(L / 2 - r1, h - r2), r2 - r1, kExact));
+    }
+  }
+  // Classic equal-angle construction: each of the three arcs subtends 60 degrees.
+  const auto c = make_three_centred(L, 0.3);
+  REQUIRE(c->arcs().size() == 2);
+  CHECK(close(c->arcs()[0].length * -c->arcs()[0].kappa, kPi / 3, kExact));
+  CHECK(close(c->arcs()[1].length * -c->arcs()[1].kappa, kPi / 6, kExact));  // half of the crown arc
+  // Outside the interval: refused, naming rise_ratio and the interval.
+  CHECK_THROWS_WITH_AS(make_three_centred(L, 0.1), doctest::Contains("rise_ratio: must lie in (0.133975, 0.5)"),
+                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(make_three_centred(L, 0.5), doctest::Contains("rise_ratio"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(make_three_centred(L, 0.3, 90), doctest::Contains("haunch_angle"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(make_three_centred(L, 0.3, 0), doctest::Contains("haunch_angle"), std::invalid_argument);
+}
+
+TEST_CASE("four-centred family reproduces the quarter-point construction and joins tangentially") {
+  // Haunch centres at the quarter points (r1 = L/4), crown centres at the lower corners of the square
+  // standing below them: the left crown arc is centred at (3L/4, -L/2) with r2 = L/4 + L/sqrt(2).
+  const double L = 8.0;
+  const double r1 = L / 4, r2 = L / 4 + L / std::sqrt(2.0);
+  const double crown_deg = std::asin(r1 / r2) * 180 / kPi;
+  const double rise = -L / 2 + std::sqrt(r2 * r2 - r1 * r1);
+  const auto c = make_four_centred(L, rise / L, 45, crown_deg);
+  REQUIRE(c->arcs().size() == 2);
+  CHECK(close(-1 / c->arcs()[0].kappa, r1, kExact));
+  CHECK(close(-1 / c->arcs()[1].kappa, r2, kExact));
+  CHECK(close(c->at(c->half_length()).theta, crown_deg * kPi / 180, kExact));
+  for (int i = 0; i <= 10; ++i) {
+    const double s = c->arcs()[1].s_start + c->arcs()[1].length * i / 10;
+    const CurvePoint p = c->at(s);
+    CHECK(close(std::hypot(p.x - 3 * L / 4, p.y + L / 2), r2, kExact));
+  }
+  const double b = c->breakpoints().at(0), eps = 1e-9;
+  CHECK(std::abs(c->at(b + eps).theta - c->at(b - eps).theta) <= 2 * eps / r1);
+  CHECK(std::abs(point_on_arc(c->arcs()[0], c->arcs()[0].length).theta - c->arcs()[1].theta_start) <= kExact);
+  CHECK(close(c->at(b).theta, kPi / 4, kExact));
+  // The defaults' interval, and refusals.
+  const auto [lo, hi] = four_centred_rise_range(45, 15);
+  CHECK(std::abs(lo - 0.288675) < 1e-6);
+  CHECK(std::abs(hi - 0.651613) < 1e-6);
+  CHECK_NOTHROW(make_four_centred(L, lo + 1e-9));
+  CHECK_NOTHROW(make_four_centred(L, hi - 1e-9));
+  CHECK_THROWS_WITH_AS(make_four_centred(L, 0.25), doctest::Contains("rise_ratio: must lie in (0.288675, 0.651613)"),
+                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(make_four_centred(L, 0.7), doctest::Contains("rise_ratio"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(make_four_centred(L, 0.4, 45, 0), doctest::Contains("crown_angle"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(make_four_centred(L, 0.4, 45, 45), doctest::Contains("crown_angle"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(make_four_centred(L, 0.4, 95, 5), doctest::Contains("haunch_angle"), std::invalid_argument);
+}
+
+TEST_CASE("catenary family: the parameter solves a (cosh(L/2a) - 1) = h and the curve is the catenary") {
+  const double L = 10.0;
+  for (double rr : {1e-4, 0.05, 0.3, 0.5, 2.0}) {
+    CAPTURE(rr);
+    const double h = rr * L, a = catenary_parameter(L, rr);
+    // a (cosh z - 1) = 2 a sinh^2(z / 2), the form without cancellation for small rises.
+    CHECK(close(2 * a * std::pow(std::sinh(L / (4 * a)), 2), h, kExact));
+    if (rr >= 0.05) CHECK(close(a * (std::cosh(L / (2 * a)) - 1), h, kExact));
+    const auto c = make_catenary(L, rr);
+    // Funicular: H / V at the springing = cot theta(0) = 1 / sinh(L / 2a).
+    CHECK(close(1 / std::tan(c->at(0).theta), 1 / std::sinh(L / (2 * a)), kExact));
+    for (int i = 0; i <= 20; ++i) {
+      const CurvePoint p = c->at(c->half_length() * i / 20);
+      CHECK(std::abs(p.y - (h - a * (std::cosh((p.x - L / 2) / a) - 1))) <= kExact * L);
+    }
+  }
+}
+
+TEST_CASE("parabolic family: y(x), the springing angle atan(4h/L) and the curvature") {
+  const double L = 10.0;
+  for (double rr : {0.05, 0.5, 2.0}) {
+    const double h = rr * L;
+    const auto c = make_parabolic(L, rr);
+    CHECK(close(c->at(0).theta, std::atan(4 * h / L), kExact));
+    for (int i = 0; i <= 20; ++i) {
+      const CurvePoint p = c->at(c->half_length() * i / 20);
+      CHECK(std::abs(p.y - parabola_y(L, h, p.x)) <= kExact * L);
+      CHECK(std::abs(p.theta - parabola_theta(L, h, p.x)) <= kExact);
+      const double slope = std::tan(p.theta);
+      CHECK(close(p.kappa, -8 * h / (L * L) / std::pow(1 + slope * slope, 1.5), kExact));
+    }
+  }
+}
+
+TEST_CASE("family factories refuse invalid parameters, naming the field") {
+  CHECK_THROWS_WITH_AS(make_segmental(10, 0.7), "rise_ratio: must lie in (0, 0.5) for a segmental arch, got 0.7",
+                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(make_segmental(-1, 0.2), doctest::Contains("span: "), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(make_segmental(10, 0), doctest::Contains("rise_ratio: "), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(make_elliptical(10, 2.5), "rise_ratio: must lie in (0, 2] for an elliptical arch, got 2.5",
+                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(make_parabolic(10, std::nan("")), doctest::Contains("rise_ratio: "), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(make_catenary(10, -0.1), doctest::Contains("rise_ratio: "), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(catenary_parameter(0, 0.1), doctest::Contains("span: "), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(make_three_centred(INFINITY, 0.3), doctest::Contains("span: "), std::invalid_argument);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Points
+
+TEST_CASE("points fitted to exact parabola samples reproduce it and converge as points are added") {
+  const double L = 10.0, h = 5.0;
+  const auto exact = make_parabolic(L, 0.5);
+  double previous_y = 0, previous_theta = 0, previous_length = 0;
+  for (int n : {40, 80, 160}) {
+    CAPTURE(n);
+    const auto c = make_points_curve(parabola_points(L, h, n));
+    CHECK(c->family() == "points");
+    CHECK(c->span() == L);
+    CHECK(c->breakpoints().empty());
+    CHECK(c->arcs().empty());
+    CHECK(c->at(0).x == 0);
+    CHECK(c->at(0).y == 0);
+    CHECK(c->at(c->half_length()).x == L / 2);
+    CHECK(c->at(c->half_length()).y == h);
+    CHECK(std::abs(c->at(c->half_length()).theta) <= kExact);
+    double err_y = 0, err_theta = 0;
+    for (int i = 0; i <= 2000; ++i) {
+      const CurvePoint p = c->at(c->half_length() * i / 2000);
+      err_y = std::max(err_y, std::abs(p.y - parabola_y(L, h, p.x)));
+      err_theta = std::max(err_theta, std::abs(p.theta - parabola_theta(L, h, p.x)));
+    }
+    const double err_length = std::abs(c->half_length() - exact->half_length());
+    MESSAGE("n ", n, ": max |dy| ", err_y, " m, max |dtheta| ", err_theta, " rad, |dS| ", err_length, " m");
+    CHECK(err_y <= 1e-5 * L);
+    CHECK(err_theta <= 1e-3);
+    CHECK(err_length <= 1e-5 * L);
+    if (n > 40) {
+      CHECK(err_y < previous_y / 8);  // fourth order: 16 per halving
+      CHECK(err_theta < previous_theta / 4);
+      CHECK(err_length < previous_length / 8);
+    }
+    previous_y = err_y;
+    previous_theta = err_theta;
+    previous_length = err_length;
+  }
+}
+
+TEST_CASE("points curve is ds-consistent and its first moment matches quadrature") {
+  const auto c = make_points_curve(parabola_points(10, 5, 40));
+  // The spline's third derivative jumps at the points: a small step keeps the truncation error small.
+  const double S = c->half_length(), d = 1e-4 * S;
+  for (int i = 1; i < 60; ++i) {
+    const double s = S * i / 60.0;
+    const CurvePoint p = c->at(s);
+    CHECK(std::abs(derivative([&](double t) { return c->at(t).x; }, s, d) - std::cos(p.theta)) <= kFiniteDifference);
+    CHECK(std::abs(derivative([&](double t) { return c->at(t).y; }, s, d) - std::sin(p.theta)) <= kFiniteDifference);
+    // The spline's curvature is continuous but its derivative jumps at the points: second-order only.
+    CHECK(std::abs(derivative([&](double t) { return c->at(t).theta; }, s, d) - p.kappa) <= 1e-5);
+  }
+  // The override integrates knot by knot; the default composite rule does not see the knots: 1e-9 only.
+  DefaultMoment q;
+  q.inner = c;
+  CHECK(close(q.first_moment_x(), c->first_moment_x(), 1e-9));
+  CHECK(close(c->first_moment_x(), make_parabolic(10, 0.5)->first_moment_x(), 1e-5));
+}
+
+TEST_CASE("points files shipped in data/curves fit their curves") {
+  {
+    const auto file = read_points_curve(data_file("parabola-40.csv"));
+    const auto direct = make_points_curve(parabola_points(10, 5, 40));
+    CHECK(file->span() == 10);
+    CHECK(close(file->half_length(), direct->half_length(), 1e-14));
+    for (int i = 0; i <= 50; ++i) {
+      const double s = file->half_length() * i / 50;
+      CHECK(std::abs(file->at(s).y - direct->at(s).y) <= 1e-14 * 10);
+    }
+  }
+  {
+    const auto c = read_points_curve(data_file("semicircle-24.csv"));
+    const auto exact = make_pointed(10, 0);
+    CHECK(c->span() == 10);
+    CHECK(close(c->half_length(), exact->half_length(), 1e-5));
+    for (int i = 0; i <= 200; ++i) {
+      const CurvePoint p = c->at(c->half_length() * i / 200);
+      CHECK(std::abs(std::hypot(p.x - 5, p.y) - 5) <= 1e-5);
+      CHECK(std::abs(p.kappa + 0.2) <= 2e-3);
+    }
+    CHECK(std::abs(c->at(0).theta - kPi / 2) <= 1e-3);
+  }
+  {
+    const auto c = read_points_curve(data_file("catenary-survey.csv"));
+    CHECK(c->span() == 12);
+    CHECK(c->rise() == 4);
+    const auto model = make_catenary(12, 4.0 / 12);
+    CHECK(close(c->half_length(), model->half_length(), 1e-3));
+    for (int i = 0; i <= 100; ++i) {
+      const CurvePoint p = c->at(c->half_length() * i / 100);
+      const double a = catenary_parameter(12, 4.0 / 12);
+      CHECK(std::abs(p.y - (4 - a * (std::cosh((p.x - 6) / a) - 1))) <= 5e-3);  // survey noise: +-2 mm
+      CHECK(p.kappa < 0);
+    }
+  }
+}
+
+TEST_CASE("points file variants (CRLF, BOM, spaces, trailing blank lines) give identical curves") {
+  std::string plain = "x,y\n";
+  for (const auto& [x, y] : parabola_points(10, 5, 12)) plain += fmt::format("{},{}", x, y) + "\n";
+  const auto reference = parse_text(plain);
+  auto replace_all = [](std::string s, const std::string& from, const std::string& to) {
+    for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size()))
+      s.replace(at, from.size(), to);
+    return s;
+  };
+  const std::vector<std::string> variants = {
+      replace_all(plain, "\n", "\r\n"),
+      "\xEF\xBB\xBF" + plain,
+      plain + "\n\n  \n\t\n",
+      replace_all(replace_all(plain, ",", " ,\t "), "x ,\t y", " X , Y "),
+      plain.substr(0, plain.size() - 1),  // no final line end
+      "\xEF\xBB\xBF" + replace_all(plain, "\n", "\r\n") + "\r\n\r\n",
+  };
+  for (std::size_t v = 0; v < variants.size(); ++v) {
+    CAPTURE(v);
+    const auto c = parse_text(variants[v]);
+    CHECK(c->half_length() == reference->half_length());
+    CHECK(c->first_moment_x() == reference->first_moment_x());
+    for (int i = 0; i <= 40; ++i) {
+      const double s = reference->half_length() * i / 40;
+      const CurvePoint p = c->at(s), q = reference->at(s);
+      CHECK(p.x == q.x);
+      CHECK(p.y == q.y);
+      CHECK(p.theta == q.theta);
+      CHECK(p.kappa == q.kappa);
+    }
+  }
+}
+
+TEST_CASE("points file errors are CurveFileErrors located at the right line") {
+  const std::string good = "0,0\n1,1.5\n2,2.5\n3,3\n";
+  struct Case {
+    std::string text;
+    std::size_t line;
+    std::string rule;
+  };
+  const std::string long_line = "1," + std::string(4095, '1');  // 4097 characters
+  std::string too_many = "x,y\n";
+  for (int i = 0; i <= 100000; ++i) too_many += std::to_string(i) + "," + std::to_string(i == 0 ? 0 : 1) + "\n";
+  const std::vector<Case> cases = {
+      {"", 1, "empty file"},
+      {"\n\n", 1, "empty file"},
+      {"\nx,y\n" + good, 1, "expected the header x,y, got a blank line"},
+      {"a,b\n" + good, 1, "the header must be x,y, got \"a,b\""},
+      {"x;y\n" + good, 1, "the header must be x,y"},
+      {"x,y,z\n" + good, 1, "the header must be x,y"},
+      {"x,y\n0,0\n1,2,3\n", 3, "expected 2 fields x,y, got 3"},
+      {"x,y\n0,0\n1\n", 3, "expected 2 fields x,y, got 1"},
+      {"x,y\n0,0\n1,2,\n", 3, "expected 2 fields x,y, got 3"},
+      {"x,y\n0,0\nabc,1\n", 3, "x is not a number: \"abc\""},
+      {"x,y\n0,0\n1,\n", 3, "y is not a number: \"\""},
+      {"x,y\n0,0\n1,2m\n", 3, "y is not a number: \"2m\""},
+      {"x,y\n0,0\n1,+-2\n", 3, "y is not a number"},
+      {"x,y\n0,0\n1\r2,3\n", 3, "x is not a number: \"1\\x0d2\""},
+      {"x,y\n0,0\n1,nan\n", 3, "y must be a finite number, got \"nan\""},
+      {"x,y\n0,0\n1,-inf\n", 3, "y must be a finite number"},
+      {"x,y\n0,0\n1,1e999\n", 3, "y is out of the range of a double"},
+      {"x,y\n", 1, "0 points, a points curve needs at least 4"},
+      {"x,y\n0,0\n1,1\n2,2\n", 4, "3 points, a points curve needs at least 4"},
+      {"x,y\n0,0\n1,1\n\n2,2\n3,3\n", 4, "blank line inside the data"},
+      {"x,y\n0,0\n" + long_line + "\n2,2\n", 3, "line longer than 4096 characters"},
+      {too_many, 100002, "more than 100000 points"},
+      {"x,y\n0,0.5\n1,1\n2,2\n3,3\n", 2, "the first point is the springing and must lie on the springing line"},
+      {"x,y\n0,0\n1,1\n1,1\n2,2\n3,3\n", 4, "repeated point (1, 1)"},
+      {"x,y\n0,0\n1,1\n2,2\n1.5,2.5\n3,3\n", 5, "x must increase from springing to crown (1.5 after 2)"},
+      {"x,y\n0,0\n1,1\n1,2\n3,3\n", 4, "x must increase from springing to crown (1 after 1)"},
+      {"x,y\n0,0\n1,-0.1\n2,2\n3,3\n", 3, "must lie above the springing line y = 0, got y = -0.1"},
+      {"x,y\n0,0\n1,0\n2,2\n3,3\n", 3, "must lie above the springing line"},
+      {"x,y\n0,0\n1,1\n2,2\n3,1.5\n4,2.5\n", 5, "y must not fall from springing to crown (1.5 after 2)"},
+      {"x,y\n0,0\n1,2\n2,3\n3,2.5\n", 5, "y must not fall"},
+  };
+  for (const Case& k : cases) {
+    CAPTURE(k.text.substr(0, 60));
+    try {
+      parse_text(k.text);
+      FAIL("no error");
+    } catch (const CurveFileError& e) {
+      const std::string what = e.what();
+      CHECK(e.line() == k.line);
+      CHECK(e.file() == "t.csv");
+      CHECK(what.rfind("t.csv:" + std::to_string(k.line) + ": ", 0) == 0);
+      CHECK(what.find(k.rule) != std::string::npos);
+      CHECK(what.find('\n') == std::string::npos);
+      CHECK(what.find('\r') == std::string::npos);
+      CAPTURE(what);
+      CHECK(what.size() < 300);
+    }
+  }
+  // Number forms: an optional sign (also '+'), leading or trailing point, exponent in either case.
+  const auto forms = parse_text("x,y\n+0,-0\n.5,1E-0\n1.,+1.5\n2e0,2.5e+00\n");
+  CHECK(forms->span() == 4);
+  CHECK(forms->rise() == 2.5);
+  // A line of exactly 4096 characters is fine.
+  const std::string longest = "0.5," + std::string(4096 - 5, ' ') + "1";
+  CHECK(longest.size() == 4096);
+  CHECK_NOTHROW(parse_text("x,y\n0,0\n" + longest + "\n2,2\n3,3\n"));
+  CHECK_NOTHROW(parse_text("x,y\r\n0,0\r\n" + longest + "\r\n2,2\r\n3,3\r\n"));
+  // Whole-file problems carry line 0 and no line in the message.
+  const std::string missing = "/nonexistent-ogive-dir/none.csv";
+  try {
+    read_points_curve(missing);
+    FAIL("no error");
+  } catch (const CurveFileError& e) {
+    CHECK(e.line() == 0);
+    CHECK(std::string(e.what()).rfind(missing + ": cannot be opened (No such file or directory)", 0) == 0);
+  }
+  const std::string dir = std::filesystem::temp_directory_path().string();
+  const std::string dir_rule = dir + ": cannot be read";
+  CHECK_THROWS_WITH_AS(read_points_curve(dir), doctest::Contains(dir_rule.c_str()), CurveFileError);
+  // CurveFileError is an invalid_argument.
+  CHECK_THROWS_AS(parse_text("x,y\n"), std::invalid_argument);
+}
+
+TEST_CASE("make_points_curve applies the same rules to points given directly") {
+  CHECK_THROWS_WITH_AS(make_points_curve({{0, 0}, {1, 1}, {2, 2}}),
+                       "points: 3 points given, a points curve needs 4 to 100000", std::invalid_argument);
+  CHECK_THROWS_WITH_AS(make_points_curve({{0, 0}, {1, 1}, {0.5, 2}, {3, 3}, {4, 4}}),
+                       "points: point 3 (of 5): x must increase from springing to crown (0.5 after 1)",
+                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(make_points_curve({{0, 0}, {1, NAN}, {2, 2}, {3, 3}}),
+                       doctest::Contains("points: point 2 (of 4): x and y must be finite"), std::invalid_argument);
+  // Springing translated to x = 0; a springing within 1e-9 span of the line is put on it.
+  const auto c = make_points_curve({{100, 1e-10}, {101, 1.5}, {102, 2.5}, {103, 3}});
+  CHECK(c->span() == 6);
+  CHECK(c->at(0).x == 0);
+  CHECK(c->at(0).y == 0);
+  CHECK(c->at(c->half_length()).x == 3);
+  CHECK(c->rise() == 3);
+}

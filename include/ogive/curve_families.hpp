@@ -1,6 +1,183 @@
-// The classic arch families of MODEL.md and the user's surveyed points (issue 4). To be filled in.
+// The classic arch families of MODEL.md ("Generator curves") and the user's surveyed points, as Curves.
+//
+// Every factory takes the span L (m) and the rise as a ratio rise_ratio = h / L, and returns the LEFT half
+// of a symmetric arch (see curve.hpp). Invalid parameters throw std::invalid_argument whose message is
+// "<name>: <rule>, got <value>", <name> being the parameter as the CLI spells it without dashes
+// (span, rise_ratio, haunch_angle, crown_angle), e.g.
+//   "rise_ratio: must lie in (0, 0.5) for a segmental arch, got 0.7".
+//
+// Piecewise-circular families (segmental, three-centred, four-centred) are PiecewiseCircularCurves, so
+// arcs() is non-empty and the closed form applies. The others (elliptical, parabolic, catenary, points)
+// are smooth: their at(s) is accurate to about 1e-15 relative (position, angle, curvature), curvature is
+// continuous, and breakpoints() is empty. For s slightly outside [0, S] they extrapolate the curve's
+// natural continuation.
 #pragma once
+
+#include <cstddef>
+#include <iosfwd>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "ogive/curve.hpp"
 
-namespace ogive {}
+namespace ogive {
+
+// ---------------------------------------------------------------------------------------------------
+// Piecewise-circular families.
+
+// Segmental: one circular arc through both springings and the crown, 0 < rise_ratio < 0.5.
+// Radius R = (L^2/4 + h^2) / (2 h); the springing tangent makes 2 atan(2 h / L) with the horizontal.
+std::shared_ptr<const Curve> make_segmental(double span, double rise_ratio);
+
+// Three-centred (basket-handle) arch: a haunch arc of radius r1 centred on the springing line at (r1, 0)
+// (vertical tangent at the springing) turns through haunch_angle; a crown arc of radius r2 > r1 centred
+// on the mid-span line continues it tangentially to a horizontal crown tangent. r1 and r2 follow from
+// span and rise:
+//   r1 (1 - cos a) + r2 cos a = L/2,   r1 sin a + r2 (1 - sin a) = h     (a = haunch_angle).
+// haunch_angle in (0, 90) degrees; the default 60 is the classic equal-angle construction (each of the
+// three arcs subtends 60 degrees). Possible rises: rise_ratio in three_centred_rise_range(haunch_angle),
+// i.e. ((1 - sin a) / (2 cos a), 0.5) -- (0.1340, 0.5) for 60 degrees. At the lower end r1 -> 0, at the
+// upper end r1 = r2 (the semicircle).
+std::shared_ptr<const Curve> make_three_centred(double span, double rise_ratio, double haunch_angle_deg = 60);
+
+// Four-centred (Tudor) pointed arch: the three-centred construction with a pointed crown. A haunch arc of
+// radius r1, centred on the springing line at (r1, 0), leaves the springing vertically and turns through
+// haunch_angle; a crown arc of radius r2 > r1 (centre below the springing line, on the far side of
+// mid-span) continues it tangentially and meets its mirror image at the crown with the tangent at
+// crown_angle above the horizontal (a kink of 2 crown_angle). r1 and r2 follow linearly from span and rise:
+//   r1 (1 - cos a) + r2 (cos a - sin c) = L/2,   r1 sin a + r2 (cos c - sin a) = h   (a, c as named).
+// haunch_angle in (0, 90) degrees, crown_angle in (0, 90 - haunch_angle) degrees (crown_angle 0 is the
+// three-centred arch). Possible rises: rise_ratio in four_centred_rise_range(haunch_angle, crown_angle) =
+//   ((cos c - sin a) / (2 (cos a - sin c)), cos c / (2 (1 - sin c)))
+// -- (0.2887, 0.6516) for the defaults 45 and 15. At the lower end r1 -> 0 (a two-centred arch with a
+// corner at the springing); at the upper end r1 = r2 (the pointed arch of that crown angle).
+// The defaults are close to the textbook quarter-point construction (haunch centres at the quarter points
+// of the span, crown centres at the lower corners of the square standing below them: haunch_angle 45,
+// r1 = L/4, r2 = (1/4 + 1/sqrt 2) L, crown_angle = asin(r1 / r2) = 15.14 degrees, rise_ratio 0.4239).
+std::shared_ptr<const Curve> make_four_centred(double span, double rise_ratio, double haunch_angle_deg = 45,
+                                               double crown_angle_deg = 15);
+
+// The open interval of rise ratios each construction can make, for the given angles (degrees); throws like
+// the factories for angles outside their domain.
+std::pair<double, double> three_centred_rise_range(double haunch_angle_deg);
+std::pair<double, double> four_centred_rise_range(double haunch_angle_deg, double crown_angle_deg);
+
+// ---------------------------------------------------------------------------------------------------
+// Smooth families: rise_ratio in (0, 2] for each (an upper limit of practice, not of the mathematics).
+
+// Half-ellipse with semi-axes L/2 (horizontal) and h: x = L/2 (1 - cos t), y = h sin t, t in [0, pi/2].
+// rise_ratio 0.5 is the semicircle, computed by the same general path (not special-cased to a circular
+// arc, so the closed form does not apply to it). Arc length: adaptive Gauss-Legendre, inverted by Newton.
+std::shared_ptr<const Curve> make_elliptical(double span, double rise_ratio);
+
+// Parabola y = 4 h x (L - x) / L^2. Closed-form arc length (asinh), inverted by Newton. The springing
+// tangent is atan(4 h / L), not vertical.
+std::shared_ptr<const Curve> make_parabolic(double span, double rise_ratio);
+
+// Catenary y = h - a (cosh((x - L/2) / a) - 1), a from a (cosh(L / (2 a)) - 1) = h. Arc length from the
+// crown is a sinh(u / a) (u = L/2 - x), so at(s) is explicit. Funicular of its own weight: H / V at the
+// springing = 1 / sinh(L / (2 a)).
+std::shared_ptr<const Curve> make_catenary(double span, double rise_ratio);
+
+// The catenary's parameter a (m) for that span and rise ratio (same domain checks as make_catenary).
+double catenary_parameter(double span, double rise_ratio);
+
+// ---------------------------------------------------------------------------------------------------
+// Smooth curves given by a parameter t, re-parameterised by arc length: the base of the elliptical and
+// points curves. A derived class supplies the position and its first two t-derivatives on each piece
+// (pieces are the intervals between the knots given to build_arc_length; the curve must be analytic
+// inside each piece and have a non-vanishing speed), then calls build_arc_length from its constructor.
+// The arc length is tabulated on panels (adaptive 16-point Gauss-Legendre, never crossing a knot, each
+// panel's integral agreeing with its two halves' sum to 4e-15 relative); at(s) finds t by safeguarded
+// Newton on s(t), which is accurate to round-off.
+class ParametricCurve : public Curve {
+ public:
+  struct Jet {
+    double x, y;    // position, m
+    double dx, dy;  // d/dt
+    double ddx, ddy;  // d^2/dt^2
+  };
+  double half_length() const override { return s_.back(); }
+  CurvePoint at(double s) const override;
+  double first_moment_x() const override { return first_moment_; }
+  // The parameter t at arc length s (exact table values at the panel ends, so at(0) and at(S) are the
+  // curve's end points exactly).
+  double parameter_at(double s) const;
+
+ protected:
+  // piece: the index of the knot interval that contains t (t may lie slightly outside it when
+  // extrapolating beyond the ends).
+  virtual Jet jet(double t, std::size_t piece) const = 0;
+  // knots: strictly increasing, first = the springing's t, last = the crown's t; at least two.
+  // initial_panels: panels per piece before adaptive refinement.
+  void build_arc_length(const std::vector<double>& knots, int initial_panels = 1);
+
+ private:
+  std::pair<double, std::size_t> locate(double s) const;  // t and its piece
+  double speed(double t, std::size_t piece) const;
+  double integral_of_speed(double t0, double t1, std::size_t piece) const;
+  std::vector<double> t_;           // panel ends, size P + 1
+  std::vector<double> s_;           // arc length at the panel ends
+  std::vector<std::size_t> piece_;  // the knot interval of each panel, size P
+  double first_moment_ = 0;
+};
+
+// ---------------------------------------------------------------------------------------------------
+// Points: a user's list of axis points, fitted by a C2 curve and re-parameterised by arc length.
+//
+// File format (CSV, UTF-8 or ASCII):
+//   - line 1 is the header "x,y" (case-insensitive; spaces or tabs around the fields allowed);
+//   - then one point per line, "x,y" in metres, from the springing to the crown of a symmetric arch;
+//     decimal numbers: an optional sign ('+' too), digits with an optional point, an optional exponent
+//     (1e-3, 1E+2); no hex, inf or nan; values must be finite doubles;
+//   - accepted as ordinary: CRLF line ends, a UTF-8 byte-order mark, spaces/tabs around fields, blank
+//     lines at the end of the file. A blank line followed by more data is an error;
+//   - at most 4096 characters a line (without the line end), at least 4 and at most 100000 points.
+// Errors name the physical line (the header is line 1); syntax is checked while reading, then the rules
+// below, so a syntax error anywhere is reported before a broken rule. An empty file is reported at line
+// 1, too few points at the last point's line. Rules for the points (in file order):
+//   - the first point is the springing: |y| <= 1e-9 * span (it is then set to exactly 0), x is shifted so
+//     that the springing is at x = 0; span = 2 (x_last - x_first): the last point is the crown;
+//   - no point repeats its predecessor; x strictly increases; every point after the springing lies above
+//     the springing line (y > 0); y never falls from springing to crown (so the crown is the highest point
+//     and the arch cannot double back).
+// The fit: a parametric cubic spline x(tau), y(tau) in cumulative chord length tau (so a vertical
+// springing tangent is fine), through the points AND their mirror images about the crown, with
+// not-a-knot end conditions at both springings. By symmetry that spline has y'(crown) = 0 (horizontal
+// crown tangent, as a smooth symmetric arch must) and x''(crown) = 0 and continuous curvature through the
+// crown; it is computed on the half as a spline with those two crown conditions, which is the same
+// spline. Not-a-knot (rather than natural) ends keep the springing's curvature instead of forcing it to 0,
+// so the fit is fourth-order accurate up to the springing. The curvature is continuous (breakpoints()
+// empty); its derivative jumps at the points.
+
+// A problem with a points file, located: what() is one line "FILE:LINE: rule broken", or "FILE: rule
+// broken" when the problem is the file as a whole (cannot be opened or read; line() is then 0).
+class CurveFileError : public std::invalid_argument {
+ public:
+  CurveFileError(const std::string& file, std::size_t line, const std::string& rule);
+  const std::string& file() const { return file_; }
+  std::size_t line() const { return line_; }
+  const std::string& rule() const { return rule_; }
+
+ private:
+  std::string file_;
+  std::size_t line_;
+  std::string rule_;
+};
+
+inline constexpr std::size_t kPointsMinCount = 4;
+inline constexpr std::size_t kPointsMaxCount = 100000;
+inline constexpr std::size_t kPointsMaxLineLength = 4096;
+
+// Reads and fits a points file; throws CurveFileError.
+std::shared_ptr<const Curve> read_points_curve(const std::string& path);
+// The same from a stream; name_for_messages stands for FILE in the errors.
+std::shared_ptr<const Curve> parse_points_curve(std::istream& in, const std::string& name_for_messages);
+// The same rules for points given directly (file coordinates); throws std::invalid_argument
+// "points: point K (of N): rule broken", K counted from 1.
+std::shared_ptr<const Curve> make_points_curve(std::vector<std::pair<double, double>> xy);
+
+}  // namespace ogive
