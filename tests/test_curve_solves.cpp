@@ -1,0 +1,111 @@
+// Issue 4's acceptance: every family solved, against physics and against the closed form.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "ogive/curve_families.hpp"
+#include "ogive/solve.hpp"
+#include "tolerances.hpp"
+
+using namespace ogive;
+
+namespace {
+
+Solution run(std::shared_ptr<const Curve> curve, double t_over_L, Method m, double rtol = 1e-10, int stations = 0,
+             Integrator integ = Integrator::adams) {
+  Scene scene;
+  scene.curve = std::move(curve);
+  scene.thickness = t_over_L * scene.curve->span();
+  Options o;
+  o.method = m;
+  o.rtol = rtol;
+  o.stations = stations;
+  o.integrator = integ;
+  return solve(scene, o);
+}
+
+double max_abs_e(const Solution& sol) {
+  double m = 0;
+  for (const ArchState& st : sol.profile) m = std::max(m, std::abs(st.e));
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("curve solves: the elliptical arch with rise L/2 gives the semicircle's H/V to 1e-9") {
+  const double circle = run(make_pointed(10.0, 0.0), 0.08, Method::closed_form).H_over_V;
+  for (Integrator integ : {Integrator::adams, Integrator::bdf}) {
+    const Solution ellipse = run(make_elliptical(10.0, 0.5), 0.08, Method::multiple_shooting, 1e-11, 0, integ);
+    REQUIRE(ellipse.ok());
+    CHECK(relative_difference(ellipse.H_over_V, circle) <= 1e-9);
+  }
+}
+
+TEST_CASE("curve solves: the catenary tends to its funicular H/V = 1/sinh(L/2a) and e falls with t/L") {
+  const double L = 10.0, rise = 0.5;
+  const double funicular = 1.0 / std::sinh(L / (2.0 * catenary_parameter(L, rise)));
+  double previous_gap = 1.0, previous_e = 0.0, previous_t = 0.0;
+  for (double t : {0.08, 0.02, 0.005, 0.001}) {
+    const Solution sol = run(make_catenary(L, rise), t, Method::multiple_shooting, 1e-10, 201);
+    REQUIRE(sol.ok());
+    const double gap = relative_difference(sol.H_over_V, funicular);
+    const double e = max_abs_e(sol);
+    CAPTURE(t);
+    CHECK(gap < previous_gap);
+    if (previous_t > 0) {
+      // The remainder comes from axial shortening: the largest |e| falls in proportion to t/L.
+      const double ratio = (previous_e / e) / (previous_t / t);
+      CHECK(ratio > 0.8);
+      CHECK(ratio < 1.25);
+    }
+    previous_gap = gap;
+    previous_e = e;
+    previous_t = t;
+  }
+  CHECK(previous_gap < 1e-4);  // at t/L = 0.001
+  CHECK(previous_e < 1.0);     // the compression is all but centred: |e| < 1 % of the kern
+}
+
+TEST_CASE("curve solves: three- and four-centred arches give the same H/V in closed form and with CVODE") {
+  for (auto curve : {make_three_centred(10.0, 1.0 / 3.0), make_three_centred(10.0, 0.25, 50.0),
+                     make_four_centred(10.0, 0.42), make_four_centred(10.0, 0.5, 40.0, 10.0)}) {
+    REQUIRE(!curve->arcs().empty());
+    REQUIRE(!curve->breakpoints().empty());
+    const Solution ref = run(curve, 0.08, Method::closed_form);
+    REQUIRE(ref.ok());
+    for (Integrator integ : {Integrator::adams, Integrator::bdf})
+      for (Method m : {Method::shooting, Method::multiple_shooting})
+        for (double rtol : {1e-6, 1e-9}) {
+          const Solution sol = run(curve, 0.08, m, rtol, 0, integ);
+          CAPTURE(curve->family());
+          CAPTURE(to_string(m));
+          CAPTURE(rtol);
+          REQUIRE(sol.ok());
+          CHECK(relative_difference(sol.H_over_V, ref.H_over_V) <= 10 * rtol);
+        }
+  }
+}
+
+TEST_CASE("curve solves: points sampled from the parabola reproduce its H/V and converge as points are added") {
+  const double L = 10.0, h = 5.0;
+  const double parabola = run(make_parabolic(L, h / L), 0.08, Method::multiple_shooting, 1e-11).H_over_V;
+  auto sampled = [&](int n) {
+    std::vector<std::pair<double, double>> xy;
+    for (int i = 0; i < n; ++i) {
+      const double x = 0.5 * L * i / (n - 1);
+      xy.emplace_back(x, 4.0 * h * x * (L - x) / (L * L));
+    }
+    return make_points_curve(xy);
+  };
+  const double e40 = relative_difference(run(sampled(40), 0.08, Method::multiple_shooting, 1e-11).H_over_V, parabola);
+  const double e80 = relative_difference(run(sampled(80), 0.08, Method::multiple_shooting, 1e-11).H_over_V, parabola);
+  const double e160 = relative_difference(run(sampled(160), 0.08, Method::multiple_shooting, 1e-11).H_over_V, parabola);
+  CHECK(e40 <= 1e-4);
+  CHECK(e80 < e40);
+  CHECK(e160 < e80);
+  // The shipped file holds the same 40 points.
+  const double file = run(read_points_curve(OGIVE_DATA_DIR "/curves/parabola-40.csv"), 0.08,
+                          Method::multiple_shooting, 1e-11).H_over_V;
+  CHECK(relative_difference(file, parabola) <= 1e-4);
+}
