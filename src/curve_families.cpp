@@ -371,6 +371,12 @@ std::pair<double, std::size_t> ParametricCurve::locate(double s) const {
 
 double ParametricCurve::parameter_at(double s) const { return locate(s).first; }
 
+double ParametricCurve::arc_length_at_knot(double t) const {
+  const auto it = std::lower_bound(t_.begin(), t_.end(), t);
+  if (it == t_.end() || *it != t) throw std::logic_error("arc_length_at_knot: not a knot");
+  return s_[static_cast<std::size_t>(it - t_.begin())];
+}
+
 CurvePoint ParametricCurve::at(double s) const {
   const auto [t, piece] = locate(s);
   const Jet j = jet(t, piece);

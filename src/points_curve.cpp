@@ -91,6 +91,12 @@ class PointsCurve final : public ParametricCurve {
   }
   std::string family() const override { return "points"; }
   double span() const override { return span_; }
+  // The interior points: the curvature's derivative jumps there (see the header).
+  std::vector<double> breakpoints() const override {
+    std::vector<double> out;
+    for (std::size_t i = 1; i + 1 < tau_.size(); ++i) out.push_back(arc_length_at_knot(tau_[i]));
+    return out;
+  }
 
  protected:
   Jet jet(double t, std::size_t i) const override {

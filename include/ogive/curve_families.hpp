@@ -114,6 +114,8 @@ class ParametricCurve : public Curve {
   // knots: strictly increasing, first = the springing's t, last = the crown's t; at least two.
   // initial_panels: panels per piece before adaptive refinement.
   void build_arc_length(const std::vector<double>& knots, int initial_panels = 1);
+  // The arc length at a parameter value that is a knot given to build_arc_length (exact table entry).
+  double arc_length_at_knot(double t) const;
 
  private:
   std::pair<double, std::size_t> locate(double s) const;  // t and its piece
@@ -151,7 +153,9 @@ class ParametricCurve : public Curve {
 // crown; it is computed on the half as a spline with those two crown conditions, which is the same
 // spline. Not-a-knot (rather than natural) ends keep the springing's curvature instead of forcing it to 0,
 // so the fit is fourth-order accurate up to the springing. The curvature is continuous (breakpoints()
-// empty); its derivative jumps at the points.
+// empty would do for the geometry); its derivative jumps at the points, so breakpoints() returns the
+// interior points' arc lengths: there an integrator of high order must restart, or its error estimate
+// fails (measured: a 25-point survey gave profile errors 30x the asked rtol without the restarts).
 
 // A problem with a points file, located: what() is one line "FILE:LINE: rule broken", or "FILE: rule
 // broken" when the problem is the file as a whole (cannot be opened or read; line() is then 0).
