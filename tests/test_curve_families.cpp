@@ -1,5 +1,7 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -386,7 +388,12 @@ TEST_CASE("points fitted to exact parabola samples reproduce it and converge as 
     const auto c = make_points_curve(parabola_points(L, h, n));
     CHECK(c->family() == "points");
     CHECK(c->span() == L);
-    CHECK(c->breakpoints().empty());
+    // One restart per interior point, strictly increasing inside (0, S).
+    const std::vector<double> bp = c->breakpoints();
+    CHECK(bp.size() == static_cast<std::size_t>(n) - 2);
+    CHECK(std::is_sorted(bp.begin(), bp.end()));
+    CHECK(bp.front() > 0);
+    CHECK(bp.back() < c->half_length());
     CHECK(c->arcs().empty());
     CHECK(c->at(0).x == 0);
     CHECK(c->at(0).y == 0);

@@ -40,7 +40,7 @@ class Curve {
   virtual double span() const = 0;         // L, m
   virtual double half_length() const = 0;  // S, m
   virtual CurvePoint at(double s) const = 0;
-  // Interior arc lengths where the curvature jumps: integrators restart there.
+  // Interior arc lengths where the curvature or its derivative jumps: integrators restart there.
   virtual std::vector<double> breakpoints() const { return {}; }
   // Non-empty exactly when the curve is piecewise circular; then the closed form applies arc by arc.
   virtual std::span<const CircularArc> arcs() const { return {}; }
