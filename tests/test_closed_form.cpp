@@ -8,20 +8,13 @@
 #include "ogive/closed_form.hpp"
 #include "ogive/solve.hpp"
 #include "reference.hpp"
+#include "scenes.hpp"
 #include "tolerances.hpp"
 
 using namespace ogive;
 
 namespace {
 
-// The paper's scene: L = 10 m, travertine, t and d as ratios of the span.
-Scene paper_scene(double eps, double t_over_L = 0.08, double d_over_L = 0.0) {
-  Scene s;
-  s.curve = make_pointed(10.0, eps);
-  s.thickness = t_over_L * 10.0;
-  s.support_displacement = d_over_L * 10.0;
-  return s;
-}
 
 Solution closed_form(const Scene& scene, int stations = 0) {
   Options o;
@@ -164,13 +157,6 @@ TEST_CASE("Figure 10: H/V falls linearly with d; zero near d/L = 0.017 % for the
   }
 }
 
-namespace {
-double max_abs_e(const Solution& sol) {
-  double m = 0;
-  for (const ArchState& st : sol.profile) m = std::max(m, std::abs(st.e));
-  return m;
-}
-}  // namespace
 
 TEST_CASE("Figure 11: large bending at the crown; eps 0.5 is the most favourable; thick arches stay in the kern at the springing") {
   constexpr int kStations = 401;

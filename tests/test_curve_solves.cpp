@@ -6,6 +6,7 @@
 
 #include "ogive/curve_families.hpp"
 #include "ogive/solve.hpp"
+#include "scenes.hpp"
 #include "tolerances.hpp"
 
 using namespace ogive;
@@ -25,11 +26,6 @@ Solution run(std::shared_ptr<const Curve> curve, double t_over_L, Method m, doub
   return solve(scene, o);
 }
 
-double max_abs_e(const Solution& sol) {
-  double m = 0;
-  for (const ArchState& st : sol.profile) m = std::max(m, std::abs(st.e));
-  return m;
-}
 
 }  // namespace
 

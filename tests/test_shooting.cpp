@@ -9,19 +9,13 @@
 #include "ogive/closed_form.hpp"
 #include "ogive/shooting.hpp"
 #include "ogive/solve.hpp"
+#include "scenes.hpp"
 #include "tolerances.hpp"
 
 using namespace ogive;
 
 namespace {
 
-Scene paper_scene(double eps, double t_over_L = 0.08, double d_over_L = 0.0) {
-  Scene s;
-  s.curve = make_pointed(10.0, eps);
-  s.thickness = t_over_L * 10.0;
-  s.support_displacement = d_over_L * 10.0;
-  return s;
-}
 
 Solution run(const Scene& scene, Method m, Integrator i = Integrator::adams, double rtol = 1e-8, int stations = 0,
              int segments = 8) {
