@@ -87,7 +87,7 @@ TEST_CASE("cli: profile prints --stations rows per scene with the internal force
   CHECK(ogive::close(std::stod(column(r.out, "x", 7)), 10.0, ogive::kExact));
 }
 
-TEST_CASE("cli: check reports every method within tolerance; methods and integrators selectable") {
+TEST_CASE("cli: check reports every method within tolerance - methods and integrators selectable") {
   const Run r = cli({"check", "--eccentricity", "0,1", "--rtol", "1e-7", "--integrator", "bdf"});
   REQUIRE(r.status == 0);
   const auto ls = lines(r.out);
@@ -99,7 +99,7 @@ TEST_CASE("cli: check reports every method within tolerance; methods and integra
   CHECK(column(s.out, "segments") == "4");
 }
 
-TEST_CASE("cli: a solver failure is a status in the row, no number, and exit 3") {
+TEST_CASE("cli: a solver failure is a status in the row - no number - and exit 3") {
   const Run r = cli({"thrust", "--method", "shooting", "--rtol", "1e-12", "--max-steps", "3", "--eccentricity", "0,0.5"});
   CHECK(r.status == 3);
   CHECK(r.err.empty());
@@ -110,7 +110,7 @@ TEST_CASE("cli: a solver failure is a status in the row, no number, and exit 3")
   }
 }
 
-TEST_CASE("cli: bad input is one line on stderr, exit 2, nothing on stdout") {
+TEST_CASE("cli: bad input is one line on stderr - exit 2 - nothing on stdout") {
   const std::vector<std::vector<std::string>> cases = {
       {"thrust", "--eccentricity", "-0.5"},
       {"thrust", "--eccentricity", "nan"},
@@ -174,7 +174,7 @@ TEST_CASE("cli: bad input is one line on stderr, exit 2, nothing on stdout") {
   CHECK(cli({"thrust", "--thickness-ratio", "1.5"}).err.find("--thickness-ratio") != std::string::npos);
 }
 
-TEST_CASE("cli: help goes to stdout with exit 0; output is deterministic") {
+TEST_CASE("cli: help goes to stdout with exit 0 - output is deterministic") {
   const Run h = cli({"--help"});
   CHECK(h.status == 0);
   CHECK(h.out.find("thrust") != std::string::npos);

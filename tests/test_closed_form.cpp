@@ -81,7 +81,7 @@ TEST_CASE("closed form: H/V is practically independent of Poisson's ratio (Figur
   }
 }
 
-TEST_CASE("closed form: agrees with the force method (Castigliano) for any eccentricity, thickness, d") {
+TEST_CASE("closed form: agrees with the force method (Castigliano) for any eccentricity - thickness - d") {
   for (double eps : {0.0, 0.25, 0.5, 1.0, 2.0, 5.0})
     for (double t : {0.01, 0.08, 0.2})
       for (double d : {0.0, 1e-4, -5e-5}) {
@@ -102,7 +102,7 @@ TEST_CASE("closed form: agrees with the force method (Castigliano) for any eccen
               kTwoExactMethods));
 }
 
-TEST_CASE("Figure 8: H/V about 0.40 for the semicircle, about 41 % lower at eps 0.5 and 55 % at eps 1") {
+TEST_CASE("Figure 8: H/V about 0.40 for the semicircle - about 41 % lower at eps 0.5 and 55 % at eps 1") {
   const double semicircle = closed_form(paper_scene(0.0)).H_over_V;
   CHECK(close(semicircle, 0.40, kFigureReading));
   const double drop_half = 1.0 - closed_form(paper_scene(0.5)).H_over_V / semicircle;
@@ -133,7 +133,7 @@ TEST_CASE("Figure 9: thicker arches have a smaller H/V at every eccentricity") {
   }
 }
 
-TEST_CASE("Figure 10: H/V falls linearly with d; zero near d/L = 0.017 % for the semicircle") {
+TEST_CASE("Figure 10: H/V falls linearly with d - zero near d/L = 0.017 % for the semicircle") {
   // Linearity is exact in a linear model: second differences vanish to round-off.
   for (double eps : {0.0, 0.5, 1.0}) {
     const double h0 = closed_form(paper_scene(eps, 0.08, 0.0)).H_over_V;
@@ -158,7 +158,7 @@ TEST_CASE("Figure 10: H/V falls linearly with d; zero near d/L = 0.017 % for the
 }
 
 
-TEST_CASE("Figure 11: large bending at the crown; eps 0.5 is the most favourable; thick arches stay in the kern at the springing") {
+TEST_CASE("Figure 11: large bending at the crown - eps 0.5 is the most favourable - thick arches stay in the kern at the springing") {
   constexpr int kStations = 401;
   for (double t : {0.08, 0.20}) {
     const Solution circle = closed_form(paper_scene(0.0, t), kStations);
@@ -182,7 +182,7 @@ TEST_CASE("Figure 11: large bending at the crown; eps 0.5 is the most favourable
         std::abs(closed_form(paper_scene(0.0, 0.08), 3).profile.front().e));
 }
 
-TEST_CASE("Figure 12: for the semicircle, e near the crown grows huge at d/L = 0.03 %") {
+TEST_CASE("Figure 12: for the semicircle - e near the crown grows huge at d/L = 0.03 %") {
   const double e0 = std::abs(closed_form(paper_scene(0.0, 0.08, 0.0), 3).profile[1].e);
   const double e3 = std::abs(closed_form(paper_scene(0.0, 0.08, 3e-4), 3).profile[1].e);
   CHECK(e0 > 100.0);

@@ -8,7 +8,7 @@
 
 using namespace ogive;
 
-TEST_CASE("pointed curve: springing, crown and radius follow the construction") {
+TEST_CASE("pointed curve: springing - crown and radius follow the construction") {
   const double L = 10.0;
   for (double eps : {0.0, 0.25, 0.5, 1.0, 3.0}) {
     CAPTURE(eps);

@@ -97,7 +97,7 @@ std::shared_ptr<const Curve> parse_text(const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("every family starts at the springing and ends at the crown (L/2, h)") {
+TEST_CASE("every family starts at the springing and ends at the crown (L/2 - h)") {
   for (const Sample& f : family_samples()) {
     CAPTURE(f.label);
     const Curve& c = *f.curve;
@@ -118,7 +118,7 @@ TEST_CASE("every family starts at the springing and ends at the crown (L/2, h)")
   }
 }
 
-TEST_CASE("every family is ds-consistent: dx/ds = cos theta, dy/ds = sin theta, dtheta/ds = kappa < 0") {
+TEST_CASE("every family is ds-consistent: dx/ds = cos theta - dy/ds = sin theta - dtheta/ds = kappa < 0") {
   for (const Sample& f : family_samples()) {
     CAPTURE(f.label);
     const Curve& c = *f.curve;
@@ -251,7 +251,7 @@ TEST_CASE("segmental family follows the known radius formula") {
   }
 }
 
-TEST_CASE("three-centred family: tangent-continuous, curvature jumps from -1/r1 to -1/r2 at the breakpoint") {
+TEST_CASE("three-centred family: tangent-continuous - curvature jumps from -1/r1 to -1/r2 at the breakpoint") {
   const double L = 10.0;
   for (double phi_deg : {30.0, 60.0, 75.0}) {
     const auto [lo, hi] = three_centred_rise_range(phi_deg);
@@ -347,7 +347,7 @@ TEST_CASE("catenary family: the parameter solves a (cosh(L/2a) - 1) = h and the 
   }
 }
 
-TEST_CASE("parabolic family: y(x), the springing angle atan(4h/L) and the curvature") {
+TEST_CASE("parabolic family: y(x) - the springing angle atan(4h/L) and the curvature") {
   const double L = 10.0;
   for (double rr : {0.05, 0.5, 2.0}) {
     const double h = rr * L;
@@ -363,7 +363,7 @@ TEST_CASE("parabolic family: y(x), the springing angle atan(4h/L) and the curvat
   }
 }
 
-TEST_CASE("family factories refuse invalid parameters, naming the field") {
+TEST_CASE("family factories refuse invalid parameters - naming the field") {
   CHECK_THROWS_WITH_AS(make_segmental(10, 0.7), "rise_ratio: must lie in (0, 0.5) for a segmental arch, got 0.7",
                        std::invalid_argument);
   CHECK_THROWS_WITH_AS(make_segmental(-1, 0.2), doctest::Contains("span: "), std::invalid_argument);
@@ -479,7 +479,7 @@ TEST_CASE("points files shipped in data/curves fit their curves") {
   }
 }
 
-TEST_CASE("points file variants (CRLF, BOM, spaces, trailing blank lines) give identical curves") {
+TEST_CASE("points file variants (CRLF - BOM - spaces - trailing blank lines) give identical curves") {
   std::string plain = "x,y\n";
   for (const auto& [x, y] : parabola_points(10, 5, 12)) plain += fmt::format("{},{}", x, y) + "\n";
   const auto reference = parse_text(plain);

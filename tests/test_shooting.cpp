@@ -37,7 +37,7 @@ const std::vector<double> kRtols = {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1
 
 }  // namespace
 
-TEST_CASE("shooting: single and multiple shooting agree with the closed form to 10 rtol, both integrators") {
+TEST_CASE("shooting: single and multiple shooting agree with the closed form to 10 rtol - both integrators") {
   for (double eps : {0.0, 0.5, 1.0, 2.0})
     for (double t : {0.06, 0.2})
       for (double d : {0.0, 3e-4}) {
@@ -93,7 +93,7 @@ TEST_CASE("shooting: tightening rtol 100-fold cuts the error roughly 100-fold") 
     }
 }
 
-TEST_CASE("shooting: slender arches, t/L = 1e-3 and 1e-4, multiple shooting agrees with the closed form to 1e-7") {
+TEST_CASE("shooting: slender arches - t/L = 1e-3 and 1e-4 - multiple shooting agrees with the closed form to 1e-7") {
   for (double t : {1e-3, 1e-4})
     for (double eps : {0.0, 0.5, 1.0}) {
       const Scene scene = paper_scene(eps, t);
@@ -175,7 +175,7 @@ TEST_CASE("shooting: segment boundaries include the curve's breakpoints") {
     }
 }
 
-TEST_CASE("shooting: a CVODE failure is a status naming the flag and where, never a number") {
+TEST_CASE("shooting: a CVODE failure is a status naming the flag and where - never a number") {
   Options o;
   o.method = Method::multiple_shooting;
   o.rtol = 1e-12;
@@ -189,7 +189,7 @@ TEST_CASE("shooting: a CVODE failure is a status naming the flag and where, neve
   CHECK_THROWS_AS(sol.at(1.0), std::logic_error);
 }
 
-TEST_CASE("closed form on a non-circular curve is not applicable, with a reason") {
+TEST_CASE("closed form on a non-circular curve is not applicable - with a reason") {
   struct Sine final : Curve {
     std::string family() const override { return "sine"; }
     double span() const override { return 10.0; }
