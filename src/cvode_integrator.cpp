@@ -256,30 +256,26 @@ std::optional<IntegrationError> CvodeIntegrator::integrate(double s0, const Matr
     check(CVodeSetStopTime(mem, b), "CVodeSetStopTime");
     std::optional<IntegrationError> failure;
     double reached = a;
-    while (next < s_out.size() && s_out[next] <= b) {
+    // One CVode call to tout; a failure is recorded with the arc length CVODE had reached.
+    auto advance = [&](double tout) {
       sunrealtype t = a;
-      const int flag = CVode(mem, s_out[next], m.y.get(), &t, CV_NORMAL);
+      const int flag = CVode(mem, tout, m.y.get(), &t, CV_NORMAL);
       if (flag < 0) {
         sunrealtype t_now = a;
         CVodeGetCurrentTime(mem, &t_now);
         failure = IntegrationError{flag, flag_name(flag), t_now, m.last_message};
-        break;
+        return false;
       }
       reached = t;
       current = Y;
+      return true;
+    };
+    while (next < s_out.size() && s_out[next] <= b) {
+      if (!advance(s_out[next])) break;
       observer(next++, current);
     }
-    if (!failure && reached < b) {
-      // No output left in this span: run to the breakpoint so that the next span starts there.
-      sunrealtype t = a;
-      const int flag = CVode(mem, b, m.y.get(), &t, CV_NORMAL);
-      if (flag < 0) {
-        sunrealtype t_now = a;
-        CVodeGetCurrentTime(mem, &t_now);
-        failure = IntegrationError{flag, flag_name(flag), t_now, m.last_message};
-      }
-      current = Y;
-    }
+    // No output left in this span: run to the breakpoint so that the next span starts there.
+    if (!failure && reached < b) advance(b);
     // Counters restart with every CVodeReInit: collect them span by span.
     long steps = 0, rhs = 0, etf = 0, jacs = 0;
     CVodeGetNumSteps(mem, &steps);
