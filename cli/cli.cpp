@@ -413,15 +413,10 @@ int run_curve(SceneOptions& so, const CLI::App& cmd, int stations, std::ostream&
   CsvRow row;
   for (std::size_t i = 0; i < scenes.size(); ++i) {
     const Curve& curve = *scenes[i].curve;
-    const double S = curve.half_length(), L = curve.span();
+    const double S = curve.half_length();
     for (int k = 0; k < stations; ++k) {
       const double s = 2.0 * S * k / (stations - 1);
-      const bool right = s > S;
-      CurvePoint p = curve.at(right ? 2.0 * S - s : s);
-      if (right) {  // the mirror image, traversed onwards to the right springing
-        p.x = L - p.x;
-        p.theta = -p.theta;
-      }
+      const CurvePoint p = curve.at_whole_arch(s);
       add_scene_columns(row, grid[i], scenes[i]);
       row.add(s).add(p.x).add(p.y).add(p.theta).add(p.kappa);
       text += row.take();

@@ -74,9 +74,10 @@ BoundaryConditions ArchModel::boundary_conditions() const {
 
 ArchState ArchModel::to_physical(double s, const StateVector& y, bool mirrored) const {
   const double L = scales_.length;
-  const CurvePoint p = scene_.curve->at(s * L);
+  const CurvePoint half = scene_.curve->at(s * L);
+  const CurvePoint p = mirrored ? mirror(half, L) : half;
   ArchState st;
-  st.s = s * L;
+  st.s = mirrored ? 2.0 * scene_.curve->half_length() - s * L : s * L;
   st.x = p.x;
   st.y = p.y;
   st.theta = p.theta;
@@ -88,9 +89,6 @@ ArchState ArchModel::to_physical(double s, const StateVector& y, bool mirrored) 
   st.M = y[kM] * scales_.moment;
   if (mirrored) {
     // Reflection about x = L/2, with "beyond" and "before" swapped on the right half.
-    st.s = 2.0 * scene_.curve->half_length() - st.s;
-    st.x = L - st.x;
-    st.theta = -st.theta;
     st.Ux = -st.Ux;
     st.psi = -st.psi;
     st.Fy = -st.Fy;

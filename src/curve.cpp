@@ -31,6 +31,13 @@ CurvePoint point_on_arc(const CircularArc& arc, double ds) {
           arc.theta_start + arc.kappa * ds, arc.kappa};
 }
 
+CurvePoint mirror(const CurvePoint& p, double span) { return {span - p.x, p.y, -p.theta, p.kappa}; }
+
+CurvePoint Curve::at_whole_arch(double s) const {
+  const double S = half_length();
+  return s <= S ? at(s) : mirror(at(2.0 * S - s), span());
+}
+
 double Curve::first_moment_x() const {
   // Composite 8-point Gauss-Legendre between breakpoints: the integrand is smooth on each piece.
   std::vector<double> knots{0.0};

@@ -45,6 +45,9 @@ class Curve {
   // Non-empty exactly when the curve is piecewise circular; then the closed form applies arc by arc.
   virtual std::span<const CircularArc> arcs() const { return {}; }
   double rise() const { return at(half_length()).y; }
+  // The point at arc length s of the whole arch, 0 <= s <= 2S: on the right half the mirror image of
+  // the left half's point at 2S - s.
+  CurvePoint at_whole_arch(double s) const;
   // Integral of x(s) ds over the half arch (m^2): the weight's moment about the springing per unit w.
   virtual double first_moment_x() const;
 };
@@ -68,6 +71,10 @@ class PiecewiseCircularCurve final : public Curve {
   double half_length_;
   std::vector<CircularArc> arcs_;
 };
+
+// The mirror image about x = span/2 of a left-half point, its tangent pointing on towards the right
+// springing (theta < 0); the curvature keeps its sign: the mirrored arch still turns downwards.
+CurvePoint mirror(const CurvePoint& p, double span);
 
 // Position, angle and curvature on one arc, at distance ds (0 <= ds <= arc.length) from its start.
 CurvePoint point_on_arc(const CircularArc& arc, double ds);
