@@ -276,12 +276,7 @@ void apply_solver_text(Options& o, const SolverText& text) {
 
 void check_options(const Options& o) {
   std::string why;
-  if (!o.is_valid(&why)) {
-    // Options name their fields as the CLI spells them, less the dashes.
-    std::string flag = "--" + why;
-    std::replace(flag.begin(), flag.begin() + static_cast<long>(flag.find(':')), '_', '-');
-    throw UsageError(flag);
-  }
+  if (!o.is_valid(&why)) throw UsageError(as_option_message(why));
 }
 
 const char* kSolutionHeader =
@@ -299,6 +294,17 @@ void add_solution_columns(CsvRow& row, const Solution& sol, const Options& o) {
 
 // ---------------------------------------------------------------------------------------------
 // Subcommands.
+
+// Commands that print rows along the arch: at least two stations, at most 10^7 rows in all.
+void check_stations(int stations) {
+  if (stations < 2 || stations > 1000000)
+    throw UsageError(fmt::format("--stations: must lie in [2, 1000000], got {}", stations));
+}
+
+void check_rows(std::size_t scenes, int stations) {
+  if (scenes * static_cast<std::size_t>(stations) > 10 * kMaxValues)
+    throw UsageError(fmt::format("--stations: {} scenes x {} stations exceed {} rows", scenes, stations, 10 * kMaxValues));
+}
 
 int run_thrust(SceneOptions& so, const CLI::App& cmd, const Options& o, std::ostream& out) {
   check_options(o);
@@ -319,12 +325,10 @@ int run_thrust(SceneOptions& so, const CLI::App& cmd, const Options& o, std::ost
 }
 
 int run_profile(SceneOptions& so, const CLI::App& cmd, Options o, std::ostream& out) {
-  if (o.stations < 2) throw UsageError(fmt::format("--stations: must be >= 2, got {}", o.stations));
+  check_stations(o.stations);
   check_options(o);
   const std::vector<SceneParameters> grid = scene_grid(so, cmd);
-  if (grid.size() * static_cast<std::size_t>(o.stations) > 10 * kMaxValues)
-    throw UsageError(fmt::format("--stations: {} scenes x {} stations exceed {} rows", grid.size(), o.stations,
-                                 10 * kMaxValues));
+  check_rows(grid.size(), o.stations);
   const std::vector<Scene> scenes = make_scenes(grid, so);
   std::string text = std::string(kSceneHeader) +
                      ",method,status,H_over_V,s,x,y,theta,Ux,Uy,psi,N,V,M,e,thrust_x,thrust_y\n";
@@ -404,10 +408,9 @@ int run_check(SceneOptions& so, const CLI::App& cmd, const Options& base, std::o
 
 // The geometry: s, x, y, theta, kappa at equally spaced stations over the whole arch.
 int run_curve(SceneOptions& so, const CLI::App& cmd, int stations, std::ostream& out) {
-  if (stations < 2 || stations > 1000000) throw UsageError(fmt::format("--stations: must lie in [2, 1000000], got {}", stations));
+  check_stations(stations);
   const std::vector<SceneParameters> grid = scene_grid(so, cmd);
-  if (grid.size() * static_cast<std::size_t>(stations) > 10 * kMaxValues)
-    throw UsageError(fmt::format("--stations: {} scenes x {} stations exceed {} rows", grid.size(), stations, 10 * kMaxValues));
+  check_rows(grid.size(), stations);
   const std::vector<Scene> scenes = make_scenes(grid, so);
   std::string text = std::string(kSceneHeader) + ",s,x,y,theta,kappa\n";
   CsvRow row;
