@@ -2,6 +2,9 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -152,6 +155,18 @@ TEST_CASE("cli: bad input is one line on stderr - exit 2 - nothing on stdout") {
       {"profile", "--stations", "x"},
       {"bench", "--methods", "closed-form,magic"},
       {"bench", "--repeats", "0"},
+      {"thrust", "--curve", "three-centred", "--rise-ratio", "0.14", "--thickness-ratio", "0.2"},  // t > 2 r1
+      {"thrust", "--curve", "segmental", "--rise-ratio", "0.7"},
+      {"thrust", "--curve", "three-centred", "--rise-ratio", "0.1"},
+      {"thrust", "--curve", "four-centred", "--haunch-angle", "45", "--crown-angle", "50"},
+      {"thrust", "--curve", "parabolic", "--rise-ratio", "0"},
+      {"thrust", "--curve", "pointed", "--rise-ratio", "0.3"},
+      {"thrust", "--curve", "parabolic", "--haunch-angle", "30"},
+      {"thrust", "--curve", "points"},
+      {"thrust", "--curve", "points", "--curve-file", "/nonexistent/arch.csv"},
+      {"thrust", "--curve-file", OGIVE_DATA_DIR "/curves/parabola-40.csv"},
+      {"thrust", "--curve", "points", "--curve-file", OGIVE_DATA_DIR "/curves/parabola-40.csv", "--span", "12"},
+      {"curve", "--stations", "1"},
       {"thrust", "--unknown-option", "1"},
       {"nonsense"},
       {},
@@ -172,6 +187,47 @@ TEST_CASE("cli: bad input is one line on stderr - exit 2 - nothing on stdout") {
   CHECK(cli({"thrust", "--rtol", "0"}).err.find("--rtol") != std::string::npos);
   CHECK(cli({"profile", "--stations", "1"}).err.find("--stations") != std::string::npos);
   CHECK(cli({"thrust", "--thickness-ratio", "1.5"}).err.find("--thickness-ratio") != std::string::npos);
+}
+
+TEST_CASE("cli: a bad curve file is one line naming the file and the line - exit 2 - nothing on stdout") {
+  const std::string dir = std::filesystem::temp_directory_path() / "ogive_test_cli_curves";
+  std::filesystem::create_directories(dir);
+  // Each body breaks one rule; the expected line is where the rule breaks.
+  const std::vector<std::pair<std::string, std::string>> files = {
+      {"", ":1"},                                                   // empty file
+      {"a,b\n0,0\n1,2\n2,3\n3,4\n", ":1"},                         // bad header
+      {"x,y\n0,0\n1,2\n2,abc\n3,4\n", ":4"},                       // not a number
+      {"x,y\n0,0\n1,2\n2,inf\n3,4\n", ":4"},                       // not finite
+      {"x,y\n0,0\n1,2\n2,3\n", ":4"},                               // fewer than 4 points
+      {"x,y\n0,0\n1,2\n1,2\n2,3\n3,4\n", ":4"},                   // repeated point
+      {"x,y\n0,0\n2,2\n1,3\n3,4\n", ":4"},                         // x not increasing
+      {"x,y\n0,0.5\n1,2\n2,3\n3,4\n", ":2"},                       // not on the springing line
+      {"x,y\n0,0\n1,2\n2,1\n3,4\n", ":4"},                         // y falls: doubles back
+      {"x,y\n0,0\n1,2,7\n2,3\n3,4\n", ":3"},                       // wrong number of fields
+      {std::string("x,y\n0,0\n\x01\xff\xfe,2\n2,3\n3,4\n"), ":3"},  // binary bytes
+  };
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    const std::string path = dir + "/bad" + std::to_string(k) + ".csv";
+    std::ofstream(path, std::ios::binary) << files[k].first;
+    CAPTURE(k);
+    const Run r = cli({"thrust", "--curve", "points", "--curve-file", path});
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(lines(r.err).size() == 1);
+    CHECK(r.err.find(path + files[k].second + ":") != std::string::npos);
+  }
+  // CRLF, a byte-order mark and trailing blank lines are ordinary input: the same output as the plain file.
+  std::ifstream plain_in(OGIVE_DATA_DIR "/curves/parabola-40.csv");
+  const std::string plain((std::istreambuf_iterator<char>(plain_in)), std::istreambuf_iterator<char>());
+  std::string crlf;
+  for (char c : plain) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  std::ofstream(dir + "/variant.csv", std::ios::binary) << "\xEF\xBB\xBF" << crlf << "\r\n\r\n";
+  const Run a = cli({"thrust", "--curve", "points", "--curve-file", OGIVE_DATA_DIR "/curves/parabola-40.csv"});
+  const Run b = cli({"thrust", "--curve", "points", "--curve-file", dir + "/variant.csv"});
+  CHECK(a.status == 0);
+  CHECK(b.status == 0);
+  CHECK(a.out == b.out);
+  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("cli: help goes to stdout with exit 0 - output is deterministic") {
