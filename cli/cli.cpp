@@ -242,22 +242,35 @@ const std::map<std::string, Method> kMethods = {{"closed-form", Method::closed_f
                                                 {"multiple-shooting", Method::multiple_shooting},
                                                 {"auto", Method::automatic}};
 const std::map<std::string, Integrator> kIntegrators = {{"adams", Integrator::adams}, {"bdf", Integrator::bdf}};
+const std::map<std::string, Verify> kVerify = {
+    {"never", Verify::never}, {"profile", Verify::profile}, {"always", Verify::always}};
 
-// Method and integrator are bound as text and mapped here, so that only their names are accepted.
+// Method, integrator and verification are bound as text and mapped here, so that only their names are
+// accepted.
 struct SolverText {
   std::string method = "auto";
   std::string integrator = "adams";
+  std::string verify = "profile";
+  bool ignore_breakpoints = false;
 };
 
-void add_solver_options(CLI::App& cmd, Options& o, SolverText& text, bool with_method = true) {
+// bench takes lists of methods and integrators instead (--methods, --integrators).
+void add_solver_options(CLI::App& cmd, Options& o, SolverText& text, bool with_method = true,
+                        bool with_integrator = true) {
   if (with_method)
     cmd.add_option("--method", text.method, "closed-form, shooting, multiple-shooting or auto")->capture_default_str();
-  cmd.add_option("--integrator", text.integrator, "CVODE's method: adams or bdf")->capture_default_str();
+  if (with_integrator)
+    cmd.add_option("--integrator", text.integrator, "CVODE's method: adams or bdf")->capture_default_str();
   cmd.add_option("--rtol", o.rtol, "accuracy asked of the result, 1e-14 .. 0.1")->capture_default_str();
   cmd.add_option("--atol", o.atol, "CVODE's absolute tolerance on the scaled state (0: 1e-6 of CVODE's rtol)")
       ->capture_default_str();
   cmd.add_option("--segments", o.segments, "multiple-shooting segments over the half arch")->capture_default_str();
   cmd.add_option("--max-steps", o.max_steps, "CVODE step limit per integration span")->capture_default_str();
+  cmd.add_option("--verify", text.verify,
+                 "re-solve at rtol/16 to estimate the error: never, profile (when stations are printed) or always")
+      ->capture_default_str();
+  cmd.add_flag("--ignore-breakpoints", text.ignore_breakpoints,
+               "let CVODE step across jumps of curvature (for stability studies)");
 }
 
 template <class Enum>
@@ -272,6 +285,8 @@ Enum lookup(const std::map<std::string, Enum>& names, const std::string& text, c
 void apply_solver_text(Options& o, const SolverText& text) {
   o.method = lookup(kMethods, text.method, "--method");
   o.integrator = lookup(kIntegrators, text.integrator, "--integrator");
+  o.verify = lookup(kVerify, text.verify, "--verify");
+  o.restart_at_breakpoints = !text.ignore_breakpoints;
 }
 
 void check_options(const Options& o) {
@@ -281,14 +296,14 @@ void check_options(const Options& o) {
 
 const char* kSolutionHeader =
     "method,integrator,rtol,status,H,V,H_over_V,steps,rhs_evaluations,segments,condition_estimate,"
-    "boundary_residual,equilibrium_residual";
+    "error_estimate,boundary_residual,equilibrium_residual";
 
 void add_solution_columns(CsvRow& row, const Solution& sol, const Options& o) {
   const bool numeric = sol.method != Method::closed_form;
   row.add(to_string(sol.method)).add(numeric ? to_string(o.integrator) : "none").add(o.rtol);
   row.add(to_string(sol.status)).add(sol.H).add(sol.V).add(sol.H_over_V);
   const Diagnostics& d = sol.diagnostics;
-  row.add(d.steps).add(d.rhs_evaluations).add(d.segments).add(d.condition_estimate);
+  row.add(d.steps).add(d.rhs_evaluations).add(d.segments).add(d.condition_estimate).add(d.error_estimate);
   row.add(d.boundary_residual).add(d.equilibrium_residual);
 }
 
@@ -324,6 +339,18 @@ int run_thrust(SceneOptions& so, const CLI::App& cmd, const Options& o, std::ost
   return all_ok ? kExitOk : kExitNotConverged;
 }
 
+// What the station's numbers mean for masonry, which resists no tension: the normal force is tensile
+// (or zero, and e undefined), or the compression's resultant lies outside the section (|e| > 300 %: a
+// hinge would form, beyond the linear model) or outside the kern (|e| > 100 %: the elastic section is
+// partly in tension).
+std::string_view section_warning(const ArchState& st) {
+  if (st.N == 0) return "no_normal_force";
+  if (st.N > 0) return "tension";
+  if (std::abs(st.e) > 300) return "outside_section";
+  if (std::abs(st.e) > 100) return "outside_kern";
+  return "";
+}
+
 int run_profile(SceneOptions& so, const CLI::App& cmd, Options o, std::ostream& out) {
   check_stations(o.stations);
   check_options(o);
@@ -331,7 +358,8 @@ int run_profile(SceneOptions& so, const CLI::App& cmd, Options o, std::ostream& 
   check_rows(grid.size(), o.stations);
   const std::vector<Scene> scenes = make_scenes(grid, so);
   std::string text = std::string(kSceneHeader) +
-                     ",method,status,H_over_V,s,x,y,theta,Ux,Uy,psi,N,V,M,e,thrust_x,thrust_y\n";
+                     ",method,status,H_over_V,error_estimate,s,x,y,theta,Ux,Uy,psi,N,V,M,e,thrust_x,thrust_y,"
+                     "warning\n";
   CsvRow row;
   bool all_ok = true;
   for (std::size_t i = 0; i < scenes.size(); ++i) {
@@ -339,16 +367,16 @@ int run_profile(SceneOptions& so, const CLI::App& cmd, Options o, std::ostream& 
     all_ok = all_ok && sol.ok();
     if (sol.profile.empty()) {  // unsolved: one row that says so, no numbers
       add_scene_columns(row, grid[i], scenes[i]);
-      row.add(to_string(sol.method)).add(to_string(sol.status)).add(sol.H_over_V);
+      row.add(to_string(sol.method)).add(to_string(sol.status)).add(sol.H_over_V).add(sol.diagnostics.error_estimate);
       for (int k = 0; k < 14; ++k) row.add(std::numeric_limits<double>::quiet_NaN());
       text += row.take();
       continue;
     }
     for (const ArchState& st : sol.profile) {
       add_scene_columns(row, grid[i], scenes[i]);
-      row.add(to_string(sol.method)).add(to_string(sol.status)).add(sol.H_over_V);
+      row.add(to_string(sol.method)).add(to_string(sol.status)).add(sol.H_over_V).add(sol.diagnostics.error_estimate);
       row.add(st.s).add(st.x).add(st.y).add(st.theta).add(st.Ux).add(st.Uy).add(st.psi);
-      row.add(st.N).add(st.V).add(st.M).add(st.e).add(st.thrust_x).add(st.thrust_y);
+      row.add(st.N).add(st.V).add(st.M).add(st.e).add(st.thrust_x).add(st.thrust_y).add(section_warning(st));
       text += row.take();
     }
   }
@@ -431,72 +459,82 @@ int run_curve(SceneOptions& so, const CLI::App& cmd, int stations, std::ostream&
 
 constexpr int kProfileStations = 41;
 
-// max |M - M_ref| over the stations, relative to max |M_ref|; nan when either has no profile.
-double moment_error(const Solution& sol, const Solution& ref) {
-  if (sol.profile.size() != ref.profile.size() || ref.profile.empty()) return std::numeric_limits<double>::quiet_NaN();
-  double diff = 0, scale = 0;
-  for (std::size_t k = 0; k < ref.profile.size(); ++k) {
-    diff = std::max(diff, std::abs(sol.profile[k].M - ref.profile[k].M));
-    scale = std::max(scale, std::abs(ref.profile[k].M));
-  }
-  return diff / scale;
-}
-
-// Time per solve (median over repeats) and error against the closed form, per method and rtol.
+// Time per solve (median over repeats) and true error against the reference, one row per method,
+// integrator and rtol. Failed runs stay in the table with their status.
 int run_bench(SceneOptions& so, const CLI::App& cmd, const Options& base, const std::string& methods_text,
-              const std::string& rtols_text, int repeats, std::ostream& out) {
+              const std::string& integrators_text, const std::string& rtols_text, int repeats, std::ostream& out) {
   check_options(base);
   if (repeats < 1 || repeats > 100000) throw UsageError(fmt::format("--repeats: must lie in [1, 100000], got {}", repeats));
+  auto split = [](const std::string& text) {
+    std::vector<std::string> names;
+    for (std::size_t pos = 0; pos <= text.size();) {
+      const std::size_t comma = std::min(text.find(',', pos), text.size());
+      names.push_back(text.substr(pos, comma - pos));
+      pos = comma + 1;
+    }
+    return names;
+  };
   std::vector<Method> methods;
-  for (std::size_t pos = 0; pos <= methods_text.size();) {
-    const std::size_t comma = std::min(methods_text.find(',', pos), methods_text.size());
-    const std::string name = methods_text.substr(pos, comma - pos);
-    const auto it = kMethods.find(name);
-    if (it == kMethods.end() || it->second == Method::automatic)
-      throw UsageError(fmt::format("--methods: unknown method '{}' (closed-form, shooting, multiple-shooting)", name));
-    methods.push_back(it->second);
-    pos = comma + 1;
-  }
+  for (const std::string& name : split(methods_text)) methods.push_back(lookup(kMethods, name, "--methods"));
+  std::vector<Integrator> integrators;
+  for (const std::string& name : split(integrators_text))
+    integrators.push_back(lookup(kIntegrators, name, "--integrators"));
   const std::vector<double> rtols = parse_values(rtols_text, "--rtols");
   for (double r : rtols)
     if (!(r >= 1e-14 && r <= 0.1)) throw UsageError(fmt::format("--rtols: must lie in [1e-14, 0.1], got {}", r));
   const std::vector<SceneParameters> grid = scene_grid(so, cmd);
+  if (grid.size() * methods.size() * integrators.size() * rtols.size() > kMaxValues)
+    throw UsageError(fmt::format("--rtols: {} scenes x {} methods x {} integrators x {} tolerances exceed {} rows",
+                                 grid.size(), methods.size(), integrators.size(), rtols.size(), kMaxValues));
   const std::vector<Scene> scenes = make_scenes(grid, so);
   std::string text = std::string(kSceneHeader) +
-                     ",method,integrator,rtol,segments,status,H_over_V,error_H_over_V,error_profile,median_seconds,steps,"
-                     "rhs_evaluations,condition_estimate\n";
+                     ",method,integrator,rtol,segments,status,chosen_method,H_over_V,error_H_over_V,error_profile,"
+                     "error_estimate,median_seconds,steps,rhs_evaluations,condition_estimate\n";
   CsvRow row;
   for (std::size_t i = 0; i < scenes.size(); ++i) {
     Options ref_options = base;
     ref_options.stations = kProfileStations;
     const Solution reference = reference_solution(scenes[i], ref_options);
     for (Method m : methods) {
-      for (double rtol : rtols) {
-        if (m == Method::closed_form && rtol != rtols.front()) continue;  // the closed form has no tolerance
-        if (m == Method::closed_form && scenes[i].curve->arcs().empty()) continue;  // not applicable
-        Options o = base;
-        o.method = m;
-        o.rtol = rtol;
-        std::vector<double> seconds;
-        Solution sol;
-        for (int r = 0; r < repeats; ++r) {
-          const auto t0 = std::chrono::steady_clock::now();
-          sol = solve(scenes[i], o);
-          seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      const bool circular = !scenes[i].curve->arcs().empty();
+      if (m == Method::closed_form && !circular) continue;  // not applicable
+      // The closed form has neither integrator nor tolerance; auto on a circular arc is the closed form.
+      const bool exact = m == Method::closed_form || (m == Method::automatic && circular);
+      for (Integrator integrator : integrators) {
+        if (exact && integrator != integrators.front()) continue;
+        for (double rtol : rtols) {
+          if (exact && rtol != rtols.front()) continue;
+          Options o = base;
+          o.method = m;
+          o.integrator = integrator;
+          o.rtol = rtol;
+          std::vector<double> seconds;
+          Solution sol;
+          for (int r = 0; r < repeats; ++r) {
+            const auto t0 = std::chrono::steady_clock::now();
+            sol = solve(scenes[i], o);
+            seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+          }
+          std::nth_element(seconds.begin(), seconds.begin() + repeats / 2, seconds.end());
+          // The profile's error, outside the timing: the bending moment, the quantity that sets e. The
+          // profiled solve must be the timed one, so it verifies only if the timed one did.
+          Options profiled = o;
+          profiled.stations = kProfileStations;
+          if (profiled.verify == Verify::profile) profiled.verify = Verify::never;
+          const Solution with_profile = solve(scenes[i], profiled);
+          // The row's status is the worse of the two solves: a profile that missed its tolerance says so.
+          const Status status = sol.ok() ? with_profile.status : sol.status;
+          const double estimate = std::max(sol.diagnostics.error_estimate, with_profile.diagnostics.error_estimate);
+          add_scene_columns(row, grid[i], scenes[i]);
+          row.add(to_string(m)).add(exact ? "none" : to_string(o.integrator));
+          row.add(exact ? 0.0 : rtol).add(sol.diagnostics.segments).add(to_string(status));
+          row.add(to_string(sol.method));
+          row.add(sol.H_over_V).add(std::abs(sol.H_over_V - reference.H_over_V) / std::abs(reference.H_over_V));
+          row.add(profile_difference(with_profile.profile, reference.profile, scenes[i].thickness)).add(estimate);
+          row.add(seconds[repeats / 2]).add(sol.diagnostics.steps).add(sol.diagnostics.rhs_evaluations);
+          row.add(sol.diagnostics.condition_estimate);
+          text += row.take();
         }
-        std::nth_element(seconds.begin(), seconds.begin() + repeats / 2, seconds.end());
-        // The profile's error, outside the timing: the bending moment, the quantity that sets e.
-        Options profiled = o;
-        profiled.stations = kProfileStations;
-        const double profile_error = moment_error(solve(scenes[i], profiled), reference);
-        add_scene_columns(row, grid[i], scenes[i]);
-        row.add(to_string(m)).add(m == Method::closed_form ? "none" : to_string(o.integrator));
-        row.add(m == Method::closed_form ? 0.0 : rtol).add(sol.diagnostics.segments).add(to_string(sol.status));
-        row.add(sol.H_over_V).add(std::abs(sol.H_over_V - reference.H_over_V) / std::abs(reference.H_over_V));
-        row.add(profile_error);
-        row.add(seconds[repeats / 2]).add(sol.diagnostics.steps).add(sol.diagnostics.rhs_evaluations);
-        row.add(sol.diagnostics.condition_estimate);
-        text += row.take();
       }
     }
   }
@@ -536,10 +574,12 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
 
   CLI::App* bench = app.add_subcommand("bench", "median time per solve and true error, per method and rtol");
   add_scene_options(*bench, bench_scene);
-  add_solver_options(*bench, bench_options, bench_text, false);
+  add_solver_options(*bench, bench_options, bench_text, false, false);
   std::string bench_methods = "closed-form,shooting,multiple-shooting", bench_rtols = "1e-6,1e-8,1e-10";
+  std::string bench_integrators = "adams";
   int repeats = 21;
-  bench->add_option("--methods", bench_methods, "comma-separated methods")->capture_default_str();
+  bench->add_option("--methods", bench_methods, "comma-separated methods (auto included)")->capture_default_str();
+  bench->add_option("--integrators", bench_integrators, "comma-separated: adams, bdf")->capture_default_str();
   bench->add_option("--rtols", bench_rtols, "tolerances: list or range")->capture_default_str();
   bench->add_option("--repeats", repeats, "solves per row; the median time is printed")->capture_default_str();
 
@@ -566,7 +606,8 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     if (profile->parsed()) return run_profile(profile_scene, *profile, profile_options, out);
     if (check->parsed()) return run_check(check_scene, *check, check_options_, out);
     if (curve->parsed()) return run_curve(curve_scene, *curve, curve_stations, out);
-    if (bench->parsed()) return run_bench(bench_scene, *bench, bench_options, bench_methods, bench_rtols, repeats, out);
+    if (bench->parsed()) return run_bench(bench_scene, *bench, bench_options, bench_methods, bench_integrators, bench_rtols,
+                                            repeats, out);
   } catch (const UsageError& e) {
     err << "ogive: " << e.what() << "\n";
     return kExitUsage;

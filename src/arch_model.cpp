@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace ogive {
@@ -97,6 +98,12 @@ ArchState ArchModel::to_physical(double s, const StateVector& y, bool mirrored) 
   st.N = c * st.Fx + sn * st.Fy;
   st.V = -sn * st.Fx + c * st.Fy;
   const double t = scene_.thickness;
+  // Where the normal force vanishes there is no eccentricity: NaN, never an unbounded number that reads
+  // as a result. (Under tension, N > 0, e is the tensile force's eccentricity; the CLI flags it.)
+  if (st.N == 0) {
+    st.e = st.thrust_x = st.thrust_y = std::numeric_limits<double>::quiet_NaN();
+    return st;
+  }
   st.e = 600.0 * st.M / (st.N * t);
   // F acting at offset a along the extrados normal n = (-sn, c) has moment -a N about the axis point,
   // so the resultant crosses the section at a = -M / N.

@@ -23,7 +23,9 @@ void append_number(std::string& out, double value) {
 
 CsvRow& CsvRow::add(double value) {
   separate();
-  append_number(line_, value);
+  // No number, no digits: an empty field reads as missing in gnuplot, pandas and spreadsheets, and a
+  // row can never carry "nan" or "inf" that a script might take for a result.
+  if (std::isfinite(value)) append_number(line_, value);
   return *this;
 }
 

@@ -162,8 +162,8 @@ struct CvodeIntegrator::Impl {
   CvodeHandle cvode;
   bool initialised = false;
 
-  Impl(const ArchModel& m, int cols, std::int64_t steps)
-      : model(m), columns(cols), max_steps(steps), breakpoints(m.breakpoints()) {}
+  Impl(const ArchModel& m, int cols, std::int64_t steps, bool restart)
+      : model(m), columns(cols), max_steps(steps), breakpoints(restart ? m.breakpoints() : std::vector<double>{}) {}
 
   static int rhs(sunrealtype s, N_Vector y, N_Vector ydot, void* user_data) {
     const auto* self = static_cast<const Impl*>(user_data);
@@ -194,8 +194,8 @@ struct CvodeIntegrator::Impl {
 };
 
 CvodeIntegrator::CvodeIntegrator(const ArchModel& model, Integrator kind, double rtol, double atol,
-                                 std::int64_t max_steps, int columns)
-    : impl_(std::make_unique<Impl>(model, columns, max_steps)) {
+                                 std::int64_t max_steps, int columns, bool restart_at_breakpoints)
+    : impl_(std::make_unique<Impl>(model, columns, max_steps, restart_at_breakpoints)) {
   Impl& m = *impl_;
   SUNContext ctx = nullptr;
   check(SUNContext_Create(nullptr, &ctx), "SUNContext_Create");

@@ -39,15 +39,16 @@ class CvodeIntegrator {
 
   // Adams uses CVODE's fixed-point (functional) iteration: the system is not stiff. BDF uses Newton
   // with the dense direct solver and the analytic Jacobian (block diagonal, A(theta) per column).
-  // atol applies to every scaled component. Throws std::runtime_error if SUNDIALS cannot allocate.
+  // atol applies to every scaled component. restart_at_breakpoints = false lets steps straddle the
+  // curve's jumps of curvature (for studies only). Throws std::runtime_error if SUNDIALS cannot allocate.
   CvodeIntegrator(const ArchModel& model, Integrator kind, double rtol, double atol,
-                  std::int64_t max_steps, int columns);
+                  std::int64_t max_steps, int columns, bool restart_at_breakpoints = true);
   ~CvodeIntegrator();
   CvodeIntegrator(const CvodeIntegrator&) = delete;
   CvodeIntegrator& operator=(const CvodeIntegrator&) = delete;
 
   // From Y0 at s0 through the ascending outputs s_out (each >= s0), restarting at the model's
-  // breakpoints that lie in between so that no step straddles a jump of curvature.
+  // breakpoints that lie in between (unless told not to) so that no step straddles a jump of curvature.
   std::optional<IntegrationError> integrate(double s0, const Matrix& Y0, std::span<const double> s_out,
                                             const Observer& observer);
 

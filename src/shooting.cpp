@@ -46,7 +46,7 @@ class ShootingField final : public StateField {
 
   void sample(std::span<const double> s, std::span<StateVector> out) const override {
     CvodeIntegrator integrator(*model_, options_.integrator, integrator_rtol(options_), absolute_tolerance(options_),
-                               options_.max_steps, 1);
+                               options_.max_steps, 1, options_.restart_at_breakpoints);
     std::size_t i = 0;
     for (std::size_t k = 0; k < starts_.size() && i < s.size(); ++k) {
       const bool last = k + 1 == starts_.size();
@@ -89,12 +89,12 @@ double inverse_norm1_estimate(Lu& lu, Eigen::Index n) {
 
 }  // namespace
 
-std::vector<double> shooting_knots(const ArchModel& model, int segments) {
+std::vector<double> shooting_knots(const ArchModel& model, int segments, bool at_breakpoints) {
   const double S = model.half_length();
   std::vector<double> knots;
   for (int k = 0; k <= segments; ++k) knots.push_back(S * k / segments);
   knots.back() = S;
-  if (segments > 1)
+  if (segments > 1 && at_breakpoints)
     for (double b : model.breakpoints()) knots.push_back(b);
   std::sort(knots.begin(), knots.end());
   // Merge knots closer than a part in 1e9 of the half arch: a breakpoint on a uniform knot.
@@ -108,12 +108,12 @@ Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& o
   Solution sol;
   sol.method = segments == 1 ? Method::shooting : Method::multiple_shooting;
   sol.model = model;
-  const std::vector<double> knots = shooting_knots(*model, segments);
+  const std::vector<double> knots = shooting_knots(*model, segments, options.restart_at_breakpoints);
   const std::size_t K = knots.size() - 1;
   sol.diagnostics.segments = static_cast<int>(K);
 
   CvodeIntegrator integrator(*model, options.integrator, integrator_rtol(options), absolute_tolerance(options),
-                             options.max_steps, kStateSize + 1);
+                             options.max_steps, kStateSize + 1, options.restart_at_breakpoints);
   CvodeIntegrator::Matrix Y0 = CvodeIntegrator::Matrix::Zero(kStateSize, kStateSize + 1);
   Y0.leftCols<kStateSize>().setIdentity();
   std::vector<SystemMatrix> Phi(K);

@@ -25,6 +25,15 @@ const char* to_string(Method m) {
 
 const char* to_string(Integrator i) { return i == Integrator::adams ? "adams" : "bdf"; }
 
+const char* to_string(Verify v) {
+  switch (v) {
+    case Verify::never: return "never";
+    case Verify::profile: return "profile";
+    case Verify::always: return "always";
+  }
+  return "?";
+}
+
 const char* to_string(Status s) {
   switch (s) {
     case Status::success: return "success";
@@ -32,6 +41,7 @@ const char* to_string(Status s) {
     case Status::integrator_failure: return "integrator_failure";
     case Status::singular_system: return "singular_system";
     case Status::ill_conditioned: return "ill_conditioned";
+    case Status::tolerance_not_met: return "tolerance_not_met";
   }
   return "?";
 }
@@ -124,21 +134,119 @@ void sample_profile(Solution& sol, int stations) {
   }
 }
 
+namespace {
+
+void add_work(Diagnostics& to, const Diagnostics& from) {
+  to.steps += from.steps;
+  to.rhs_evaluations += from.rhs_evaluations;
+  to.error_test_failures += from.error_test_failures;
+  to.jacobian_evaluations += from.jacobian_evaluations;
+}
+
+// The larger of the relative differences of H and of the profiles (when both carry one).
+double solution_difference(const Solution& a, const Solution& b) {
+  if (!a.field || !b.field) return std::numeric_limits<double>::quiet_NaN();
+  const double H = std::abs(a.H - b.H) / std::abs(b.H);
+  if (b.profile.empty()) return H;
+  return std::max(H, profile_difference(a.profile, b.profile, b.model->scene().thickness));
+}
+
+Solution solve_once(const std::shared_ptr<const ArchModel>& model, const Options& options, Method method,
+                    int segments) {
+  Solution sol = method == Method::closed_form ? solve_closed_form(model, options)
+                                               : solve_shooting(model, options, segments);
+  if (sol.field && options.stations > 0) sample_profile(sol, options.stations);
+  return sol;
+}
+
+// CVODE controls each step's local error, not the global error of what is printed; the solve is
+// repeated 16 times tighter and the difference, an estimate of the first solve's error, is compared
+// with the 10 * rtol the tests accept of every method. The tighter solution is returned (its own error
+// is smaller still), its counters include both solves.
+Solution solve_verified(const std::shared_ptr<const ArchModel>& model, const Options& options, Method method,
+                        int segments) {
+  const Solution coarse = solve_once(model, options, method, segments);
+  if (!coarse.field) return coarse;
+  Options tighter = options;
+  tighter.rtol = options.rtol / 16;
+  Solution sol = solve_once(model, tighter, method, segments);
+  Diagnostics& d = sol.diagnostics;
+  add_work(d, coarse.diagnostics);
+  if (!sol.field) return sol;
+  d.error_estimate = solution_difference(coarse, sol);
+  // The tighter solve's own status measured its condition against rtol / 16; report against rtol.
+  if (sol.status == Status::ill_conditioned && d.condition_estimate * std::numeric_limits<double>::epsilon() <= options.rtol) {
+    sol.status = Status::success;
+    sol.message.clear();
+  }
+  if (sol.status == Status::success && !(d.error_estimate <= 10 * options.rtol)) {
+    sol.status = Status::tolerance_not_met;
+    sol.message = fmt::format("estimated error {:.3g} exceeds 10 * rtol = {:.3g}", d.error_estimate,
+                              10 * options.rtol);
+  }
+  return sol;
+}
+
+}  // namespace
+
+double profile_difference(const std::vector<ArchState>& profile, const std::vector<ArchState>& reference,
+                          double thickness) {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  if (profile.size() != reference.size() || reference.empty()) return kNaN;
+  double dU = 0, dpsi = 0, dF = 0, dM = 0, U = 0, psi = 0, F = 0, N = 0, M = 0;
+  for (std::size_t k = 0; k < reference.size(); ++k) {
+    const ArchState& a = profile[k];
+    const ArchState& r = reference[k];
+    dU = std::max(dU, std::hypot(a.Ux - r.Ux, a.Uy - r.Uy));
+    dpsi = std::max(dpsi, std::abs(a.psi - r.psi));
+    dF = std::max(dF, std::hypot(a.N - r.N, a.V - r.V));
+    dM = std::max(dM, std::abs(a.M - r.M));
+    U = std::max(U, std::hypot(r.Ux, r.Uy));
+    psi = std::max(psi, std::abs(r.psi));
+    F = std::max(F, std::hypot(r.N, r.V));
+    N = std::max(N, std::abs(r.N));
+    M = std::max(M, std::abs(r.M));
+  }
+  // A component that vanishes all along the reference (not seen in practice: self-weight deflects every
+  // arch) must vanish in the profile too.
+  auto ratio = [](double diff, double scale) {
+    return scale > 0 ? diff / scale : (diff == 0 ? 0.0 : std::numeric_limits<double>::infinity());
+  };
+  const double worst = std::max({ratio(dU, U), ratio(dpsi, psi), ratio(dF, F), ratio(dM, std::max(M, N * thickness / 6))});
+  return std::isfinite(worst) ? worst : kNaN;
+}
+
 Solution solve(const Scene& scene, const Options& options) {
   scene.validate();
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
   auto model = std::make_shared<const ArchModel>(scene);
-  Method method = options.method;
-  if (method == Method::automatic)
-    method = scene.curve->arcs().empty() ? Method::multiple_shooting : Method::closed_form;
-  Solution sol;
-  switch (method) {
-    case Method::closed_form: sol = solve_closed_form(model, options); break;
-    case Method::shooting: sol = solve_shooting(model, options, 1); break;
-    default: sol = solve_shooting(model, options, options.segments); break;
+  switch (options.method) {
+    case Method::closed_form: return solve_once(model, options, Method::closed_form, 0);
+    case Method::shooting:
+    case Method::multiple_shooting: {
+      const int segments = options.method == Method::shooting ? 1 : options.segments;
+      if (options.verify == Verify::always || (options.verify == Verify::profile && options.stations > 0))
+        return solve_verified(model, options, options.method, segments);
+      return solve_once(model, options, options.method, segments);
+    }
+    case Method::automatic: break;
   }
-  if (sol.field && options.stations > 0) sample_profile(sol, options.stations);
+  // The smallest model that meets rtol. The closed form is exact to round-off where it applies.
+  if (!scene.curve->arcs().empty()) return solve_once(model, options, Method::closed_form, 0);
+  // Otherwise shooting with 1, 2, 4, ... segments (breakpoints add more) until the error estimate meets
+  // rtol: more segments shorten the spans over which integration errors grow and cancel. A singular or
+  // ill-conditioned system is not cured by more segments (the condition grows with them): stop there.
+  Solution sol;
+  Diagnostics spent;  // the work of the rejected tries counts too
+  for (int segments = 1; segments <= 64; segments *= 2) {
+    sol = solve_verified(model, options, segments == 1 ? Method::shooting : Method::multiple_shooting, segments);
+    add_work(sol.diagnostics, spent);
+    spent = sol.diagnostics;
+    if (sol.status == Status::success || sol.status == Status::singular_system ||
+        sol.status == Status::ill_conditioned)
+      break;
+  }
   return sol;
 }
 

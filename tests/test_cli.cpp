@@ -109,7 +109,7 @@ TEST_CASE("cli: a solver failure is a status in the row - no number - and exit 3
   REQUIRE(lines(r.out).size() == 3);
   for (std::size_t row : {1, 2}) {
     CHECK(column(r.out, "status", row) == "integrator_failure");
-    CHECK(column(r.out, "H_over_V", row) == "nan");
+    CHECK(column(r.out, "H_over_V", row) .empty());
   }
 }
 

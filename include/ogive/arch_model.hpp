@@ -54,8 +54,10 @@ struct ArchState {
   double M = 0;                  // N m/m, couple of the part beyond s on the part before s
   double N = 0;                  // N/m, normal force, negative in compression
   double V = 0;                  // N/m, shear force
-  double e = 0;                  // %, eccentricity of the compression, 600 M / (N t)
-  double thrust_x = 0, thrust_y = 0;  // m, where the resultant crosses the section (the thrust line)
+  double e = 0;                  // %, eccentricity of the compression, 600 M / (N t): 100 at the kern's
+                                 // edge (t/6), 300 at the section's face; NaN where N = 0
+  double thrust_x = 0, thrust_y = 0;  // m, where the resultant crosses the section (the thrust line);
+                                      // NaN where N = 0
 };
 
 class ArchModel {

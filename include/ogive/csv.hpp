@@ -13,7 +13,7 @@ void append_number(std::string& out, double value);
 
 class CsvRow {
  public:
-  CsvRow& add(double value);
+  CsvRow& add(double value);  // shortest round-trip; an empty field when not finite (no number)
   CsvRow& add(std::int64_t value);
   CsvRow& add(int value) { return add(static_cast<std::int64_t>(value)); }
   CsvRow& add(std::string_view text);

@@ -15,8 +15,9 @@
 namespace ogive {
 
 // Segment boundaries over [0, S~]: `segments` equal pieces, plus every curve breakpoint when
-// segments > 1 (single shooting lets the integrator restart at breakpoints instead). Scaled.
-std::vector<double> shooting_knots(const ArchModel& model, int segments);
+// segments > 1 and at_breakpoints (single shooting lets the integrator restart at breakpoints
+// instead). Scaled.
+std::vector<double> shooting_knots(const ArchModel& model, int segments, bool at_breakpoints = true);
 
 // segments == 1 is single shooting. Status integrator_failure when CVODE fails (the message names the
 // flag and the arc length in m); singular_system / ill_conditioned from the condition estimate.

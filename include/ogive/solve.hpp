@@ -21,9 +21,16 @@ enum class Method {
   closed_form,        // matrix exponential arc by arc; piecewise-circular curves only
   shooting,           // CVODE, one shooting segment over the half arch
   multiple_shooting,  // CVODE, Options::segments segments joined by continuity
-  automatic,          // the smallest model that meets rtol: closed form where it applies, else CVODE
+  automatic,          // the smallest model that meets rtol: the closed form where it applies, else
+                      // shooting with 1, 2, 4, ... 64 segments until the error estimate meets rtol
 };
 enum class Integrator { adams, bdf };
+// When a CVODE solve is repeated at rtol / 16 to estimate its global error (Diagnostics::error_estimate).
+enum class Verify {
+  never,    // one solve; its error is only as good as the tolerance factors measured in the tests
+  profile,  // when stations > 0: the profile is where rough curves lost accuracy (measured 27 * rtol)
+  always,   // every solve, about 2.5x the time
+};
 
 enum class Status {
   success,             // every reported number meets the asked tolerance
@@ -31,10 +38,12 @@ enum class Status {
   integrator_failure,  // CVODE stopped with an error flag; the message names it and where (s in m)
   singular_system,     // the boundary-value system is singular to working precision
   ill_conditioned,     // solved, but condition * unit round-off exceeds rtol: digits may be lost
+  tolerance_not_met,   // solved, but the a-posteriori error estimate exceeds 10 * rtol
 };
 
 const char* to_string(Method m);
 const char* to_string(Integrator i);
+const char* to_string(Verify v);
 const char* to_string(Status s);
 
 struct Options {
@@ -45,6 +54,12 @@ struct Options {
   int segments = 8;    // multiple shooting: segments over the half arch (>= 1; breakpoints add more)
   std::int64_t max_steps = 200000;  // CVODE step limit for one integration span
   int stations = 0;    // profile stations over the whole arch, springing to springing (0: none, else >= 2)
+  // Estimate the global error of a CVODE solve by a second solve at rtol / 16: CVODE controls local
+  // errors only. Method::automatic always verifies; the closed form never needs to.
+  Verify verify = Verify::profile;
+  // Restart the integrator at every breakpoint of the curve (jumps of curvature). Off only for studies
+  // of what a step across a jump costs (the stability map).
+  bool restart_at_breakpoints = true;
 
   // Ceres-style check: false with the reason in *why (naming the field) when an option is unusable.
   bool is_valid(std::string* why) const;
@@ -60,6 +75,11 @@ struct Diagnostics {
   double condition_estimate = std::numeric_limits<double>::quiet_NaN();  // 1-norm, scaled system
   double boundary_residual = std::numeric_limits<double>::quiet_NaN();   // max |BC residual|, scaled
   double equilibrium_residual = std::numeric_limits<double>::quiet_NaN(); // relative to half weight
+  // A-posteriori relative error of the printed numbers (CVODE methods, as Options::verify says, and
+  // always under Method::automatic): the difference between a solve at rtol and one at rtol / 16, of H
+  // relative to |H| and, with a profile, profile_difference. The solution returned is the tighter one.
+  // NaN when not estimated (the closed form needs none).
+  double error_estimate = std::numeric_limits<double>::quiet_NaN();
 };
 
 // The solved state along the half arch in scaled units: lets any method serve as another's reference.
@@ -93,5 +113,13 @@ Solution solve(const Scene& scene, const Options& options = {});
 
 // Fills solution.profile with `stations` equally spaced states over the whole arch from its field.
 void sample_profile(Solution& solution, int stations);
+
+// The error measure of a profile against a reference at the same stations: the largest difference of
+// the displacement (Ux, Uy) relative to the largest |U| of the reference, of psi relative to the
+// largest |psi|, of the forces (N, V) relative to the largest resultant, and of M relative to the
+// larger of max |M| and max |N| t / 6 (the moment that puts the thrust line at the kern's edge, so that
+// it measures e in units of the kern). NaN if the sizes differ, either is empty or holds non-finite values.
+double profile_difference(const std::vector<ArchState>& profile, const std::vector<ArchState>& reference,
+                          double thickness);
 
 }  // namespace ogive
