@@ -25,15 +25,6 @@ const char* to_string(Method m) {
 
 const char* to_string(Integrator i) { return i == Integrator::adams ? "adams" : "bdf"; }
 
-const char* to_string(Verify v) {
-  switch (v) {
-    case Verify::never: return "never";
-    case Verify::profile: return "profile";
-    case Verify::always: return "always";
-  }
-  return "?";
-}
-
 const char* to_string(Status s) {
   switch (s) {
     case Status::success: return "success";
@@ -226,8 +217,7 @@ Solution solve(const Scene& scene, const Options& options) {
     case Method::shooting:
     case Method::multiple_shooting: {
       const int segments = options.method == Method::shooting ? 1 : options.segments;
-      if (options.verify == Verify::always || (options.verify == Verify::profile && options.stations > 0))
-        return solve_verified(model, options, options.method, segments);
+      if (options.verify) return solve_verified(model, options, options.method, segments);
       return solve_once(model, options, options.method, segments);
     }
     case Method::automatic: break;

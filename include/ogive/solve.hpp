@@ -25,12 +25,6 @@ enum class Method {
                       // shooting with 1, 2, 4, ... 64 segments until the error estimate meets rtol
 };
 enum class Integrator { adams, bdf };
-// When a CVODE solve is repeated at rtol / 16 to estimate its global error (Diagnostics::error_estimate).
-enum class Verify {
-  never,    // one solve; its error is only as good as the tolerance factors measured in the tests
-  profile,  // when stations > 0: the profile is where rough curves lost accuracy (measured 27 * rtol)
-  always,   // every solve, about 2.5x the time
-};
 
 enum class Status {
   success,             // every reported number meets the asked tolerance
@@ -43,7 +37,6 @@ enum class Status {
 
 const char* to_string(Method m);
 const char* to_string(Integrator i);
-const char* to_string(Verify v);
 const char* to_string(Status s);
 
 struct Options {
@@ -54,9 +47,12 @@ struct Options {
   int segments = 8;    // multiple shooting: segments over the half arch (>= 1; breakpoints add more)
   std::int64_t max_steps = 200000;  // CVODE step limit for one integration span
   int stations = 0;    // profile stations over the whole arch, springing to springing (0: none, else >= 2)
-  // Estimate the global error of a CVODE solve by a second solve at rtol / 16: CVODE controls local
-  // errors only. Method::automatic always verifies; the closed form never needs to.
-  Verify verify = Verify::profile;
+  // Estimate the global error of a CVODE solve by a second solve at rtol / 16 (about 2.5x the time):
+  // CVODE controls local errors only, and the stability map (README) measured unverified solves at up
+  // to 67 rtol (single shooting, a rough survey) and 37 rtol (BDF). Off, a solve is only as good as the
+  // tolerance factors measured in the tests; for benchmarks of the raw methods. Method::automatic
+  // always verifies; the closed form never needs to.
+  bool verify = true;
   // Restart the integrator at every breakpoint of the curve (jumps of curvature). Off only for studies
   // of what a step across a jump costs (the stability map).
   bool restart_at_breakpoints = true;
@@ -75,8 +71,8 @@ struct Diagnostics {
   double condition_estimate = std::numeric_limits<double>::quiet_NaN();  // 1-norm, scaled system
   double boundary_residual = std::numeric_limits<double>::quiet_NaN();   // max |BC residual|, scaled
   double equilibrium_residual = std::numeric_limits<double>::quiet_NaN(); // relative to half weight
-  // A-posteriori relative error of the printed numbers (CVODE methods, as Options::verify says, and
-  // always under Method::automatic): the difference between a solve at rtol and one at rtol / 16, of H
+  // A-posteriori relative error of the printed numbers (CVODE methods with Options::verify, and always
+  // under Method::automatic): the difference between a solve at rtol and one at rtol / 16, of H
   // relative to |H| and, with a profile, profile_difference. The solution returned is the tighter one.
   // NaN when not estimated (the closed form needs none).
   double error_estimate = std::numeric_limits<double>::quiet_NaN();

@@ -1,0 +1,149 @@
+#!/usr/bin/env python3
+"""The stability map: where each method loses accuracy or fails, and whether ogive notices.
+
+    python3 scripts/stability_map.py [--ogive build/ogive] [--csv data/benchmarks/stability-map.csv]
+
+Runs `ogive bench` (one solve per row, no timing repeats) over five sweeps:
+
+  slenderness   t/L 0.2 .. 1e-5, semicircular and pointed (eps 1)
+  pointedness   eccentricity 0 .. 5
+  flatness      segmental arches, rise/L 0.5 .. 0.02
+  jumps         three- and four-centred arches (curvature jumps), with and without restarts there
+  surveys       the points files of data/curves/
+
+for single and multiple shooting, Adams and BDF, and rtol 1e-4 .. 1e-12, twice: with `--no-verify`
+(the raw method: how far its true error strays from rtol) and verified, as ogive runs by default (the
+a-posteriori estimate: does the status notice?). The true error is against the closed form on circular arcs, else
+against multiple shooting at rtol 1e-12 with 32 segments (see README). A third pass checks the closed
+form's own matrix exponentials against CVODE at rtol 1e-12 on the extreme scenes (`ogive check`).
+
+Writes every row to the CSV (with the sweep and the verify mode in front) and prints the map as
+Markdown tables on stdout. Standard library only.
+"""
+import argparse
+import csv
+import io
+import math
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+CURVES = os.path.join(ROOT, "data", "curves")
+
+RTOLS = "1e-4,1e-6,1e-8,1e-10,1e-12"
+COMBOS = [("shooting", "adams"), ("shooting", "bdf"), ("multiple-shooting", "adams"), ("multiple-shooting", "bdf")]
+
+# (sweep, label, scene options)
+SCENES = []
+for t in ["0.2", "0.08", "0.02", "0.005", "1e-3", "1e-4", "1e-5"]:
+    SCENES.append(("slenderness", f"semicircular t/L {t}", ["--curve", "semicircular", "--thickness-ratio", t]))
+for t in ["0.2", "0.02", "1e-3", "1e-5"]:
+    SCENES.append(("slenderness", f"pointed eps 1 t/L {t}", ["--eccentricity", "1", "--thickness-ratio", t]))
+for eps in ["0", "0.25", "0.5", "1", "2", "3", "5"]:
+    SCENES.append(("pointedness", f"pointed eps {eps}", ["--eccentricity", eps]))
+for rise in ["0.45", "0.3", "0.2", "0.1", "0.05", "0.02"]:
+    SCENES.append(("flatness", f"segmental rise/L {rise}", ["--curve", "segmental", "--rise-ratio", rise]))
+for label, opts in [("three-centred rise/L 0.25", ["--curve", "three-centred", "--rise-ratio", "0.25"]),
+                    ("three-centred rise/L 0.4", ["--curve", "three-centred", "--rise-ratio", "0.4"]),
+                    ("four-centred rise/L 0.5", ["--curve", "four-centred", "--rise-ratio", "0.5"])]:
+    SCENES.append(("jumps", label + " restarts", opts))
+    SCENES.append(("jumps", label + " no restarts", opts + ["--ignore-breakpoints"]))
+for name in ["parabola-40.csv", "semicircle-24.csv", "catenary-survey.csv"]:
+    SCENES.append(("surveys", f"points {name}", ["--curve", "points", "--curve-file", os.path.join(CURVES, name)]))
+    SCENES.append(("surveys", f"points {name} no restarts",
+                   ["--curve", "points", "--curve-file", os.path.join(CURVES, name), "--ignore-breakpoints"]))
+
+EXTREMES = [["--curve", "semicircular", "--thickness-ratio", "1e-5"], ["--eccentricity", "5"],
+            ["--eccentricity", "1", "--thickness-ratio", "1e-5"], ["--curve", "segmental", "--rise-ratio", "0.02"],
+            ["--curve", "four-centred", "--rise-ratio", "0.5"], ["--curve", "semicircular", "--thickness-ratio", "0.2"]]
+
+
+def run(ogive, args):
+    proc = subprocess.run([ogive] + args, capture_output=True, text=True)
+    if proc.returncode not in (0, 3):
+        sys.exit(f"stability_map: {' '.join(args)}: exit {proc.returncode}: {proc.stderr.strip()}")
+    return list(csv.DictReader(io.StringIO(proc.stdout)))
+
+
+def num(text):
+    try:
+        return float(text)
+    except ValueError:
+        return math.nan
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--ogive", default=os.path.join(ROOT, "build", "ogive"))
+    parser.add_argument("--csv", default=os.path.join(ROOT, "data", "benchmarks", "stability-map.csv"))
+    args = parser.parse_args()
+
+    rows = []
+    for sweep, label, opts in SCENES:
+        for verify in ["never", "always"]:
+            flag = ["--no-verify"] if verify == "never" else []
+            for method, integrator in COMBOS:
+                out = run(args.ogive, ["bench"] + opts + ["--methods", method, "--integrators", integrator,
+                                                          "--rtols", RTOLS, "--repeats", "1"] + flag)
+                for r in out:
+                    rows.append(dict(sweep=sweep, scene=label, verify=verify, **r))
+    os.makedirs(os.path.dirname(args.csv), exist_ok=True)
+    with open(args.csv, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()), lineterminator="\n")
+        writer.writeheader()
+        writer.writerows(rows)
+
+    # The map. Per scene and method: the worst raw error over the tolerances, in units of rtol (with
+    # the statuses the raw runs returned), and what the verified runs said.
+    print("| sweep | scene | " + " | ".join(f"{m} {i}" for m, i in COMBOS) + " |")
+    print("|---|---|" + "---|" * len(COMBOS))
+    misses = 0
+    for sweep, label, _ in SCENES:
+        cells = []
+        for method, integrator in COMBOS:
+            sel = [r for r in rows if r["scene"] == label and r["method"] == method and r["integrator"] == integrator]
+            raw = [r for r in sel if r["verify"] == "never"]
+            ver = [r for r in sel if r["verify"] == "always"]
+            worst = 0.0
+            raw_flags = set()
+            for r in raw:
+                if r["status"] != "success":
+                    raw_flags.add(r["status"])
+                    continue
+                err = max(num(r["error_H_over_V"]), num(r["error_profile"]))
+                worst = max(worst, err / num(r["rtol"])) if not math.isnan(err) else math.inf
+            flagged = sum(1 for r in ver if r["status"] != "success")
+            missed = 0
+            for r in ver:
+                err = max(num(r["error_H_over_V"]), num(r["error_profile"]))
+                if r["status"] == "success" and not err <= 10 * num(r["rtol"]):
+                    missed += 1
+            misses += missed
+            cell = f"{worst:.2g}" if math.isfinite(worst) else "inf"
+            if raw_flags:
+                cell += " (" + ", ".join(sorted(raw_flags)) + ")"
+            cell += f"; verified: {flagged} flagged" if flagged else "; verified: all success"
+            if missed:
+                cell += f", **{missed} MISSED**"
+            cells.append(cell)
+        print(f"| {sweep} | {label} | " + " | ".join(cells) + " |")
+    print()
+    print(f"Rows: {len(rows)}. Verified rows printed as success whose true error exceeds 10 rtol: {misses}.")
+    print()
+    print("The closed form against CVODE (multiple shooting, rtol 1e-11): largest relative difference of H/V")
+    print()
+    print("| scene | closed form H/V | relative difference | CVODE status |")
+    print("|---|---|---|---|")
+    for opts in EXTREMES:
+        out = run(args.ogive, ["check"] + opts + ["--rtol", "1e-11"])
+        ms = [r for r in out if r["method"] == "multiple-shooting"]
+        cf = [r for r in out if r["method"] == "closed-form"]
+        print(f"| {' '.join(o for o in opts if not o.startswith('--'))} | {cf[0]['H_over_V']} | "
+              f"{num(ms[0]['relative_difference']):.2g} | {ms[0]['status']} |")
+    return 1 if misses else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
