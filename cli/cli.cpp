@@ -146,14 +146,16 @@ std::vector<SceneParameters> scene_grid(SceneOptions& o, const CLI::App& cmd) {
   std::size_t total = 1;
   for (Axis& a : o.axes) {
     std::string text = a.text;
-    if (text.empty()) {
+    const bool given = cmd.count(a.flag) > 0;  // given text is parsed as it stands, even if empty
+    if (!given && text.empty()) {
       if (a.flag == "--rise-ratio") text = family->default_rise;
       if (a.flag == "--haunch-angle") text = family->default_haunch;
       if (a.flag == "--crown-angle") text = family->default_crown;
-      if (text.empty()) text = "nan";  // not a parameter of this curve: printed as an empty field
     }
     if (family->file && a.flag == "--span") text = fmt::format("{}", o.points->span());
-    a.values = text == "nan" ? std::vector<double>{std::numeric_limits<double>::quiet_NaN()} : parse_values(text, a.flag);
+    // Not a parameter of this curve: one NaN, printed as an empty field.
+    const bool absent = !given && text.empty();
+    a.values = absent ? std::vector<double>{std::numeric_limits<double>::quiet_NaN()} : parse_values(text, a.flag);
     for (double v : a.values)
       if (!std::isnan(v) && !a.allowed(v)) throw UsageError(fmt::format("{}: {}, got {}", a.flag, a.rule, v));
     total *= a.values.size();
@@ -251,6 +253,31 @@ struct SolverText {
   bool ignore_breakpoints = false;
 };
 
+// CLI11 would read "" as 0 and saturate huge integers; numeric options must be what parse_number
+// accepts (the whole text, finite), and counts whole numbers within what an int holds.
+const CLI::Validator kFiniteNumber(
+    [](std::string& text) -> std::string {
+      try {
+        parse_number(text, "");
+      } catch (const UsageError&) {
+        return "'" + text.substr(0, 60) + "' is not a finite number";
+      }
+      return {};
+    },
+    "NUMBER");
+const CLI::Validator kCount(
+    [](std::string& text) -> std::string {
+      double v = 0;
+      try {
+        v = parse_number(text, "");
+      } catch (const UsageError&) {
+        return "'" + text.substr(0, 60) + "' is not a number";
+      }
+      if (v != std::floor(v) || std::abs(v) > 1e9) return "'" + text.substr(0, 60) + "' is not a whole number up to 1e9";
+      return {};
+    },
+    "COUNT");
+
 // bench takes lists of methods and integrators instead (--methods, --integrators).
 void add_solver_options(CLI::App& cmd, Options& o, SolverText& text, bool with_method = true,
                         bool with_integrator = true) {
@@ -258,11 +285,11 @@ void add_solver_options(CLI::App& cmd, Options& o, SolverText& text, bool with_m
     cmd.add_option("--method", text.method, "closed-form, shooting, multiple-shooting or auto")->capture_default_str();
   if (with_integrator)
     cmd.add_option("--integrator", text.integrator, "CVODE's method: adams or bdf")->capture_default_str();
-  cmd.add_option("--rtol", o.rtol, "accuracy asked of the result, 1e-14 .. 0.1")->capture_default_str();
+  cmd.add_option("--rtol", o.rtol, "accuracy asked of the result, 1e-14 .. 0.1")->check(kFiniteNumber)->capture_default_str();
   cmd.add_option("--atol", o.atol, "CVODE's absolute tolerance on the scaled state (0: 1e-6 of CVODE's rtol)")
-      ->capture_default_str();
-  cmd.add_option("--segments", o.segments, "multiple-shooting segments over the half arch")->capture_default_str();
-  cmd.add_option("--max-steps", o.max_steps, "CVODE step limit per integration span")->capture_default_str();
+      ->check(kFiniteNumber)->capture_default_str();
+  cmd.add_option("--segments", o.segments, "multiple-shooting segments over the half arch")->check(kCount)->capture_default_str();
+  cmd.add_option("--max-steps", o.max_steps, "CVODE step limit per integration span")->check(kCount)->capture_default_str();
   cmd.add_flag("--no-verify", text.no_verify,
                "skip the second solve at rtol/16 that estimates the error (raw methods, for benchmarks)");
   cmd.add_flag("--ignore-breakpoints", text.ignore_breakpoints,
@@ -567,6 +594,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   add_scene_options(*profile, profile_scene);
   add_solver_options(*profile, profile_options, profile_text);
   profile->add_option("--stations", profile_options.stations, "stations, springing to springing (>= 2)")
+      ->check(kCount)
       ->capture_default_str();
 
   CLI::App* check = app.add_subcommand("check", "every method's H/V against the closed form");
@@ -577,7 +605,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   int curve_stations = 101;
   CLI::App* curve = app.add_subcommand("curve", "the generator curve: s, x, y, theta, kappa");
   add_scene_options(*curve, curve_scene);
-  curve->add_option("--stations", curve_stations, "stations, springing to springing (>= 2)")->capture_default_str();
+  curve->add_option("--stations", curve_stations, "stations, springing to springing (>= 2)")->check(kCount)->capture_default_str();
 
   CLI::App* bench = app.add_subcommand("bench", "median time per solve and true error, per method and rtol");
   add_scene_options(*bench, bench_scene);
@@ -588,7 +616,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   bench->add_option("--methods", bench_methods, "comma-separated methods (auto included)")->capture_default_str();
   bench->add_option("--integrators", bench_integrators, "comma-separated: adams, bdf")->capture_default_str();
   bench->add_option("--rtols", bench_rtols, "tolerances: list or range")->capture_default_str();
-  bench->add_option("--repeats", repeats, "solves per row; the median time is printed")->capture_default_str();
+  bench->add_option("--repeats", repeats, "solves per row; the median time is printed")->check(kCount)->capture_default_str();
 
   std::vector<const char*> argv{"ogive"};
   for (const std::string& a : args) argv.push_back(a.c_str());

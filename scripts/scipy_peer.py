@@ -233,14 +233,16 @@ def ogive_reference_hv(path, scene):
     return float(rows[0]["H_over_V"])
 
 
+PROFILE_COLUMNS = ("s", "theta", "Ux", "Uy", "psi", "N", "V", "M")
+
+
 def ogive_reference_profile(path, scene, stations):
+    """The closed form's profile: a dict of arrays keyed by PROFILE_COLUMNS (SI units)."""
     rows = run_ogive(path, "profile", ogive_args(scene) + ["--stations", str(stations)])
-    for col in ("s", "M"):
+    for col in PROFILE_COLUMNS:
         if not rows or col not in rows[0]:
             raise RuntimeError(f"ogive profile: no '{col}' column")
-    s = np.array([float(r["s"]) for r in rows])
-    M = np.array([float(r["M"]) for r in rows])
-    return s, M
+    return {col: np.array([float(r[col]) for r in rows]) for col in PROFILE_COLUMNS}
 
 
 def scene_matches(row, scene):
@@ -288,17 +290,32 @@ def read_csv_rows(path):
     return rows
 
 
-def profile_error(sol, scene, s_ref, M_ref):
-    """max over the half-arch stations of |M_scipy - M_ref| / max|M_ref| (dimensional M_ref, s_ref)."""
+def profile_error(sol, scene, ref):
+    """ogive's profile_difference (include/ogive/solve.hpp) over the half-arch stations: the error of
+    (Ux, Uy) relative to max |U|, of psi relative to max |psi|, of (N, V) relative to the largest
+    resultant, and of M relative to max(max |M|, max |N| t / 6)."""
     S = scene.S * scene.L
-    keep = s_ref <= S * (1.0 + 1e-12) + 1e-12
-    s, M = s_ref[keep], M_ref[keep]
-    scale = np.max(np.abs(M))
-    if s.size == 0 or not scale > 0:
+    keep = ref["s"] <= S * (1.0 + 1e-12) + 1e-12
+    r = {col: ref[col][keep] for col in PROFILE_COLUMNS}
+    if r["s"].size == 0:
         return math.nan
-    s_nd = np.clip(s / scene.L, 0.0, scene.S)
-    M_peer = sol.sol(s_nd)[5] * scene.moment_scale
-    return float(np.max(np.abs(M_peer - M)) / scale)
+    y = sol.sol(np.clip(r["s"] / scene.L, 0.0, scene.S))
+    force, rotation = scene.w * scene.L, scene.disp_scale / scene.L
+    Ux, Uy, psi = y[0] * scene.disp_scale, y[1] * scene.disp_scale, y[2] * rotation
+    Fx, Fy, M = y[3] * force, y[4] * force, y[5] * scene.moment_scale
+    c, sn = np.cos(r["theta"]), np.sin(r["theta"])
+    N, V = c * Fx + sn * Fy, -sn * Fx + c * Fy
+    t = scene.p["thickness_ratio"] * scene.L
+
+    def ratio(diff, scale):
+        return diff / scale if scale > 0 else (0.0 if diff == 0 else math.inf)
+
+    errors = [ratio(np.max(np.hypot(Ux - r["Ux"], Uy - r["Uy"])), np.max(np.hypot(r["Ux"], r["Uy"]))),
+              ratio(np.max(np.abs(psi - r["psi"])), np.max(np.abs(r["psi"]))),
+              ratio(np.max(np.hypot(N - r["N"], V - r["V"])), np.max(np.hypot(r["N"], r["V"]))),
+              ratio(np.max(np.abs(M - r["M"])), max(np.max(np.abs(r["M"])), np.max(np.abs(r["N"])) * t / 6))]
+    worst = max(errors)
+    return float(worst) if math.isfinite(worst) else math.nan
 
 
 # ---------------------------------------------------------------------------------------------------------
@@ -383,19 +400,18 @@ def main(argv):
     try:
         for p in grid:
             scene = Scene(p, a.plane_strain)
-            hv_ref, s_ref, M_ref = math.nan, None, None
+            hv_ref, prof_ref = math.nan, None
             if a.ogive:
                 hv_ref = ogive_reference_hv(a.ogive, scene)
-                s_ref, M_ref = ogive_reference_profile(a.ogive, scene, a.stations)
+                prof_ref = ogive_reference_profile(a.ogive, scene, a.stations)
             elif ref_rows is not None:
                 hv_ref = csv_reference_hv(ref_rows, scene)
                 if math.isnan(hv_ref):
                     sys.stderr.write(f"scipy_peer.py: warning: no reference H/V in {a.reference_csv} for {p}\n")
                 if prof_rows is not None:
-                    pr = [r for r in prof_rows if scene_matches(r, scene) and "s" in r and "M" in r]
+                    pr = [r for r in prof_rows if scene_matches(r, scene) and all(c in r for c in PROFILE_COLUMNS)]
                     if pr:
-                        s_ref = np.array([float(r["s"]) for r in pr])
-                        M_ref = np.array([float(r["M"]) for r in pr])
+                        prof_ref = {c: np.array([float(r[c]) for r in pr]) for c in PROFILE_COLUMNS}
             for tol in tols:
                 seconds, sol, counter = [], None, None
                 for _ in range(a.repeats):
@@ -407,7 +423,7 @@ def main(argv):
                 Fx = float(sol.sol(0.0)[3])
                 hv = -Fx / scene.S
                 err = abs(hv - hv_ref) / abs(hv_ref) if math.isfinite(hv_ref) and hv_ref != 0 else math.nan
-                eprof = profile_error(sol, scene, s_ref, M_ref) if s_ref is not None else math.nan
+                eprof = profile_error(sol, scene, prof_ref) if prof_ref is not None else math.nan
                 status = "success" if sol.status == 0 else "not_converged"
                 if sol.status != 0:
                     sys.stderr.write(f"scipy_peer.py: eps={p['eccentricity']} tol={tol!r}: solve_bvp status "

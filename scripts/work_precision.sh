@@ -245,9 +245,9 @@ if ! grep -q '^hv ' "$tmp/ranges.txt"; then
   echo "$prog: no row has a finite error_H_over_V: nothing to draw" >&2
   exit 1
 fi
-chart hv "$prefix" "relative error of H/V against the closed form" "$title"
+chart hv "$prefix" "relative error of H/V against the reference" "$title"
 if grep -q '^prof ' "$tmp/ranges.txt"; then
-  chart prof "$prefix-profile" "profile error: max |M - M_ref| / max |M_ref| over the half arch" "$title (moment profile)"
+  chart prof "$prefix-profile" "profile error: forces, M in kern units, displacements (README)" "$title (profile)"
 else
   echo "$prog: note: no finite error_profile values: no profile chart" >&2
 fi

@@ -189,6 +189,47 @@ TEST_CASE("cli: bad input is one line on stderr - exit 2 - nothing on stdout") {
   CHECK(cli({"thrust", "--thickness-ratio", "1.5"}).err.find("--thickness-ratio") != std::string::npos);
 }
 
+TEST_CASE("cli: every numeric option refuses nan - infinities - overflow - text - empty - a very long number") {
+  const std::string long_number(100000, '1');  // 1e99999: not a finite double
+  const std::vector<std::string> bad = {"nan", "inf", "-inf", "1e999", "-1e999", "abc", "", "0x", long_number,
+                                        "1,nan", "0:inf:3", "1:2:3:4", "--"};
+  // Scene options, on a curve to which each applies.
+  const std::vector<std::pair<std::string, std::vector<std::string>>> options = {
+      {"--span", {}}, {"--youngs-modulus", {}}, {"--poisson-ratio", {}}, {"--density", {}}, {"--gravity", {}},
+      {"--shear-coefficient", {}}, {"--thickness-ratio", {}}, {"--support-displacement-ratio", {}},
+      {"--eccentricity", {}}, {"--rise-ratio", {"--curve", "four-centred"}},
+      {"--haunch-angle", {"--curve", "four-centred"}}, {"--crown-angle", {"--curve", "four-centred"}},
+      {"--rtol", {}}, {"--atol", {}}, {"--segments", {}}, {"--max-steps", {}}};
+  for (const auto& [option, context] : options)
+    for (const std::string& value : bad) {
+      std::vector<std::string> args = {"thrust"};
+      args.insert(args.end(), context.begin(), context.end());
+      args.push_back(option);
+      args.push_back(value);
+      CAPTURE(option);
+      CAPTURE(value.substr(0, 20));
+      const Run r = cli(args);
+      CHECK(r.status == 2);
+      CHECK(r.out.empty());
+      CHECK(lines(r.err).size() == 1);
+    }
+  // The list options of the other commands.
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {"profile", "--stations", "1e999"}, {"profile", "--stations", "nan"}, {"curve", "--stations", "-3"},
+           {"bench", "--rtols", "nan"}, {"bench", "--rtols", "1e-20"}, {"bench", "--repeats", "nan"},
+           {"bench", "--integrators", "rk4"}, {"bench", "--integrators", ""}, {"bench", "--methods", ""},
+           {"bench", "--eccentricity", "0:1:1000", "--thickness-ratio", "0.05:0.1:1000", "--rtols", "1e-2:1e-3:2"},
+           {"thrust", "--curve", "points", "--curve-file", "/"}, {"thrust", "--plane-strain=maybe"}}) {
+    std::string joined;
+    for (const auto& a : args) joined += a + " ";
+    CAPTURE(joined);
+    const Run r = cli(args);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(lines(r.err).size() == 1);
+  }
+}
+
 TEST_CASE("cli: a bad curve file is one line naming the file and the line - exit 2 - nothing on stdout") {
   const std::string dir = std::filesystem::temp_directory_path() / "ogive_test_cli_curves";
   std::filesystem::create_directories(dir);

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Every benchmark table and chart of the README, in one run (about 10 minutes on 2 cores):
+#
+#   bash scripts/charts.sh [OGIVE]        # OGIVE defaults to build/ogive
+#
+# Writes data/benchmarks/{paper,catenary,survey}.csv (ogive bench; the paper's CSV has the scipy
+# solve_bvp peer's rows appended) and docs/charts/{paper,catenary,survey}{,-profile}.{png,svg}.
+# The raw methods run with --no-verify, so that the charts show what each method does alone; the row
+# "auto" is ogive's default, verified, solve. Needs gnuplot-nox, python3-scipy (install-deps.sh --charts).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+ogive=${1:-build/ogive}
+[[ -x $ogive ]] || { echo "charts.sh: no ogive executable at '$ogive' (build first)" >&2; exit 2; }
+mkdir -p data/benchmarks docs/charts
+rtols=1e-2,1e-3,1e-4,1e-5,1e-6,1e-7,1e-8,1e-9,1e-10,1e-11,1e-12
+bench=(bench --rtols "$rtols" --integrators adams,bdf --no-verify --repeats 11)
+
+"$ogive" "${bench[@]}" --eccentricity 0,0.5,1 --methods closed-form,shooting,multiple-shooting,auto \
+  > data/benchmarks/paper.csv
+python3 scripts/scipy_peer.py --eccentricity 0,0.5,1 --tols "$rtols" --ogive "$ogive" --repeats 5 \
+  >> data/benchmarks/paper.csv
+"$ogive" "${bench[@]}" --curve catenary --rise-ratio 0.5 --methods shooting,multiple-shooting,auto \
+  > data/benchmarks/catenary.csv
+"$ogive" "${bench[@]}" --curve points --curve-file data/curves/catenary-survey.csv \
+  --methods shooting,multiple-shooting,auto > data/benchmarks/survey.csv
+
+scripts/work_precision.sh data/benchmarks/paper.csv docs/charts/paper "pointed arches eps 0 / 0.5 / 1, t = 0.08 L"
+scripts/work_precision.sh data/benchmarks/catenary.csv docs/charts/catenary "catenary, rise L/2, t = 0.08 L"
+scripts/work_precision.sh data/benchmarks/survey.csv docs/charts/survey "25-point survey (data/curves/catenary-survey.csv)"
