@@ -140,7 +140,7 @@ def main():
         out = run(args.ogive, ["check"] + opts + ["--rtol", "1e-11"])
         ms = [r for r in out if r["method"] == "multiple-shooting"]
         cf = [r for r in out if r["method"] == "closed-form"]
-        print(f"| {' '.join(o for o in opts if not o.startswith('--'))} | {cf[0]['H_over_V']} | "
+        print(f"| `{' '.join(opts)}` | {cf[0]['H_over_V']} | "
               f"{num(ms[0]['relative_difference']):.2g} | {ms[0]['status']} |")
     return 1 if misses else 0
 
