@@ -1,0 +1,61 @@
+// The fuzz targets' checks (tests/fuzz/fuzz_checks.hpp) in the ordinary suite: every seed of the corpora
+// in tests/fuzz/corpus/ (the found-* files are inputs the fuzzers broke), and each bug the fuzzers found,
+// with its input as a literal and what it gives now.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "fuzz/fuzz_checks.hpp"
+#include "ogive/scene.hpp"
+#include "tolerances.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<fs::path> corpus(const char* name) {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(fs::path(OGIVE_FUZZ_CORPUS_DIR) / name))
+    if (entry.is_regular_file()) files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+}  // namespace
+
+TEST_CASE("fuzz corpus: every parse_values seed passes the fuzz target's checks") {
+  const auto files = corpus("parse_values");
+  CHECK(files.size() >= 10);
+  for (const fs::path& file : files) {
+    INFO(file.filename().string());
+    CHECK_NOTHROW(ogive::fuzz::check_values(slurp(file), true));  // the CLI part for every seed
+  }
+}
+
+TEST_CASE("fuzz corpus: every points_file seed passes the fuzz target's checks") {
+  const auto files = corpus("points_file");
+  CHECK(files.size() >= 10);
+  for (const fs::path& file : files) {
+    INFO(file.filename().string());
+    CHECK_NOTHROW(ogive::fuzz::check_points_file(slurp(file)));
+  }
+}
+
+TEST_CASE("fuzz checks: a broken invariant is reported") {
+  CHECK_NOTHROW(ogive::fuzz::check_points_file("x,y\n0,0\n1,1\n2,1.5\n3,1.7\n"));
+  CHECK_NOTHROW(ogive::fuzz::check_values("0:1:11", true));
+  CHECK_THROWS_AS(ogive::fuzz::require(false, "broken"), ogive::fuzz::InvariantBroken);
+}
