@@ -1,5 +1,6 @@
 #include "values.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fmt/format.h>
@@ -57,8 +58,21 @@ std::vector<double> parse_values(std::string_view text, std::string_view option)
       throw UsageError(fmt::format("{}: a range of one value needs start == stop, got '{}'", option, shown(text)));
     const auto n = static_cast<std::size_t>(count);
     out.reserve(n);
-    for (std::size_t i = 0; i < n; ++i)
-      out.push_back(n == 1 ? start : (i + 1 == n ? stop : start + (stop - start) * static_cast<double>(i) / static_cast<double>(n - 1)));
+    for (std::size_t i = 0; i < n; ++i) {
+      if (n == 1 || i + 1 == n) {
+        out.push_back(i == 0 ? start : stop);
+        continue;
+      }
+      double v = start + (stop - start) * static_cast<double>(i) / static_cast<double>(n - 1);
+      // Near the ends of the double range, stop - start or (stop - start) * i overflows (found by
+      // fuzzing: "1:1.7976931348623157e308:5" gave inf, "-1e308:1e308:3" nan). Then interpolate the
+      // halves, which cannot overflow, and keep the value between the ends, where it lies exactly.
+      if (!std::isfinite(v)) {
+        const double f = static_cast<double>(i) / static_cast<double>(n - 1);
+        v = std::clamp(2 * ((start / 2) * (1 - f) + (stop / 2) * f), std::min(start, stop), std::max(start, stop));
+      }
+      out.push_back(v);
+    }
     return out;
   }
   std::size_t pos = 0;

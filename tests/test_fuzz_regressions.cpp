@@ -59,3 +59,25 @@ TEST_CASE("fuzz checks: a broken invariant is reported") {
   CHECK_NOTHROW(ogive::fuzz::check_values("0:1:11", true));
   CHECK_THROWS_AS(ogive::fuzz::require(false, "broken"), ogive::fuzz::InvariantBroken);
 }
+
+TEST_CASE("fuzz found: a range near the ends of the double range gave inf and nan") {
+  using ogive::cli::parse_values;
+  constexpr double kMax = std::numeric_limits<double>::max();
+  // (stop - start) * i overflowed: inf; stop - start itself overflowed: nan.
+  const auto up = parse_values("11:01.7976931348623157e308:5", "--x");
+  REQUIRE(up.size() == 5);
+  CHECK(up.front() == 11);
+  CHECK(up.back() == kMax);
+  for (std::size_t i = 1; i < up.size(); ++i) {
+    CHECK(std::isfinite(up[i]));
+    CHECK(up[i] > up[i - 1]);
+  }
+  CHECK(parse_values("-1e308:1e308:3", "--x") == std::vector<double>{-1e308, 0, 1e308});
+  const auto down = parse_values(".51e308:.1:6", "--x");
+  REQUIRE(down.size() == 6);
+  for (std::size_t i = 1; i < down.size(); ++i) CHECK(down[i] < down[i - 1]);
+  CHECK(down.back() == 0.1);
+  // Ordinary ranges keep their values bit for bit.
+  CHECK(parse_values("0:1:11", "--x")[3] == 0.3);
+  CHECK_NOTHROW(ogive::fuzz::check_values("-1e308:1e308:3", true));
+}
