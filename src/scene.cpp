@@ -32,6 +32,23 @@ void Scene::validate() const {
     refuse("poisson_ratio", "must be < 0.5 in plane strain (E / (1 - nu^2) stays finite)", nu);
   if (!std::isfinite(support_displacement))
     refuse("support_displacement", "must be finite", support_displacement);
+  // The model works in units of w L, w L^2, w L^4 / EI and w L^3 / EI (arch_model.cpp). Each field can
+  // be finite while a product is not: found by fuzzing, density 1e308 gave w = inf, then H = V = inf
+  // and H/V = nan with status success. So every scale must be a finite positive double too.
+  {
+    const double L = span(), w = weight_per_length(), EI = material.effective_modulus() * inertia();
+    const double displacement = w * L * L * L * L / EI;
+    const double scales[] = {w, EI, w * L, w * L * L, displacement, w * L * L * L / EI, inertia() / (area() * L * L)};
+    for (double scale : scales)
+      if (!std::isfinite(scale) || !(scale > 0))
+        throw std::invalid_argument(fmt::format(
+            "density, gravity, thickness and youngs_modulus: the weight per length w = {} N/m and the bending "
+            "stiffness EI = {} N m^2 with span {} m give force, moment or displacement scales (w L, w L^2, "
+            "w L^4 / EI) beyond the range of a double",
+            w, EI, L));
+    if (!std::isfinite(support_displacement / displacement))
+      refuse("support_displacement", "must be finite in units of w L^4 / EI", support_displacement);
+  }
   // A section deeper than twice the radius of curvature would overlap itself on the intrados.
   double max_curvature = 0;
   for (const CircularArc& arc : curve->arcs()) max_curvature = std::max(max_curvature, std::abs(arc.kappa));

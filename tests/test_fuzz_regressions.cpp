@@ -34,6 +34,27 @@ std::string slurp(const fs::path& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+struct Run {
+  int status;
+  std::string out, err;
+};
+
+Run cli(const std::vector<std::string>& args) {
+  std::ostringstream out, err;
+  const int status = ogive::cli::run_cli(args, out, err);
+  return {status, out.str(), err.str()};
+}
+
+// Exit 2 with one line on stderr that contains `what`, nothing on stdout.
+void check_refused(const std::vector<std::string>& args, const std::string& what) {
+  CAPTURE(args.back());
+  const Run r = cli(args);
+  CHECK(r.status == ogive::cli::kExitUsage);
+  CHECK(r.out.empty());
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK_MESSAGE(r.err.find(what) != std::string::npos, r.err);
+}
+
 }  // namespace
 
 TEST_CASE("fuzz corpus: every parse_values seed passes the fuzz target's checks") {
@@ -80,4 +101,21 @@ TEST_CASE("fuzz found: a range near the ends of the double range gave inf and na
   // Ordinary ranges keep their values bit for bit.
   CHECK(parse_values("0:1:11", "--x")[3] == 0.3);
   CHECK_NOTHROW(ogive::fuzz::check_values("-1e308:1e308:3", true));
+}
+
+TEST_CASE("fuzz found: density 1e308 gave H = V = inf and H/V = nan with status success") {
+  ogive::Scene scene;
+  scene.curve = ogive::make_pointed(10, 0);
+  scene.material.density = 1e308;  // w = rho g t overflows
+  CHECK_THROWS_WITH_AS(scene.validate(), doctest::Contains("beyond the range of a double"), std::invalid_argument);
+  scene.material.density = 1e-300;
+  scene.material.gravity = 1e-300;  // w underflows to 0
+  CHECK_THROWS_AS(scene.validate(), std::invalid_argument);
+  check_refused({"thrust", "--method", "closed-form", "--density", "\t1e308\t\t"}, "beyond the range of a double");
+  // The defaults and the paper's extremes still pass.
+  scene.material = {};
+  CHECK_NOTHROW(scene.validate());
+  scene.material.youngs_modulus = 1e12;
+  scene.thickness = 0.2 * 10;
+  CHECK_NOTHROW(scene.validate());
 }
