@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <fmt/format.h>
+
 namespace ogive {
 namespace {
 
@@ -112,8 +114,8 @@ double PiecewiseCircularCurve::first_moment_x() const {
 }
 
 std::shared_ptr<const Curve> make_pointed(double span, double eccentricity) {
-  if (!(span > 0) || !std::isfinite(span))
-    throw std::invalid_argument("span: must be a finite positive length");
+  if (!(span >= kMinSpan && span <= kMaxSpan))
+    throw std::invalid_argument(fmt::format("span: must lie in [{}, {}] m, got {}", kMinSpan, kMaxSpan, span));
   if (!(eccentricity >= 0) || !std::isfinite(eccentricity))
     throw std::invalid_argument("eccentricity: must be finite and >= 0");
   const double radius = (0.5 + eccentricity) * span;

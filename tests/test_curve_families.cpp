@@ -368,7 +368,7 @@ TEST_CASE("family factories refuse invalid parameters - naming the field") {
                        std::invalid_argument);
   CHECK_THROWS_WITH_AS(make_segmental(-1, 0.2), doctest::Contains("span: "), std::invalid_argument);
   CHECK_THROWS_WITH_AS(make_segmental(10, 0), doctest::Contains("rise_ratio: "), std::invalid_argument);
-  CHECK_THROWS_WITH_AS(make_elliptical(10, 2.5), "rise_ratio: must lie in (0, 2] for an elliptical arch, got 2.5",
+  CHECK_THROWS_WITH_AS(make_elliptical(10, 2.5), "rise_ratio: must lie in [1e-06, 2] for an elliptical arch, got 2.5",
                        std::invalid_argument);
   CHECK_THROWS_WITH_AS(make_parabolic(10, std::nan("")), doctest::Contains("rise_ratio: "), std::invalid_argument);
   CHECK_THROWS_WITH_AS(make_catenary(10, -0.1), doctest::Contains("rise_ratio: "), std::invalid_argument);

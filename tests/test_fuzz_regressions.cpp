@@ -119,3 +119,27 @@ TEST_CASE("fuzz found: density 1e308 gave H = V = inf and H/V = nan with status 
   scene.thickness = 0.2 * 10;
   CHECK_NOTHROW(scene.validate());
 }
+
+TEST_CASE("fuzz found: a catenary of rise ratio 1e-320 had nan geometry") {
+  // sinh^2 underflowed in the parameter's equation and a ~ L / (4 rise_ratio) overflows.
+  CHECK_THROWS_WITH_AS(ogive::make_catenary(10, 31.90041e-320),
+                       doctest::Contains("rise_ratio: must lie in [1e-06, 2] for a catenary arch, got 3.19"),
+                       std::invalid_argument);
+  CHECK_THROWS_AS(ogive::make_parabolic(10, 1e-300), std::invalid_argument);  // its first moment was 0/0
+  check_refused({"curve", "--curve", "catenary", "--rise-ratio", "31.90041e-320"}, "--rise-ratio: must lie in [1e-06, 2]");
+  // The smallest allowed rise gives finite geometry.
+  for (auto make : {ogive::make_catenary, ogive::make_parabolic, ogive::make_elliptical})
+    CHECK_NOTHROW(ogive::fuzz::check_curve(*make(10, 1e-6)));
+}
+
+TEST_CASE("fuzz found: spans near the ends of the double range gave inf and nan geometry") {
+  CHECK_THROWS_WITH_AS(ogive::make_pointed(1.7e308, 0), "span: must lie in [0.001, 1000000] m, got 1.7e+308",
+                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(ogive::make_catenary(5e-324, 0.5), doctest::Contains("span: must lie in"), std::invalid_argument);
+  check_refused({"curve", "--curve", "catenary", "--span", "1.7e308"}, "--span: must lie in [0.001, 1000000] m");
+  for (double span : {ogive::kMinSpan, ogive::kMaxSpan}) {
+    CHECK_NOTHROW(ogive::fuzz::check_curve(*ogive::make_pointed(span, 100)));
+    CHECK_NOTHROW(ogive::fuzz::check_curve(*ogive::make_catenary(span, 2)));
+    CHECK_NOTHROW(ogive::fuzz::check_curve(*ogive::make_elliptical(span, 1e-6)));
+  }
+}

@@ -17,6 +17,12 @@
 
 namespace ogive {
 
+// The spans every generator curve accepts, m (from a model's millimetre to a kilometre-scale arch).
+// Bounded so that lengths, curvatures and the first moment (~ span^2) of any curve stay far inside the
+// range of a double: fuzzing found spans near 1e308 or 1e-320 giving nan and inf geometry.
+inline constexpr double kMinSpan = 1e-3;
+inline constexpr double kMaxSpan = 1e6;
+
 // One point of the axis with its tangent angle and curvature.
 struct CurvePoint {
   double x = 0;      // m, horizontal, from the left springing towards the crown
@@ -81,7 +87,8 @@ CurvePoint point_on_arc(const CircularArc& arc, double ds);
 
 // The pointed (two-centred) arch of MODEL.md: radius R = (0.5 + eccentricity) * span, centre on the
 // springing line at eccentricity * span beyond mid-span; eccentricity 0 is the semicircle.
-// Throws std::invalid_argument naming `span` or `eccentricity` for a value outside its domain.
+// Throws std::invalid_argument naming `span` (in [kMinSpan, kMaxSpan]) or `eccentricity` for a value outside
+// its domain.
 std::shared_ptr<const Curve> make_pointed(double span, double eccentricity);
 
 }  // namespace ogive

@@ -1,9 +1,9 @@
 // The classic arch families of MODEL.md ("Generator curves") and the user's surveyed points, as Curves.
 //
-// Every factory takes the span L (m) and the rise as a ratio rise_ratio = h / L, and returns the LEFT half
-// of a symmetric arch (see curve.hpp). Invalid parameters throw std::invalid_argument whose message is
-// "<name>: <rule>, got <value>", <name> being the parameter as the CLI spells it without dashes
-// (span, rise_ratio, haunch_angle, crown_angle), e.g.
+// Every factory takes the span L (m, in [kMinSpan, kMaxSpan] of curve.hpp) and the rise as a ratio
+// rise_ratio = h / L, and returns the LEFT half of a symmetric arch (see curve.hpp). Invalid parameters
+// throw std::invalid_argument whose message is "<name>: <rule>, got <value>", <name> being the parameter
+// as the CLI spells it without dashes (span, rise_ratio, haunch_angle, crown_angle), e.g.
 //   "rise_ratio: must lie in (0, 0.5) for a segmental arch, got 0.7".
 //
 // Piecewise-circular families (segmental, three-centred, four-centred) are PiecewiseCircularCurves, so
@@ -66,7 +66,8 @@ std::pair<double, double> three_centred_rise_range(double haunch_angle_deg);
 std::pair<double, double> four_centred_rise_range(double haunch_angle_deg, double crown_angle_deg);
 
 // ---------------------------------------------------------------------------------------------------
-// Smooth families: rise_ratio in (0, 2] for each (an upper limit of practice, not of the mathematics).
+// Smooth families: rise_ratio in [1e-6, 2] for each (limits of practice; below 1e-6 the formulas would
+// also leave the range of a double).
 
 // Half-ellipse with semi-axes L/2 (horizontal) and h: x = L/2 (1 - cos t), y = h sin t, t in [0, pi/2].
 // rise_ratio 0.5 is the semicircle, computed by the same general path (not special-cased to a circular
