@@ -317,6 +317,10 @@ void ParametricCurve::build_arc_length(const std::vector<double>& knots, int ini
     int depth;
   };
   std::vector<Panel> stack;
+  // Panels examined (accepted or split), over all pieces.
+  std::size_t panels = 0;
+  const std::size_t budget =
+      kPanelBudgetBase + kPanelBudgetPerPanel * (knots.size() - 1) * static_cast<std::size_t>(initial_panels);
   for (std::size_t k = 0; k + 1 < knots.size(); ++k) {
     // Panels of this piece, left to right: a stack popped from the left end.
     for (int p = initial_panels - 1; p >= 0; --p) {
@@ -326,6 +330,14 @@ void ParametricCurve::build_arc_length(const std::vector<double>& knots, int ini
       stack.push_back({a, b, integral_of_speed(a, b, k), 0});
     }
     while (!stack.empty()) {
+      // Found by fuzzing: a points fit that nearly stops at its crown made this loop split panels down
+      // to 1e-13 of the range -- billions of them (minutes) -- because round-off in the speed kept the
+      // halves from agreeing. Smooth pieces need few panels (a points fit's pieces one, an ellipse about
+      // 40, a sharp but sound turn a few hundred), so past a budget the curve is refused instead.
+      if (++panels > budget)
+        throw ArcLengthError(k, fmt::format("curve: the arc length between t = {} and {} does not converge: the "
+                                            "speed nearly vanishes there (a cusp)",
+                                            knots[k], knots[k + 1]));
       const Panel panel = stack.back();
       stack.pop_back();
       const double mid = 0.5 * (panel.a + panel.b);

@@ -77,17 +77,36 @@ std::vector<double> spline_moments(const std::vector<double>& tau, const std::ve
   return M;
 }
 
+// Reports a broken rule at a point (its index); must throw.
+using Report = std::function<void(std::size_t, const std::string&)>;
+
 class PointsCurve final : public ParametricCurve {
  public:
-  // x, y: translated so that the springing is (0, 0); x strictly increasing; at least 4 points.
-  PointsCurve(std::vector<double> x, std::vector<double> y) : x_(std::move(x)), y_(std::move(y)) {
+  // x, y: translated so that the springing is (0, 0); x strictly increasing; at least 4 points; each point
+  // at least 1e-9 span from the previous one. A fit that is no arch goes to report (see the header).
+  PointsCurve(std::vector<double> x, std::vector<double> y, const Report& report)
+      : x_(std::move(x)), y_(std::move(y)) {
     const std::size_t n = x_.size();
     tau_.assign(n, 0.0);
     for (std::size_t i = 1; i < n; ++i) tau_[i] = tau_[i - 1] + std::hypot(x_[i] - x_[i - 1], y_[i] - y_[i - 1]);
     mx_ = spline_moments(tau_, x_, true);
     my_ = spline_moments(tau_, y_, false);
     span_ = 2 * x_.back();
-    build_arc_length(tau_, 1);
+    // Found by fuzzing: a steep last step before the crown, whose tangent the fit makes horizontal, can
+    // make the spline stop or turn back just before the crown (theta = pi there, curvature ~1e5 / L), and
+    // tabulating its arc length then took minutes. dx/dtau at the crown is about 1 for a sound fit.
+    double value = 0, crown_speed = 0, second = 0;
+    eval(x_, mx_, n - 2, tau_[n - 1] - tau_[n - 2], 0.0, 1.0, value, crown_speed, second);
+    if (!(crown_speed >= 1e-3))
+      report(n - 1, fmt::format("the spline through the points stops or turns back at the crown (dx/dtau = {:.3g} "
+                                "there, about 1 for a smooth arch): the points are too uneven near the crown",
+                                crown_speed));
+    try {
+      build_arc_length(tau_, 1);
+    } catch (const ArcLengthError& e) {
+      report(e.piece + 1, "the spline through the points nearly stops (a cusp) between this point and the previous "
+                          "one: the points are too uneven there for a smooth fit");
+    }
   }
   std::string family() const override { return "points"; }
   double span() const override { return span_; }
@@ -121,11 +140,14 @@ class PointsCurve final : public ParametricCurve {
 };
 
 // Checks the points' rules in order; report(index, rule) must throw. Returns the fitted curve.
-using Report = std::function<void(std::size_t, const std::string&)>;
-
 std::shared_ptr<const Curve> fit_points(const std::vector<std::pair<double, double>>& xy, const Report& report) {
   const std::size_t n = xy.size();
   const double span_estimate = 2 * std::abs(xy.back().first - xy.front().first);
+  // Found by fuzzing: coordinates near 1e300 overflowed the spline (nan geometry), points 1e-300 apart
+  // gave it zero-length pieces. The span bounds the coordinates and the spacing below.
+  if (xy.back().first > xy.front().first && !(span_estimate >= kMinSpan && span_estimate <= kMaxSpan))
+    report(n - 1, fmt::format("the span 2 (x_crown - x_springing) must lie in [{}, {}] m, got {}", kMinSpan, kMaxSpan,
+                              span_estimate));
   const double y0 = xy.front().second;
   if (!(std::abs(y0) <= 1e-9 * span_estimate))
     report(0, fmt::format("the first point is the springing and must lie on the springing line y = 0 "
@@ -141,14 +163,20 @@ std::shared_ptr<const Curve> fit_points(const std::vector<std::pair<double, doub
     if (y < py)
       report(i, fmt::format("y must not fall from springing to crown ({} after {}): the crown is the highest point",
                             y, py));
+    if (!(std::hypot(x - px, y - py) >= 1e-9 * span_estimate))
+      report(i, fmt::format("the point lies {} m from the previous one, less than 1e-9 of the span",
+                            std::hypot(x - px, y - py)));
   }
+  if (!(xy.back().second <= 100 * span_estimate))
+    report(n - 1, fmt::format("the rise (the crown's y) must be at most 100 spans, got {} for a span of {}",
+                              xy.back().second, span_estimate));
   std::vector<double> x(n), y(n);
   for (std::size_t i = 0; i < n; ++i) {
     x[i] = xy[i].first - xy.front().first;
     y[i] = xy[i].second;
   }
   y[0] = 0;
-  return std::make_shared<PointsCurve>(std::move(x), std::move(y));
+  return std::make_shared<PointsCurve>(std::move(x), std::move(y), report);
 }
 
 // ---------------------------------------------------------------------------------------------------

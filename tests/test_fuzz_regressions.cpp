@@ -55,6 +55,18 @@ void check_refused(const std::vector<std::string>& args, const std::string& what
   CHECK_MESSAGE(r.err.find(what) != std::string::npos, r.err);
 }
 
+// The CurveFileError that a points file gives.
+ogive::CurveFileError file_error(const std::string& text) {
+  std::istringstream in(text);
+  try {
+    ogive::parse_points_curve(in, "f.csv");
+  } catch (const ogive::CurveFileError& e) {
+    return e;
+  }
+  FAIL("the file was accepted");
+  return {"", 0, ""};
+}
+
 }  // namespace
 
 TEST_CASE("fuzz corpus: every parse_values seed passes the fuzz target's checks") {
@@ -142,4 +154,41 @@ TEST_CASE("fuzz found: spans near the ends of the double range gave inf and nan 
     CHECK_NOTHROW(ogive::fuzz::check_curve(*ogive::make_catenary(span, 2)));
     CHECK_NOTHROW(ogive::fuzz::check_curve(*ogive::make_elliptical(span, 1e-6)));
   }
+}
+
+TEST_CASE("fuzz found: points files with coordinates near 1e300 gave a nan curve") {
+  // The spline's h^2 overflowed.
+  const auto rise = file_error("x,y\n0,0\n1,2\n2,3\n4,3.5\n5,1e300 \n");
+  CHECK(rise.line() == 6);
+  CHECK(rise.rule() == "the rise (the crown's y) must be at most 100 spans, got 1e+300 for a span of 10");
+  const auto span = file_error("X,y\n-1e308,0\n0.1282018218,0.253102\n2.4,4.3122\n2.43575,5\n");
+  CHECK(span.line() == 5);
+  CHECK(span.rule() == "the span 2 (x_crown - x_springing) must lie in [0.001, 1000000] m, got inf");
+  // Points 1e-300 apart made zero-length pieces.
+  const auto close = file_error("x,y\n0,0\n1,1\n1.0000000000000002,1\n2,1.5\n3,1.7\n");
+  CHECK(close.line() == 4);
+  CHECK(close.rule().find("less than 1e-9 of the span") != std::string::npos);
+}
+
+TEST_CASE("fuzz found: a points fit that stops at its crown took minutes to tabulate") {
+  // 4 points, a steep last step before the crown whose tangent the fit makes horizontal: the spline
+  // turned back (dx/dtau < 0) or nearly stopped at the crown, and the adaptive arc-length table split
+  // panels down to 1e-13 of the range. Now each is refused, at once, naming the crown's line.
+  const auto back = file_error("x, y\n0.05, 0.000\n0.200,1\n1.75, 1.105\n2.02, 2.309\n");
+  CHECK(back.line() == 5);
+  CHECK(back.rule().find("stops or turns back at the crown") != std::string::npos);
+  const auto cusp = file_error("X,y\n0,0\n0.12820512820518219,0.532212\n2.4,4.3122\n2.43575,5\n");
+  CHECK(cusp.line() == 5);
+  CHECK(cusp.rule().find("nearly stops (a cusp)") != std::string::npos);
+  // A sound sharp turn still fits: a pointed arch of eccentricity 10 (rise 3.2 L) sampled at 100 points,
+  // whose kink at the crown the fit rounds off within the last piece (a few hundred panels).
+  const auto pointed = ogive::make_pointed(10, 10);
+  std::vector<std::pair<double, double>> xy;
+  for (int i = 0; i < 100; ++i) {
+    const ogive::CurvePoint p = pointed->at(pointed->half_length() * i / 99);
+    xy.emplace_back(p.x, i == 0 ? 0.0 : p.y);
+  }
+  const auto fitted = ogive::make_points_curve(xy);
+  CHECK_NOTHROW(ogive::fuzz::check_curve(*fitted));
+  CHECK(ogive::close(fitted->rise(), pointed->rise(), 1e-12));
 }

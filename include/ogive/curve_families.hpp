@@ -113,8 +113,17 @@ class ParametricCurve : public Curve {
   // extrapolating beyond the ends).
   virtual Jet jet(double t, std::size_t piece) const = 0;
   // knots: strictly increasing, first = the springing's t, last = the crown's t; at least two.
-  // initial_panels: panels per piece before adaptive refinement.
+  // initial_panels: panels per piece before adaptive refinement. Throws ArcLengthError (naming the
+  // piece reached) when the panels examined exceed kPanelBudgetBase + kPanelBudgetPerPanel x the initial
+  // panels: the speed nearly vanishes somewhere (a cusp), where round-off in the speed keeps a panel and
+  // its halves from agreeing at any size. The work stays linear in the number of knots.
   void build_arc_length(const std::vector<double>& knots, int initial_panels = 1);
+  static constexpr std::size_t kPanelBudgetBase = 4096;
+  static constexpr std::size_t kPanelBudgetPerPanel = 64;
+  struct ArcLengthError : std::invalid_argument {
+    ArcLengthError(std::size_t piece, const std::string& what) : std::invalid_argument(what), piece(piece) {}
+    std::size_t piece;  // the knot interval
+  };
   // The arc length at a parameter value that is a knot given to build_arc_length (exact table entry).
   double arc_length_at_knot(double t) const;
 
@@ -141,12 +150,22 @@ class ParametricCurve : public Curve {
 //   - at most 4096 characters a line (without the line end), at least 4 and at most 100000 points.
 // Errors name the physical line (the header is line 1); syntax is checked while reading, then the rules
 // below, so a syntax error anywhere is reported before a broken rule. An empty file is reported at line
-// 1, too few points at the last point's line. Rules for the points (in file order):
+// 1, too few points at the last point's line. Rules for the points (in file order, after the span):
+//   - span = 2 (x_last - x_first), the last point being the crown, lies in [kMinSpan, kMaxSpan] of
+//     curve.hpp (checked first, at the last point's line, when x_last > x_first: the rules below are
+//     measured against it);
 //   - the first point is the springing: |y| <= 1e-9 * span (it is then set to exactly 0), x is shifted so
-//     that the springing is at x = 0; span = 2 (x_last - x_first): the last point is the crown;
+//     that the springing is at x = 0;
 //   - no point repeats its predecessor; x strictly increases; every point after the springing lies above
 //     the springing line (y > 0); y never falls from springing to crown (so the crown is the highest point
-//     and the arch cannot double back).
+//     and the arch cannot double back); each point lies at least 1e-9 span from its predecessor (closer,
+//     the fit's chord-length parameter cannot tell them apart);
+//   - the rise (the crown's y) is at most 100 spans, far beyond any arch (the pointed family's tallest,
+//     eccentricity 100, rises 10 spans), which bounds the coordinates (at the last point's line).
+// The fitted spline (below) must then be an arch too, or the error names the point that ends the bad
+// piece: it reaches the crown moving towards mid-span (uneven points, e.g. a steep last step before the
+// horizontal crown, can make it stop or turn back there: dx/dtau at the crown must be >= 1e-3), and its
+// arc length converges on every piece (it does not when the spline nearly stops: a cusp).
 // The fit: a parametric cubic spline x(tau), y(tau) in cumulative chord length tau (so a vertical
 // springing tangent is fine), through the points AND their mirror images about the crown, with
 // not-a-knot end conditions at both springings. By symmetry that spline has y'(crown) = 0 (horizontal
