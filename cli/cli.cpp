@@ -255,28 +255,21 @@ struct SolverText {
 
 // CLI11 would read "" as 0 and saturate huge integers; numeric options must be what parse_number
 // accepts (the whole text, finite), and counts whole numbers within what an int holds.
-const CLI::Validator kFiniteNumber(
-    [](std::string& text) -> std::string {
-      try {
-        parse_number(text, "");
-      } catch (const UsageError&) {
-        return "'" + text.substr(0, 60) + "' is not a finite number";
-      }
-      return {};
-    },
-    "NUMBER");
-const CLI::Validator kCount(
-    [](std::string& text) -> std::string {
-      double v = 0;
-      try {
-        v = parse_number(text, "");
-      } catch (const UsageError&) {
-        return "'" + text.substr(0, 60) + "' is not a number";
-      }
-      if (v != std::floor(v) || std::abs(v) > 1e9) return "'" + text.substr(0, 60) + "' is not a whole number up to 1e9";
-      return {};
-    },
-    "COUNT");
+// What is wrong with an option's text as a number (empty if nothing): not what parse_number accepts,
+// or, for counts, not a whole number up to 1e9.
+std::string number_problem(const std::string& text, bool count) {
+  double v = 0;
+  try {
+    v = parse_number(text, "");
+  } catch (const UsageError&) {
+    return "'" + text.substr(0, 60) + "' is not a finite number";
+  }
+  if (count && (v != std::floor(v) || std::abs(v) > 1e9))
+    return "'" + text.substr(0, 60) + "' is not a whole number up to 1e9";
+  return {};
+}
+const CLI::Validator kFiniteNumber([](std::string& text) { return number_problem(text, false); }, "NUMBER");
+const CLI::Validator kCount([](std::string& text) { return number_problem(text, true); }, "COUNT");
 
 // bench takes lists of methods and integrators instead (--methods, --integrators).
 void add_solver_options(CLI::App& cmd, Options& o, SolverText& text, bool with_method = true,

@@ -17,6 +17,10 @@ struct BvpSolution {
 // Solves at_springing y0 + at_crown (Phi y0 + p) = rhs for y0, where y(S) = Phi y(0) + p.
 BvpSolution solve_single_segment(const ArchModel& model, const SystemMatrix& Phi, const StateVector& p);
 
+// Status success, or ill_conditioned (with its message) when the condition estimate times round-off
+// exceeds rtol: the one place that judges whether conditioning lets a solution meet rtol.
+void judge_conditioning(Solution& sol, double rtol);
+
 // Fills reactions, residuals, condition estimate and status (success, or singular_system /
 // ill_conditioned when the condition estimate says the asked rtol cannot be trusted).
 void finish_solution(Solution& sol, const BvpSolution& bvp, std::shared_ptr<const StateField> field,
