@@ -52,26 +52,37 @@ Transfer arc_transfer(const ArchModel& model, const CircularArc& arc, double ds0
   return t;
 }
 
-// The closed form's field: exact state anywhere, from the springing state.
+// The closed form's field: exact state anywhere. Each station is reached from the start of its own arc
+// (whose state is chained once, arc by arc, from the springing), so a station's state does not depend
+// on how many other stations are asked for: chaining station to station would accumulate round-off
+// (the crown moment moved by 1.6e-10 between 3 and 999 999 stations).
 class ClosedFormField final : public StateField {
  public:
-  ClosedFormField(std::shared_ptr<const ArchModel> model, const StateVector& y0)
-      : model_(std::move(model)), y0_(y0) {}
-  void sample(std::span<const double> s, std::span<StateVector> out) const override {
-    // Walk forwards: each station continues from the previous one, so each costs one short exponential.
-    double s_prev = 0.0;
-    StateVector y = y0_;
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      const Transfer t = closed_form_transfer(*model_, s_prev, s[i]);
+  ClosedFormField(std::shared_ptr<const ArchModel> model, const StateVector& y0) : model_(std::move(model)) {
+    const double L = model_->scales().length;
+    StateVector y = y0;
+    for (const CircularArc& arc : model_->scene().curve->arcs()) {
+      const double a0 = arc.s_start / L, a1 = (arc.s_start + arc.length) / L;
+      arc_starts_.push_back(a0);
+      start_states_.push_back(y);
+      const Transfer t = closed_form_transfer(*model_, a0, a1);
       y = t.Phi * y + t.p;
-      s_prev = s[i];
-      out[i] = y;
+    }
+  }
+  void sample(std::span<const double> s, std::span<StateVector> out) const override {
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      // The arc that holds s: the last one starting at or before it.
+      const auto it = std::upper_bound(arc_starts_.begin() + 1, arc_starts_.end(), s[i]);
+      const std::size_t k = static_cast<std::size_t>(it - arc_starts_.begin()) - 1;
+      const Transfer t = closed_form_transfer(*model_, arc_starts_[k], s[i]);
+      out[i] = t.Phi * start_states_[k] + t.p;
     }
   }
 
  private:
   std::shared_ptr<const ArchModel> model_;
-  StateVector y0_;
+  std::vector<double> arc_starts_;         // scaled arc length where each arc starts
+  std::vector<StateVector> start_states_;  // the state there
 };
 
 }  // namespace
@@ -90,7 +101,7 @@ Transfer closed_form_transfer(const ArchModel& model, double s0, double s1) {
   return total;
 }
 
-Solution solve_closed_form(std::shared_ptr<const ArchModel> model, const Options& options) {
+Solution solve_closed_form(std::shared_ptr<const ArchModel> model, const Options& /*options: nothing to set*/) {
   Solution sol;
   sol.method = Method::closed_form;
   sol.model = model;
@@ -103,7 +114,7 @@ Solution solve_closed_form(std::shared_ptr<const ArchModel> model, const Options
   const Transfer t = closed_form_transfer(*model, 0.0, model->half_length());
   const BvpSolution bvp = solve_single_segment(*model, t.Phi, t.p);
   sol.diagnostics.segments = static_cast<int>(model->scene().curve->arcs().size());
-  finish_solution(sol, bvp, std::make_shared<ClosedFormField>(model, bvp.y0), options.rtol);
+  finish_solution(sol, bvp, std::make_shared<ClosedFormField>(model, bvp.y0));
   return sol;
 }
 

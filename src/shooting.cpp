@@ -14,20 +14,6 @@
 namespace ogive {
 namespace {
 
-// Options::rtol is the accuracy asked of the result; CVODE controls only the local error of each step,
-// and the global error of the fundamental matrix grows with the number of steps and is amplified by
-// the boundary-value system's condition (about 10^2). So CVODE runs tighter than asked: measured over
-// eccentricity 0..2, t/L 0.06..0.2, d/L 0..3e-4 and rtol 1e-4..1e-11 (tests/test_shooting.cpp), these
-// factors keep the true error of H/V below rtol with a margin. BDF (order <= 5) takes ~4x more steps
-// than Adams (order <= 12) at the same tolerance and accumulates more error.
-double integrator_rtol(const Options& o) {
-  const double factor = o.integrator == Integrator::adams ? 0.1 : 0.01;
-  return std::max(o.rtol * factor, 1e-15);
-}
-// The scaled state is of order one; components that pass through zero would otherwise be held to an
-// absolute error of order rtol, which the measured errors showed to dominate. Hence a low floor.
-double absolute_tolerance(const Options& o) { return o.atol > 0 ? o.atol : integrator_rtol(o) * 1e-6; }
-
 std::string failure_message(const IntegrationError& e, const ArchModel& model, std::size_t segment,
                             std::size_t segments) {
   std::string text = fmt::format("CVODE {} at s = {:.6g} m (shooting segment {} of {})", e.flag_name,
@@ -45,8 +31,9 @@ class ShootingField final : public StateField {
       : model_(std::move(model)), options_(options), knots_(std::move(knots)), starts_(std::move(starts)) {}
 
   void sample(std::span<const double> s, std::span<StateVector> out) const override {
-    CvodeIntegrator integrator(*model_, options_.integrator, integrator_rtol(options_), absolute_tolerance(options_),
-                               options_.max_steps, 1, options_.restart_at_breakpoints);
+    const CvodeTolerances tol = cvode_tolerances(options_);
+    CvodeIntegrator integrator(*model_, options_.integrator, tol.rtol, tol.atol, options_.max_steps, 1,
+                               options_.restart_at_breakpoints);
     std::size_t i = 0;
     for (std::size_t k = 0; k < starts_.size() && i < s.size(); ++k) {
       const bool last = k + 1 == starts_.size();
@@ -69,25 +56,17 @@ class ShootingField final : public StateField {
   std::vector<StateVector> starts_;
 };
 
-// Hager's estimate of ||Q^-1||_1 from solves with Q and Q^T (Higham, Accuracy and Stability, 15.3).
-template <class Lu>
-double inverse_norm1_estimate(Lu& lu, Eigen::Index n) {
-  Eigen::VectorXd x = Eigen::VectorXd::Constant(n, 1.0 / static_cast<double>(n));
-  double estimate = 0;
-  for (int iter = 0; iter < 5; ++iter) {
-    const Eigen::VectorXd y = lu.solve(x);
-    estimate = y.lpNorm<1>();
-    const Eigen::VectorXd xi = y.unaryExpr([](double v) { return v >= 0 ? 1.0 : -1.0; });
-    const Eigen::VectorXd z = lu.transpose().solve(xi);
-    Eigen::Index j = 0;
-    if (z.cwiseAbs().maxCoeff(&j) <= z.dot(x)) break;
-    x.setZero();
-    x(j) = 1.0;
-  }
-  return estimate;
-}
-
 }  // namespace
+
+CvodeTolerances cvode_tolerances(const Options& o) {
+  const double factor = o.integrator == Integrator::adams ? 0.1 : 0.01;
+  CvodeTolerances t;
+  t.rtol = std::max(o.rtol * factor, kCvodeRtolFloor);
+  // The scaled state is of order one; components that pass through zero would otherwise be held to an
+  // absolute error of order rtol, which the measured errors showed to dominate. Hence a low floor.
+  t.atol = o.atol > 0 ? o.atol : t.rtol * 1e-6;
+  return t;
+}
 
 std::vector<double> shooting_knots(const ArchModel& model, int segments, bool at_breakpoints) {
   const double S = model.half_length();
@@ -112,8 +91,9 @@ Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& o
   const std::size_t K = knots.size() - 1;
   sol.diagnostics.segments = static_cast<int>(K);
 
-  CvodeIntegrator integrator(*model, options.integrator, integrator_rtol(options), absolute_tolerance(options),
-                             options.max_steps, kStateSize + 1, options.restart_at_breakpoints);
+  const CvodeTolerances tol = cvode_tolerances(options);
+  CvodeIntegrator integrator(*model, options.integrator, tol.rtol, tol.atol, options.max_steps, kStateSize + 1,
+                             options.restart_at_breakpoints);
   CvodeIntegrator::Matrix Y0 = CvodeIntegrator::Matrix::Zero(kStateSize, kStateSize + 1);
   Y0.leftCols<kStateSize>().setIdentity();
   std::vector<SystemMatrix> Phi(K);
@@ -140,8 +120,7 @@ Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& o
 
   if (K == 1) {
     const BvpSolution bvp = solve_single_segment(*model, Phi[0], p[0]);
-    finish_solution(sol, bvp, std::make_shared<ShootingField>(model, options, knots, std::vector{bvp.y0}),
-                    options.rtol);
+    finish_solution(sol, bvp, std::make_shared<ShootingField>(model, options, knots, std::vector{bvp.y0}));
     return sol;
   }
 
@@ -183,14 +162,17 @@ Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& o
   if (lu.info() == Eigen::Success) {
     const Eigen::VectorXd z = lu.solve(rhs);
     for (std::size_t k = 0; k < K; ++k) starts[k] = z.segment<kStateSize>(kStateSize * static_cast<Eigen::Index>(k));
-    double norm1 = 0;  // ||Q||_1: the largest column sum
-    for (Eigen::Index j = 0; j < n; ++j) norm1 = std::max(norm1, Q.col(j).cwiseAbs().sum());
-    bvp.rcond = 1.0 / (norm1 * inverse_norm1_estimate(lu, n));
     bvp.y0 = starts.front();
     bvp.yS = Phi[K - 1] * starts.back() + p[K - 1];
+    // The condition of the boundary-value problem, not of this discretisation of it: the sparse
+    // system's own condition grows with the number of segments (its identity blocks), while its
+    // solution's accuracy does not. So the segments' transfers are condensed into Phi(S) and judged
+    // by the same function as single shooting and the closed form.
+    SystemMatrix whole = Phi[0];
+    for (std::size_t k = 1; k < K; ++k) whole = Phi[k] * whole;
+    bvp.condition = boundary_value_condition(*model, whole);
   }
-  finish_solution(sol, bvp, std::make_shared<ShootingField>(model, options, knots, std::move(starts)),
-                  options.rtol);
+  finish_solution(sol, bvp, std::make_shared<ShootingField>(model, options, knots, std::move(starts)));
   return sol;
 }
 

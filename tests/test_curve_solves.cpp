@@ -43,7 +43,10 @@ TEST_CASE("curve solves: the catenary tends to its funicular H/V = 1/sinh(L/2a) 
   const double funicular = 1.0 / std::sinh(L / (2.0 * catenary_parameter(L, rise)));
   double previous_gap = 1.0, previous_e = 0.0, previous_t = 0.0;
   for (double t : {0.08, 0.02, 0.005, 0.001}) {
-    const Solution sol = run(make_catenary(L, rise), t, Method::automatic, 1e-10, 201);
+    // rtol 1e-8: the profile's error is measured in kern units (solve.hpp), and on a thin funicular arch
+    // the eccentricity amplifies every error of the forces by about L / t, so that CVODE's accuracy
+    // (its floor near 1e-13 relative) meets only about 1e-9 of the kern at t/L = 0.001.
+    const Solution sol = run(make_catenary(L, rise), t, Method::automatic, 1e-8, 201);
     REQUIRE(sol.ok());
     const double gap = relative_difference(sol.H_over_V, funicular);
     const double e = max_abs_e(sol);
@@ -78,7 +81,7 @@ TEST_CASE("curve solves: three- and four-centred arches give the same H/V in clo
           CAPTURE(to_string(m));
           CAPTURE(rtol);
           REQUIRE(sol.ok());
-          CHECK(relative_difference(sol.H_over_V, ref.H_over_V) <= 10 * rtol);
+          CHECK(within_tolerance(thrust_error(sol.H_over_V, ref.H_over_V), rtol));
         }
   }
 }

@@ -1,6 +1,7 @@
 // Every failure mode the stability map (scripts/stability_map.py, README) found, and the proof that
 // ogive notices it: a status, never a wrong number printed as if it were right. Each test first shows
-// that the raw method (Options::verify off) really misses 10 rtol there, so that it has teeth.
+// that the raw method (Options::verify off, status `unverified`) really misses its tolerance there, so
+// that it has teeth. A verified `success` must be within_tolerance (solve.hpp): error <= rtol.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -39,7 +40,6 @@ Solution run(const Scene& scene, Method m, Integrator integ, double rtol, bool v
 Solution reference(const Scene& scene) {
   Options o;
   o.stations = kStations;
-  o.verify = false;
   if (!scene.curve->arcs().empty()) {
     o.method = Method::closed_form;
   } else {
@@ -52,7 +52,7 @@ Solution reference(const Scene& scene) {
 
 // The true error of everything a solution prints: H/V and the profile.
 double true_error(const Solution& sol, const Solution& ref, const Scene& scene) {
-  return std::max(relative_difference(sol.H_over_V, ref.H_over_V),
+  return std::max(thrust_error(sol.H_over_V, ref.H_over_V),
                   profile_difference(sol.profile, ref.profile, scene.thickness));
 }
 
@@ -71,15 +71,24 @@ TEST_CASE("failure mode: single shooting's profile strays past 10 rtol (BDF - po
   const Scene scene = paper_scene(1.0, 0.02);
   const Solution ref = reference(scene);
   REQUIRE(ref.field);
-  const double rtol = 1e-12;
-  const Solution raw = run(scene, Method::shooting, Integrator::bdf, rtol, false);
-  REQUIRE(raw.ok());
-  CHECK(relative_difference(raw.H_over_V, ref.H_over_V) <= 10 * rtol);  // H/V itself is fine
-  CHECK(true_error(raw, ref, scene) > 10 * rtol);                        // the profile is not
-  const Solution verified = run(scene, Method::shooting, Integrator::bdf, rtol, true);
-  CHECK(verified.status == Status::tolerance_not_met);
-  CHECK(verified.diagnostics.error_estimate > 10 * rtol);
-  CHECK(verified.message.find("estimated error") != std::string::npos);
+  for (double rtol : {1e-10, 1e-11}) {
+    CAPTURE(rtol);
+    const Solution raw = run(scene, Method::shooting, Integrator::bdf, rtol, false);
+    REQUIRE(raw.status == Status::unverified);
+    REQUIRE(raw.field);
+    CHECK(relative_difference(raw.H_over_V, ref.H_over_V) <= 10 * rtol);  // H/V itself is nearly fine
+    CHECK(true_error(raw, ref, scene) > 10 * rtol);                        // the profile is not
+    const Solution verified = run(scene, Method::shooting, Integrator::bdf, rtol, true);
+    CHECK(verified.status == Status::tolerance_not_met);
+    CHECK(verified.diagnostics.error_estimate > rtol);
+    CHECK(verified.message.find("estimated error") != std::string::npos);
+  }
+  // At rtol 1e-12 BDF runs at 1e-14, and a 16 times tighter solve would be below CVODE's floor: the
+  // row cannot be verified, and says so instead of comparing two solves clamped to the same tolerance.
+  const Solution floor = run(scene, Method::shooting, Integrator::bdf, 1e-12, true);
+  CHECK(floor.status == Status::unverified);
+  CHECK(floor.message.find("floor") != std::string::npos);
+  CHECK(std::isnan(floor.diagnostics.error_estimate));
 }
 
 TEST_CASE("failure mode: steps across jumps of curvature - H/V off by up to 37 rtol - flagged - restarts cure it") {
@@ -88,14 +97,14 @@ TEST_CASE("failure mode: steps across jumps of curvature - H/V off by up to 37 r
   REQUIRE(ref.field);
   const double rtol = 1e-12;
   const Solution raw = run(scene, Method::shooting, Integrator::adams, rtol, false, false);
-  REQUIRE(raw.ok());
+  REQUIRE(raw.status == Status::unverified);
   CHECK(relative_difference(raw.H_over_V, ref.H_over_V) > 10 * rtol);
   const Solution verified = run(scene, Method::shooting, Integrator::adams, rtol, true, false);
   CHECK(verified.status == Status::tolerance_not_met);
   // With restarts at the breakpoints (the default) the same solve meets its tolerance.
   const Solution restarted = run(scene, Method::shooting, Integrator::adams, rtol, true);
   REQUIRE(restarted.ok());
-  CHECK(true_error(restarted, ref, scene) <= 10 * rtol);
+  CHECK(within_tolerance(true_error(restarted, ref, scene), rtol));
 }
 
 TEST_CASE("failure mode: a rough survey - single shooting's profile at 67 rtol - flagged - auto adds segments") {
@@ -104,15 +113,15 @@ TEST_CASE("failure mode: a rough survey - single shooting's profile at 67 rtol -
   REQUIRE(ref.field);
   const double rtol = 1e-10;
   const Solution raw = run(scene, Method::shooting, Integrator::adams, rtol, false);
-  REQUIRE(raw.ok());
+  REQUIRE(raw.status == Status::unverified);
   CHECK(true_error(raw, ref, scene) > 10 * rtol);
   const Solution verified = run(scene, Method::shooting, Integrator::adams, rtol, true);
   CHECK(verified.status == Status::tolerance_not_met);
   const Solution chosen = run(scene, Method::automatic, Integrator::adams, rtol, true);
   REQUIRE(chosen.ok());
   CHECK(chosen.method == Method::multiple_shooting);
-  CHECK(chosen.diagnostics.error_estimate <= 10 * rtol);
-  CHECK(true_error(chosen, ref, scene) <= 10 * rtol);
+  CHECK(within_tolerance(chosen.diagnostics.error_estimate, rtol));
+  CHECK(within_tolerance(true_error(chosen, ref, scene), rtol));
 }
 
 TEST_CASE("failure mode: flat segmental arches are ill-conditioned at tight rtol - flagged - and right at moderate rtol") {
@@ -127,25 +136,25 @@ TEST_CASE("failure mode: flat segmental arches are ill-conditioned at tight rtol
     const Solution moderate = run(scene, m, Integrator::adams, 1e-8, true);
     CAPTURE(to_string(m));
     REQUIRE(moderate.ok());
-    CHECK(true_error(moderate, ref, scene) <= 10 * 1e-8);
+    CHECK(within_tolerance(true_error(moderate, ref, scene), 1e-8));
   }
 }
 
-TEST_CASE("the closed form's own exponentials do not fail at the map's extremes - CVODE agrees to 10 rtol") {
+TEST_CASE("the closed form's own exponentials do not fail at the map's extremes - verified CVODE agrees to rtol") {
   const double rtol = 1e-11;
   const std::vector<Scene> scenes = {paper_scene(0.0, 1e-5), paper_scene(5.0), paper_scene(1.0, 1e-5),
                                      scene_of(make_four_centred(10.0, 0.5)), paper_scene(0.0, 0.2)};
   for (const Scene& scene : scenes) {
     const Solution exact = reference(scene);
-    const Solution cvode = run(scene, Method::multiple_shooting, Integrator::adams, rtol, false);
+    const Solution cvode = run(scene, Method::multiple_shooting, Integrator::adams, rtol, true);
     REQUIRE(exact.ok());
     REQUIRE(cvode.ok());
-    CHECK(relative_difference(exact.H_over_V, cvode.H_over_V) <= 10 * rtol);
-    CHECK(profile_difference(exact.profile, cvode.profile, scene.thickness) <= 10 * rtol);
+    CHECK(within_tolerance(thrust_error(cvode.H_over_V, exact.H_over_V), rtol));
+    CHECK(within_tolerance(profile_difference(cvode.profile, exact.profile, scene.thickness), rtol));
   }
 }
 
-TEST_CASE("verification: over corners of the map every verified success is within 10 rtol of the truth") {
+TEST_CASE("verification: over corners of the map every verified success is within rtol of the truth") {
   const std::vector<Scene> scenes = {paper_scene(0.5), paper_scene(3.0, 0.02), scene_of(make_three_centred(10.0, 0.25)),
                                      scene_of(make_four_centred(10.0, 0.5)), scene_of(read_points_curve(kSurvey))};
   int successes = 0, flagged = 0;
@@ -162,8 +171,8 @@ TEST_CASE("verification: over corners of the map every verified success is withi
           CAPTURE(rtol);
           if (sol.ok()) {
             ++successes;
-            CHECK(true_error(sol, ref, scene) <= 10 * rtol);
-            CHECK(sol.diagnostics.error_estimate <= 10 * rtol);
+            CHECK(within_tolerance(true_error(sol, ref, scene), rtol));
+            CHECK(within_tolerance(sol.diagnostics.error_estimate, rtol));
           } else {
             ++flagged;
             CHECK(!sol.message.empty());

@@ -30,6 +30,12 @@ Solution run(const Scene& scene, Method m, Integrator i = Integrator::adams, dou
   return solve(scene, o);
 }
 
+// A raw solve's status: the closed form's is a guarantee (success), CVODE's without verification is
+// `unverified`, never success; either way the numbers are there.
+bool solved_raw(const Solution& sol) {
+  return sol.field && sol.status == (sol.method == Method::closed_form ? Status::success : Status::unverified);
+}
+
 // The error of H/V scaled by V's own scale: H/V itself crosses zero as d grows.
 double hv_error(const Solution& a, const Solution& ref) {
   return std::abs(a.H_over_V - ref.H_over_V) / std::max(std::abs(ref.H_over_V), 0.1);
@@ -39,7 +45,9 @@ const std::vector<double> kRtols = {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1
 
 }  // namespace
 
-TEST_CASE("shooting: single and multiple shooting agree with the closed form to 10 rtol - both integrators") {
+// What the raw methods achieve with the tolerances cvode_tolerances gives CVODE: within 10 rtol. This is
+// the margin verification starts from, not the guarantee of `success` (which is rtol).
+TEST_CASE("shooting: raw single and multiple shooting agree with the closed form to 10 rtol - both integrators") {
   for (double eps : {0.0, 0.5, 1.0, 2.0})
     for (double t : {0.06, 0.2})
       for (double d : {0.0, 3e-4}) {
@@ -55,7 +63,8 @@ TEST_CASE("shooting: single and multiple shooting agree with the closed form to 
               CAPTURE(to_string(integ));
               CAPTURE(to_string(m));
               CAPTURE(rtol);
-              REQUIRE(sol.status == Status::success);
+              REQUIRE(solved_raw(sol));
+              CHECK(sol.message.find("not verified") != std::string::npos);
               CHECK(hv_error(sol, ref) <= 10 * rtol);
               CHECK(sol.diagnostics.steps > 0);
               CHECK(sol.diagnostics.rhs_evaluations >= sol.diagnostics.steps);
@@ -106,7 +115,7 @@ TEST_CASE("shooting: slender arches - t/L = 1e-3 and 1e-4 - multiple shooting ag
         CAPTURE(t);
         CAPTURE(eps);
         CAPTURE(to_string(integ));
-        REQUIRE(sol.ok());
+        REQUIRE(solved_raw(sol));
         CHECK(hv_error(sol, ref) <= 1e-7);
       }
     }
@@ -172,7 +181,7 @@ TEST_CASE("shooting: segment boundaries include the curve's breakpoints") {
   for (Method m : {Method::shooting, Method::multiple_shooting})
     for (Integrator integ : {Integrator::adams, Integrator::bdf}) {
       const Solution sol = run(scene, m, integ, 1e-9, 0, 3);
-      REQUIRE(sol.ok());
+      REQUIRE(solved_raw(sol));
       CHECK(hv_error(sol, ref) <= 1e-8);
     }
 }

@@ -15,4 +15,10 @@ inline bool close(double a, double b, double tol) {
 
 inline double relative_difference(double a, double b) { return std::abs(a - b) / std::abs(b); }
 
+// The error of H/V as ogive's status measures it (solve.hpp, Diagnostics::error_estimate): relative to
+// max(|H/V|, 1/100), because H passes through zero under support spreading.
+inline double thrust_error(double H_over_V, double reference) {
+  return std::abs(H_over_V - reference) / std::max(std::abs(reference), 0.01);
+}
+
 }  // namespace ogive

@@ -14,6 +14,19 @@
 
 namespace ogive {
 
+// The tolerances CVODE is given for Options o, with every multiplier between --rtol/--atol and CVODE
+// in this one place: rtol = max(o.rtol * f, kCvodeRtolFloor) with f = 1/10 (Adams) or 1/100 (BDF);
+// atol = o.atol if > 0, else 1e-6 of that rtol. Why: CVODE controls each step's local error; the
+// global error of a shooting solve is their accumulation amplified by the boundary-value system's
+// condition (about 10^2), and BDF (order <= 5) takes ~4x more steps than Adams (order <= 12).
+struct CvodeTolerances {
+  double rtol = 0, atol = 0;
+};
+// Below about 1e-15 CVODE cannot hold a relative tolerance in double precision (it stops with
+// CV_TOO_MUCH_ACC): its tolerance is clamped here, and a verifying solve below it is no tighter.
+inline constexpr double kCvodeRtolFloor = 1e-15;
+CvodeTolerances cvode_tolerances(const Options& o);
+
 // Segment boundaries over [0, S~]: `segments` equal pieces, plus every curve breakpoint when
 // segments > 1 and at_breakpoints (single shooting lets the integrator restart at breakpoints
 // instead). Scaled.

@@ -26,14 +26,24 @@ enum class Method {
 };
 enum class Integrator { adams, bdf };
 
+// What a solve's numbers are worth. Only `success` is a guarantee; the numbers of ill_conditioned,
+// tolerance_not_met and unverified solutions are printed (IsSolutionUsable in Ceres' words: a field
+// exists) but carry no promise.
 enum class Status {
-  success,             // every reported number meets the asked tolerance
+  success,             // every reported number is within_tolerance(error_estimate, rtol): its estimated
+                       // relative error is at most rtol, by an estimate no option switches off
   not_applicable,      // the method cannot treat this scene (closed form on a non-circular curve)
   integrator_failure,  // CVODE stopped with an error flag; the message names it and where (s in m)
   singular_system,     // the boundary-value system is singular to working precision
   ill_conditioned,     // solved, but condition * unit round-off exceeds rtol: digits may be lost
-  tolerance_not_met,   // solved, but the a-posteriori error estimate exceeds 10 * rtol
+  tolerance_not_met,   // solved, but the error estimate, or the boundary or equilibrium residual, exceeds rtol
+  unverified,          // solved by CVODE without an error estimate: Options::verify was off, or rtol lies
+                       // below what a second, 16 times tighter CVODE solve can reach (kCvodeRtolFloor)
 };
+
+// The one definition of "within tolerance", used by the status, `auto`, `check`, the stability map and
+// the tests: a relative error no larger than rtol. No factor stands between --rtol and this promise.
+inline bool within_tolerance(double relative_error, double rtol) { return relative_error <= rtol; }
 
 const char* to_string(Method m);
 const char* to_string(Integrator i);
@@ -42,16 +52,24 @@ const char* to_string(Status s);
 struct Options {
   Method method = Method::automatic;
   Integrator integrator = Integrator::adams;
-  double rtol = 1e-8;  // relative tolerance asked of the result (CVODE's rtol), in [1e-14, 1e-1]
-  double atol = 0.0;   // absolute tolerance of the scaled state; 0 means rtol * 1e-3
+  // The relative error asked of every printed number, in [1e-14, 1e-1]; `success` guarantees it. CVODE
+  // itself runs tighter (shooting.hpp, cvode_tolerances: rtol / 10 for Adams, rtol / 100 for BDF),
+  // because it controls local errors only.
+  double rtol = 1e-8;
+  // CVODE's absolute tolerance on the scaled state (order-one numbers); 0 (the default) means 1e-6 of
+  // CVODE's rtol. A larger atol loosens the first solve only: the verifying solve uses the smaller of
+  // atol and that default, divided by 16, so that no atol can make both solves agree on a wrong answer.
+  double atol = 0.0;
   int segments = 8;    // multiple shooting: segments over the half arch (>= 1; breakpoints add more)
   std::int64_t max_steps = 200000;  // CVODE step limit for one integration span
-  int stations = 0;    // profile stations over the whole arch, springing to springing (0: none, else >= 2)
+  // Profile stations over the whole arch, springing to springing (0: none, else >= 2). With a profile,
+  // its error is part of the estimate, compared at min(stations, kVerificationStations) stations.
+  int stations = 0;
   // Estimate the global error of a CVODE solve by a second solve at rtol / 16 (about 2.5x the time):
   // CVODE controls local errors only, and the stability map (README) measured unverified solves at up
-  // to 67 rtol (single shooting, a rough survey) and 37 rtol (BDF). Off, a solve is only as good as the
-  // tolerance factors measured in the tests; for benchmarks of the raw methods. Method::automatic
-  // always verifies; the closed form never needs to.
+  // to 67 rtol (single shooting, a rough survey) and 37 rtol (BDF). Off (for benchmarks of the raw
+  // methods), a CVODE solve's status is at best `unverified`, never `success`. Method::automatic always
+  // verifies; the closed form's estimate is its round-off bound and needs no second solve.
   bool verify = true;
   // Restart the integrator at every breakpoint of the curve (jumps of curvature). Off only for studies
   // of what a step across a jump costs (the stability map).
@@ -68,13 +86,19 @@ struct Diagnostics {
   std::int64_t error_test_failures = 0;  // CVODE local error test failures
   std::int64_t jacobian_evaluations = 0; // CVODE Jacobian evaluations (BDF)
   int segments = 0;                      // shooting segments used (arcs for the closed form)
-  double condition_estimate = std::numeric_limits<double>::quiet_NaN();  // 1-norm, scaled system
+  // Skeel's condition number cond(Q) = || |Q^-1| |Q| ||_inf of the 6 x 6 boundary-value matrix
+  // Q = B_springing + B_crown Phi(S) of the scaled problem (invariant to the scaling of its rows). Every
+  // method reports the condition of the same problem: multiple shooting condenses its segments'
+  // transfers into Phi(S) for this estimate, so it does not grow with the number of segments.
+  double condition_estimate = std::numeric_limits<double>::quiet_NaN();
   double boundary_residual = std::numeric_limits<double>::quiet_NaN();   // max |BC residual|, scaled
   double equilibrium_residual = std::numeric_limits<double>::quiet_NaN(); // relative to half weight
-  // A-posteriori relative error of the printed numbers (CVODE methods with Options::verify, and always
-  // under Method::automatic): the difference between a solve at rtol and one at rtol / 16, of H
-  // relative to |H| and, with a profile, profile_difference. The solution returned is the tighter one.
-  // NaN when not estimated (the closed form needs none).
+  // Estimated relative error of the printed numbers, never smaller than condition_estimate times
+  // round-off. CVODE methods (verified): the difference between a solve at rtol and one at rtol / 16, of
+  // H relative to max(|H|, V / 100) (H crosses zero under support spreading) and, with a profile,
+  // profile_difference; the tighter solution is the one returned, so its own error is smaller still
+  // whenever the second solve is at least twice as accurate as the first. The closed form: its
+  // round-off bound alone. NaN when not estimated (status unverified, or a failed solve).
   double error_estimate = std::numeric_limits<double>::quiet_NaN();
 };
 
@@ -107,8 +131,17 @@ struct Solution {
 
 Solution solve(const Scene& scene, const Options& options = {});
 
+// The profile's error is estimated at this many equally spaced stations at most (a denser profile is
+// sampled from the same verified field): the fields are smooth between them, and the estimate's cost
+// stays bounded whatever the number of printed stations.
+inline constexpr int kVerificationStations = 513;
+
 // Fills solution.profile with `stations` equally spaced states over the whole arch from its field.
 void sample_profile(Solution& solution, int stations);
+// Stations first .. first + count - 1 of `stations` equally spaced ones over the whole arch, from the
+// solution's field (empty without a field or for indices out of range): a long profile in pieces, so
+// that memory does not grow with the number of stations.
+std::vector<ArchState> sample_stations(const Solution& solution, int stations, int first, int count);
 
 // The error measure of a profile against a reference at the same stations: the largest difference of
 // the displacement (Ux, Uy) relative to the largest |U| of the reference, of psi relative to the
