@@ -37,7 +37,18 @@ CsvRow& CsvRow::add(std::int64_t value) {
 
 CsvRow& CsvRow::add(std::string_view text) {
   separate();
-  line_ += text;
+  // RFC 4180: a field with a separator, a quote or a line break is quoted, its quotes doubled. Messages
+  // carry commas ("must lie in (0, 0.5)"); every other field ogive prints is a bare word or number.
+  if (text.find_first_of(",\"\r\n") == std::string_view::npos) {
+    line_ += text;
+    return *this;
+  }
+  line_ += '"';
+  for (char c : text) {
+    if (c == '"') line_ += '"';
+    line_ += c;
+  }
+  line_ += '"';
   return *this;
 }
 

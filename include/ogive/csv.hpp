@@ -1,5 +1,5 @@
-// CSV rows for the CLI: comma-separated, no quoting needed (ogive prints no commas inside fields),
-// numbers in their shortest round-trip decimal form so that output is exact and deterministic.
+// CSV rows for the CLI: comma-separated (RFC 4180: a text field with a comma, quote or line break is
+// quoted), numbers in their shortest round-trip decimal form so that output is exact and deterministic.
 #pragma once
 
 #include <cstdint>
@@ -16,7 +16,7 @@ class CsvRow {
   CsvRow& add(double value);  // shortest round-trip; an empty field when not finite (no number)
   CsvRow& add(std::int64_t value);
   CsvRow& add(int value) { return add(static_cast<std::int64_t>(value)); }
-  CsvRow& add(std::string_view text);
+  CsvRow& add(std::string_view text);  // quoted only where it must be
   // The row with its newline; the row is cleared for reuse.
   std::string take();
 
