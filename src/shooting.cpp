@@ -59,7 +59,7 @@ class ShootingField final : public StateField {
 }  // namespace
 
 CvodeTolerances cvode_tolerances(const Options& o) {
-  const double factor = o.integrator == Integrator::adams ? 0.1 : 0.01;
+  const double factor = o.integrator == Integrator::adams ? 0.1 : 0.001;
   CvodeTolerances t;
   t.rtol = std::max(o.rtol * factor, kCvodeRtolFloor);
   // The scaled state is of order one; components that pass through zero would otherwise be held to an

@@ -10,65 +10,15 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "cli_run.hpp"
 #include "ogive/solve.hpp"
 #include "tolerances.hpp"
 
 using ogive::cli::run_cli;
-
-namespace {
-
-struct Run {
-  int status;
-  std::string out, err;
-};
-
-Run cli(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  const int status = run_cli(args, out, err);
-  return {status, out.str(), err.str()};
-}
-
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
-
-std::vector<std::string> fields(const std::string& line) {
-  std::vector<std::string> out;
-  std::string field;
-  std::istringstream in(line);
-  while (std::getline(in, field, ',')) out.push_back(field);
-  if (!line.empty() && line.back() == ',') out.push_back("");
-  return out;
-}
-
-// The value of column `name` in data row `row` (1-based, after the header).
-std::string column(const std::string& csv, const std::string& name, std::size_t row = 1) {
-  const auto ls = lines(csv);
-  const auto header = fields(ls.at(0));
-  const auto it = std::find(header.begin(), header.end(), name);
-  REQUIRE_MESSAGE(it != header.end(), "no column " << name);
-  return fields(ls.at(row)).at(static_cast<std::size_t>(it - header.begin()));
-}
-
-// Bad input: exit 2, nothing on stdout, one line on stderr starting "ogive: ".
-void check_refused(const std::vector<std::string>& args) {
-  std::string joined;
-  for (const auto& a : args) joined += a.substr(0, 40) + " ";
-  CAPTURE(joined);
-  const Run r = cli(args);
-  CHECK(r.status == 2);
-  CHECK(r.out.empty());
-  CHECK(lines(r.err).size() == 1);
-  CHECK(r.err.rfind("ogive: ", 0) == 0);
-}
-
-}  // namespace
+using namespace ogive::test;
 
 TEST_CASE("cli: thrust prints a header and one row per scene of the cartesian product") {
-  const Run r = cli({"thrust", "--eccentricity", "0:1:11", "--thickness-ratio", "0.06,0.08,0.10"});
+  const Run r = run_command({"thrust", "--eccentricity", "0:1:11", "--thickness-ratio", "0.06,0.08,0.10"});
   REQUIRE(r.status == 0);
   CHECK(r.err.empty());
   const auto ls = lines(r.out);
@@ -92,7 +42,7 @@ TEST_CASE("cli: thrust prints a header and one row per scene of the cartesian pr
 }
 
 TEST_CASE("cli: profile prints --stations rows per scene with the internal forces and e") {
-  const Run r = cli({"profile", "--eccentricity", "0,0.5", "--stations", "7"});
+  const Run r = run_command({"profile", "--eccentricity", "0,0.5", "--stations", "7"});
   REQUIRE(r.status == 0);
   const auto ls = lines(r.out);
   REQUIRE(ls.size() == 1 + 14);
@@ -103,19 +53,19 @@ TEST_CASE("cli: profile prints --stations rows per scene with the internal force
 }
 
 TEST_CASE("cli: check reports every method within tolerance - methods and integrators selectable") {
-  const Run r = cli({"check", "--eccentricity", "0,1", "--rtol", "1e-7", "--integrator", "bdf"});
+  const Run r = run_command({"check", "--eccentricity", "0,1", "--rtol", "1e-7", "--integrator", "bdf"});
   REQUIRE(r.status == 0);
   const auto ls = lines(r.out);
   REQUIRE(ls.size() == 1 + 6);
   for (std::size_t row = 1; row < ls.size(); ++row) CHECK(column(r.out, "within_tolerance", row) == "yes");
-  const Run s = cli({"thrust", "--method", "multiple-shooting", "--segments", "4", "--rtol", "1e-9"});
+  const Run s = run_command({"thrust", "--method", "multiple-shooting", "--segments", "4", "--rtol", "1e-9"});
   REQUIRE(s.status == 0);
   CHECK(column(s.out, "method") == "multiple-shooting");
   CHECK(column(s.out, "segments") == "4");
 }
 
 TEST_CASE("cli: a solver failure is a status in the row - no number - and exit 3") {
-  const Run r = cli({"thrust", "--method", "shooting", "--rtol", "1e-12", "--max-steps", "3", "--eccentricity", "0,0.5"});
+  const Run r = run_command({"thrust", "--method", "shooting", "--rtol", "1e-12", "--max-steps", "3", "--eccentricity", "0,0.5"});
   CHECK(r.status == 3);
   CHECK(r.err.empty());
   REQUIRE(lines(r.out).size() == 3);
@@ -185,11 +135,11 @@ TEST_CASE("cli: bad input is one line on stderr - exit 2 - nothing on stdout") {
   };
   for (const auto& args : cases) check_refused(args);
   // The message names the option and the rule.
-  CHECK(cli({"thrust", "--poisson-ratio", "0.7"}).err.find("--poisson-ratio") != std::string::npos);
-  CHECK(cli({"thrust", "--poisson-ratio", "0.7"}).err.find("(-1, 0.5]") != std::string::npos);
-  CHECK(cli({"thrust", "--rtol", "0"}).err.find("--rtol") != std::string::npos);
-  CHECK(cli({"profile", "--stations", "1"}).err.find("--stations") != std::string::npos);
-  CHECK(cli({"thrust", "--thickness-ratio", "1.5"}).err.find("--thickness-ratio") != std::string::npos);
+  CHECK(run_command({"thrust", "--poisson-ratio", "0.7"}).err.find("--poisson-ratio") != std::string::npos);
+  CHECK(run_command({"thrust", "--poisson-ratio", "0.7"}).err.find("(-1, 0.5]") != std::string::npos);
+  CHECK(run_command({"thrust", "--rtol", "0"}).err.find("--rtol") != std::string::npos);
+  CHECK(run_command({"profile", "--stations", "1"}).err.find("--stations") != std::string::npos);
+  CHECK(run_command({"thrust", "--thickness-ratio", "1.5"}).err.find("--thickness-ratio") != std::string::npos);
 }
 
 TEST_CASE("cli: every numeric option refuses nan - infinities - overflow - text - empty - a very long number") {
@@ -242,7 +192,7 @@ TEST_CASE("cli: a bad curve file is one line naming the file and the line - exit
     const std::string path = dir + "/bad" + std::to_string(k) + ".csv";
     std::ofstream(path, std::ios::binary) << files[k].first;
     CAPTURE(k);
-    const Run r = cli({"thrust", "--curve", "points", "--curve-file", path});
+    const Run r = run_command({"thrust", "--curve", "points", "--curve-file", path});
     CHECK(r.status == 2);
     CHECK(r.out.empty());
     CHECK(lines(r.err).size() == 1);
@@ -254,8 +204,8 @@ TEST_CASE("cli: a bad curve file is one line naming the file and the line - exit
   std::string crlf;
   for (char c : plain) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
   std::ofstream(dir + "/variant.csv", std::ios::binary) << "\xEF\xBB\xBF" << crlf << "\r\n\r\n";
-  const Run a = cli({"thrust", "--curve", "points", "--curve-file", OGIVE_DATA_DIR "/curves/parabola-40.csv"});
-  const Run b = cli({"thrust", "--curve", "points", "--curve-file", dir + "/variant.csv"});
+  const Run a = run_command({"thrust", "--curve", "points", "--curve-file", OGIVE_DATA_DIR "/curves/parabola-40.csv"});
+  const Run b = run_command({"thrust", "--curve", "points", "--curve-file", dir + "/variant.csv"});
   CHECK(a.status == 0);
   CHECK(b.status == 0);
   CHECK(a.out == b.out);
@@ -263,12 +213,12 @@ TEST_CASE("cli: a bad curve file is one line naming the file and the line - exit
 }
 
 TEST_CASE("cli: help goes to stdout with exit 0 - output is deterministic") {
-  const Run h = cli({"--help"});
+  const Run h = run_command({"--help"});
   CHECK(h.status == 0);
   CHECK(h.out.find("thrust") != std::string::npos);
   const std::vector<std::string> args = {"profile", "--eccentricity", "0,0.7", "--method", "multiple-shooting",
                                          "--stations", "9", "--support-displacement-ratio", "1e-4"};
-  const Run a = cli(args), b = cli(args);
+  const Run a = run_command(args), b = run_command(args);
   CHECK(a.status == 0);
   CHECK(a.out == b.out);
 }

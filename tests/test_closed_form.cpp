@@ -189,23 +189,57 @@ TEST_CASE("Figure 12: for the semicircle - e near the crown grows huge at d/L = 
   CHECK(e3 > 10.0 * e0);
 }
 
-TEST_CASE("closed form: profile is symmetric and the thrust line is where M/N says") {
-  const Solution sol = closed_form(paper_scene(0.5), 41);
-  REQUIRE(sol.profile.size() == 41);
-  const double L = 10.0;
-  for (std::size_t i = 0; i < sol.profile.size(); ++i) {
-    const ArchState& a = sol.profile[i];
-    const ArchState& b = sol.profile[sol.profile.size() - 1 - i];
-    CHECK(std::abs(a.x + b.x - L) <= kExact * L);
-    CHECK(std::abs(a.y - b.y) <= kExact * L);
-    CHECK(close(a.N, b.N, 1e-9));
-    CHECK(close(a.M, b.M, 1e-9));
+TEST_CASE("closed form: every station - right half included - balances the free body from the left springing") {
+  // The right half is not solved but mapped from the left (symmetry, with "beyond" and "before"
+  // swapped): this checks that map against statics and the right springing's own conditions, which a
+  // wrong sign of Ux, psi or Fy there would break. Free body [0, s]: the support pushes -F(0) and the
+  // couple -M(0), the part beyond pushes F(s) with M(s), the weight w per length acts at the axis.
+  const double d = 1e-4 * 10.0;
+  const Scene scene = paper_scene(0.5, 0.08, 1e-4);
+  Options o;
+  o.method = Method::closed_form;
+  o.stations = 41;
+  const Solution sol = solve(scene, o);
+  REQUIRE(sol.ok());
+  const double w = scene.weight_per_length(), L = 10.0;
+  const ArchState& a = sol.profile.front();
+  // The integral of x over [0, s] of the whole arch by composite Simpson on each half (smooth there).
+  auto first_moment = [&](double s_end) {
+    const double S = scene.curve->half_length();
+    auto simpson = [&](double lo, double hi) {
+      const int n = 4000;
+      const double h = (hi - lo) / n;
+      double sum = 0;
+      for (int k = 0; k <= n; ++k) {
+        const double x = scene.curve->at_whole_arch(lo + k * h).x;
+        sum += x * ((k == 0 || k == n) ? 1 : (k % 2 ? 4 : 2));
+      }
+      return sum * h / 3;
+    };
+    return s_end <= S ? simpson(0, s_end) : simpson(0, S) + simpson(S, s_end);
+  };
+  for (const ArchState& st : sol.profile) {
+    CAPTURE(st.s);
+    CHECK(std::abs(st.Fx - a.Fx) <= kExact * w * L);
+    CHECK(std::abs(st.Fy - (a.Fy + w * st.s)) <= kExact * w * L);
+    const double moment = a.M + (a.x * a.Fy - a.y * a.Fx) - (st.x * st.Fy - st.y * st.Fx) + w * first_moment(st.s);
+    CHECK(std::abs(st.M - moment) <= 1e-10 * w * L * L);
     // The resultant F acting at the thrust point has the moment M about the axis point.
-    const double arm_x = a.thrust_x - a.x, arm_y = a.thrust_y - a.y;
-    CHECK(std::abs(arm_x * a.Fy - arm_y * a.Fx - a.M) <= 1e-9 * std::abs(a.N) * 0.8);
+    const double arm_x = st.thrust_x - st.x, arm_y = st.thrust_y - st.y;
+    CHECK(std::abs(arm_x * st.Fy - arm_y * st.Fx - st.M) <= 1e-9 * std::abs(st.N) * 0.8);
     // e is the offset in per cent of the kern half-width t/6.
-    CHECK(close(std::abs(a.e) / 100.0 * 0.8 / 6.0, std::hypot(arm_x, arm_y), 1e-9));
+    CHECK(close(std::abs(st.e) / 100.0 * 0.8 / 6.0, std::hypot(arm_x, arm_y), 1e-9));
   }
+  // Both springings: the left moves out by d (to -x), the right by d (to +x); neither settles nor turns.
+  const ArchState& z = sol.profile.back();
+  CHECK(close(a.Ux, -d, 1e-12));
+  CHECK(close(z.Ux, d, 1e-12));
+  const double U = std::abs(d);
+  CHECK(std::abs(a.Uy) <= kExact * U);
+  CHECK(std::abs(z.Uy) <= kExact * U);
+  CHECK(std::abs(a.psi) <= kExact * U / L);
+  CHECK(std::abs(z.psi) <= kExact * U / L);
+  CHECK(close(z.x, L, kExact));
 }
 
 TEST_CASE("closed form: misuse throws naming the field") {

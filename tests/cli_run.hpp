@@ -1,0 +1,76 @@
+// Running the CLI in-process, and reading its CSV, for the tests.
+#pragma once
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli.hpp"
+
+namespace ogive::test {
+
+struct Run {
+  int status;
+  std::string out, err;
+};
+
+inline Run run_command(std::vector<std::string> args) {
+  std::ostringstream out, err;
+  const int status = cli::run_cli(args, out, err);
+  return {status, out.str(), err.str()};
+}
+
+inline std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+// One CSV line's fields (RFC 4180: a quoted field may hold commas and doubled quotes).
+inline std::vector<std::string> fields(const std::string& line) {
+  std::vector<std::string> out(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') out.back() += line[++i];
+      else if (c == '"') quoted = false;
+      else out.back() += c;
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      out.emplace_back();
+    } else {
+      out.back() += c;
+    }
+  }
+  return out;
+}
+
+// The value of column `name` in data row `row` (1-based, after the header).
+inline std::string column(const std::string& csv, const std::string& name, std::size_t row = 1) {
+  const auto ls = lines(csv);
+  const auto header = fields(ls.at(0));
+  const auto it = std::find(header.begin(), header.end(), name);
+  REQUIRE_MESSAGE(it != header.end(), "no column " << name);
+  return fields(ls.at(row)).at(static_cast<std::size_t>(it - header.begin()));
+}
+
+// Bad input: exit 2, nothing on stdout, one line on stderr starting "ogive: ".
+inline void check_refused(const std::vector<std::string>& args) {
+  std::string joined;
+  for (const auto& a : args) joined += a.substr(0, 40) + " ";
+  CAPTURE(joined);
+  const Run r = run_command(args);
+  CHECK(r.status == 2);
+  CHECK(r.out.empty());
+  CHECK(lines(r.err).size() == 1);
+  CHECK(r.err.rfind("ogive: ", 0) == 0);
+}
+
+
+}  // namespace ogive::test
