@@ -7,7 +7,8 @@
 # against the closed form), y = median_seconds.  One colour/mark per (method, integrator); one polyline
 # per scene inside a series (dash type = scene), ordered by rtol.  Errors below 1e-17 (the closed
 # form's 0) are drawn at 1e-17, marked by a dotted line and a key entry.  Rows whose status is not
-# "success" are drawn as red crosses ("failed / flagged runs") and are not joined to their series.
+# "success" (or "unverified", a raw --no-verify run) are drawn as red crosses ("failed / flagged runs")
+# and are not joined to their series.
 # If the error_profile column has finite values anywhere, also writes OUTPUT_PREFIX-profile.{png,svg}
 # with x = error_profile.
 #
@@ -89,7 +90,8 @@ $1 == "curve" {
   err = cleanerr($(col["error_H_over_V"]))
   eprof = ("error_profile" in col) ? cleanerr($(col["error_profile"])) : "nan"
   rt = $(col["rtol"]); if (!isnum(rt)) rt = 0
-  ok = ($(col["status"]) == "success") ? 1 : 0
+  # A raw (--no-verify) run that ran to the end says "unverified": drawn as a point of its series.
+  st = $(col["status"]); ok = (st == "success" || st == "unverified") ? 1 : 0
   print series[label], label, scene[key], rt + 0, ok, err, eprof, t + 0
   nrows++
 }
