@@ -314,13 +314,19 @@ void add_solver_options(CLI::App& cmd, Options& o, SolverText& text, bool with_m
     cmd.add_option("--method", text.method, "closed-form, shooting, multiple-shooting or auto")->capture_default_str();
   if (with_integrator)
     cmd.add_option("--integrator", text.integrator, "CVODE's method: adams or bdf")->capture_default_str();
-  cmd.add_option("--rtol", o.rtol, "accuracy asked of the result, 1e-14 .. 0.1")->check(kFiniteNumber)->capture_default_str();
-  cmd.add_option("--atol", o.atol, "CVODE's absolute tolerance on the scaled state (0: 1e-6 of CVODE's rtol)")
+  cmd.add_option("--rtol", o.rtol,
+                 "relative error asked of every printed number, 1e-14 .. 0.1; status success guarantees it. CVODE "
+                 "itself runs at rtol/10 (adams) or rtol/1000 (bdf), and a verifying solve at rtol/16")
+      ->check(kFiniteNumber)->capture_default_str();
+  cmd.add_option("--atol", o.atol,
+                 "CVODE's absolute tolerance on the scaled state (0: 1e-6 of CVODE's rtol); the verifying solve "
+                 "uses the smaller of atol and that default, /16")
       ->check(kFiniteNumber)->capture_default_str();
   cmd.add_option("--segments", o.segments, "multiple-shooting segments over the half arch")->check(kCount)->capture_default_str();
   cmd.add_option("--max-steps", o.max_steps, "CVODE step limit per integration span")->check(kCount)->capture_default_str();
   cmd.add_flag("--no-verify", text.no_verify,
-               "skip the second solve at rtol/16 that estimates the error (raw methods, for benchmarks)");
+               "skip the second solve at rtol/16 that estimates the error (raw methods, for benchmarks): the "
+               "status is then at best unverified, never success; auto always verifies");
   cmd.add_flag("--ignore-breakpoints", text.ignore_breakpoints,
                "let CVODE step across jumps of curvature (for stability studies)");
 }

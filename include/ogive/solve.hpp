@@ -53,7 +53,7 @@ struct Options {
   Method method = Method::automatic;
   Integrator integrator = Integrator::adams;
   // The relative error asked of every printed number, in [1e-14, 1e-1]; `success` guarantees it. CVODE
-  // itself runs tighter (shooting.hpp, cvode_tolerances: rtol / 10 for Adams, rtol / 100 for BDF),
+  // itself runs tighter (shooting.hpp, cvode_tolerances: rtol / 10 for Adams, rtol / 1000 for BDF),
   // because it controls local errors only.
   double rtol = 1e-8;
   // CVODE's absolute tolerance on the scaled state (order-one numbers); 0 (the default) means 1e-6 of
