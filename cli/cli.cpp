@@ -6,11 +6,15 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <condition_variable>
+#include <exception>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -432,41 +436,126 @@ void check_rows(std::size_t scenes, int stations) {
     throw UsageError(fmt::format("--stations: {} scenes x {} stations exceed {} rows", scenes, stations, 10 * kMaxValues));
 }
 
-// Every scene of the plan in order, built; `row_of` turns one into rows (valid scenes) and
-// `invalid_row` writes the row of an impossible one. Returns whether every scene's row succeeded.
+// Where a scene's rows go: the writer (one thread) or the scene's slot in the reorder window.
+using Emit = std::function<void(const std::string&)>;
+
+// Every scene of the plan in order, built; `rows_of(p, scene, emit)` emits a valid scene's rows and
+// returns whether it succeeded; `invalid_row(p, built)` returns the row of an impossible one. Returns
+// whether every scene's row succeeded.
+//
+// With threads > 1, scenes are solved in parallel (each solve owns its SUNDIALS context) and written
+// in order: a worker takes the next scene only while it lies within a window of 4 x threads scenes
+// of the next one to be written, so memory stays bounded and the output is byte-identical to one
+// thread's. The callbacks must not share mutable state between calls.
 template <class Solved, class Invalid>
-bool for_each_scene(const ScenePlan& plan, RowWriter& writer, Solved row_of, Invalid invalid_row) {
-  bool all_ok = true;
-  for (std::size_t i = 0; i < plan.size(); ++i) {
+bool for_each_scene(const ScenePlan& plan, RowWriter& writer, int threads, Solved rows_of, Invalid invalid_row) {
+  // One scene: its rows to emit, and whether it succeeded.
+  auto one = [&](std::size_t i, const Emit& emit) {
     const SceneParameters p = plan.parameters(i);
     ScenePlan::Built built = plan.build(p);
     if (!built.scene) {
-      all_ok = false;
-      writer.write(invalid_row(p, built));
-      continue;
+      emit(invalid_row(p, built));
+      return false;
     }
-    all_ok = row_of(p, *built.scene) && all_ok;
+    return rows_of(p, *built.scene, emit);
+  };
+  const std::size_t n = plan.size();
+  bool all_ok = true;
+  if (threads <= 1 || n <= 1) {
+    const Emit to_writer = [&](const std::string& text) { writer.write(text); };
+    for (std::size_t i = 0; i < n; ++i) all_ok = one(i, to_writer) && all_ok;
+    writer.flush();
+    return all_ok;
+  }
+  struct Slot {
+    std::string text;
+    bool ok = true, done = false;
+  };
+  const std::size_t window = 4 * static_cast<std::size_t>(threads);
+  std::vector<Slot> slots(window);
+  std::mutex mutex;
+  std::condition_variable solved, space;
+  std::size_t next_to_take = 0, next_to_write = 0;
+  bool stop = false;
+  std::exception_ptr failure;
+  auto work = [&] {
+    for (;;) {
+      std::size_t i;
+      {
+        std::unique_lock lock(mutex);
+        space.wait(lock, [&] { return stop || next_to_take >= n || next_to_take < next_to_write + window; });
+        if (stop || next_to_take >= n) return;
+        i = next_to_take++;
+      }
+      Slot result;
+      try {
+        result.ok = one(i, [&](const std::string& text) { result.text += text; });
+      } catch (...) {
+        std::lock_guard lock(mutex);
+        if (!failure) failure = std::current_exception();
+        stop = true;
+        solved.notify_all();
+        space.notify_all();
+        return;
+      }
+      result.done = true;
+      std::lock_guard lock(mutex);
+      slots[i % window] = std::move(result);
+      solved.notify_all();
+    }
+  };
+  std::vector<std::thread> pool;
+  // Stops and joins the workers on every way out, an exception from the writer included.
+  struct Joiner {
+    std::vector<std::thread>& pool;
+    std::mutex& mutex;
+    bool& stop;
+    std::condition_variable& space;
+    ~Joiner() {
+      {
+        std::lock_guard lock(mutex);
+        stop = true;
+      }
+      space.notify_all();
+      for (std::thread& t : pool) t.join();
+    }
+  } joiner{pool, mutex, stop, space};
+  for (int t = 0; t < threads; ++t) pool.emplace_back(work);
+  for (std::size_t w = 0; w < n; ++w) {
+    Slot slot;
+    {
+      std::unique_lock lock(mutex);
+      solved.wait(lock, [&] { return slots[w % window].done || failure; });
+      if (failure) std::rethrow_exception(failure);
+      slot = std::move(slots[w % window]);
+      slots[w % window] = Slot{};
+      ++next_to_write;
+    }
+    space.notify_all();
+    all_ok = slot.ok && all_ok;
+    writer.write(slot.text);
   }
   writer.flush();
   return all_ok;
 }
 
-int run_thrust(SceneOptions& so, const CLI::App& cmd, const Options& o, std::ostream& out) {
+int run_thrust(SceneOptions& so, const CLI::App& cmd, const Options& o, int threads, std::ostream& out) {
   check_options(o);
   const ScenePlan plan(so, cmd);
   RowWriter writer(out);
-  CsvRow row;
   writer.write(std::string(kSceneHeader) + "," + kSolutionHeader + "\n");
   const bool all_ok = for_each_scene(
-      plan, writer,
-      [&](const SceneParameters& p, const Scene& scene) {
+      plan, writer, threads,
+      [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
+        CsvRow row;
         const Solution sol = solve(scene, o);
         add_scene_columns(row, p, scene.curve.get());
         add_solution_columns(row, sol, o);
-        writer.write(row.take());
+        emit(row.take());
         return sol.ok();
       },
       [&](const SceneParameters& p, const ScenePlan::Built& b) {
+        CsvRow row;
         add_scene_columns(row, p, b.curve.get());
         row.add(to_string(o.method)).add(std::string_view{}).add(o.rtol).add(kInvalidScene);
         add_empty(row, 10);
@@ -492,7 +581,7 @@ const char* kProfileColumns = "s,x,y,theta,Ux,Uy,psi,N,V,M,e,thrust_x,thrust_y,w
 constexpr int kProfileColumnCount = 14;
 constexpr int kProfilePiece = 4096;  // stations sampled and written at a time
 
-int run_profile(SceneOptions& so, const CLI::App& cmd, Options o, std::ostream& out) {
+int run_profile(SceneOptions& so, const CLI::App& cmd, Options o, int threads, std::ostream& out) {
   check_stations(o.stations);
   check_options(o);
   const ScenePlan plan(so, cmd);
@@ -501,26 +590,29 @@ int run_profile(SceneOptions& so, const CLI::App& cmd, Options o, std::ostream& 
   // The solve verifies the profile at kVerificationStations at most; longer profiles are sampled
   // piece by piece from the verified field below, so that memory does not grow with the stations.
   o.stations = std::min(stations, kVerificationStations);
+  // A scene's rows wait in the reorder window while other threads work: beyond one piece of stations
+  // per scene, scenes are solved one after another instead, to keep memory bounded.
+  if (stations > kProfilePiece) threads = 1;
   RowWriter writer(out);
-  CsvRow row;
   writer.write(std::string(kSceneHeader) + ",method,status,H_over_V,error_estimate,message," + kProfileColumns + "\n");
-  auto add_head = [&](const SceneParameters& p, const Curve* curve, std::string_view method, std::string_view status,
-                      double H_over_V, double estimate, std::string_view message) {
+  auto add_head = [](CsvRow& row, const SceneParameters& p, const Curve* curve, std::string_view method,
+                     std::string_view status, double H_over_V, double estimate, std::string_view message) {
     add_scene_columns(row, p, curve);
     row.add(method).add(status).add(H_over_V).add(estimate).add(message);
   };
   const bool all_ok = for_each_scene(
-      plan, writer,
-      [&](const SceneParameters& p, const Scene& scene) {
+      plan, writer, threads,
+      [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
+        CsvRow row;
         const Solution sol = solve(scene, o);
         auto head = [&] {
-          add_head(p, scene.curve.get(), to_string(sol.method), to_string(sol.status), sol.H_over_V,
+          add_head(row, p, scene.curve.get(), to_string(sol.method), to_string(sol.status), sol.H_over_V,
                    sol.diagnostics.error_estimate, sol.message);
         };
         if (!sol.field) {  // unsolved: one row that says so, no numbers
           head();
           add_empty(row, kProfileColumnCount);
-          writer.write(row.take());
+          emit(row.take());
           return false;
         }
         for (int first = 0; first < stations; first += kProfilePiece) {
@@ -535,12 +627,13 @@ int run_profile(SceneOptions& so, const CLI::App& cmd, Options o, std::ostream& 
             row.add(st.N).add(st.V).add(st.M).add(st.e).add(st.thrust_x).add(st.thrust_y).add(section_warning(st));
             text += row.take();
           }
-          writer.write(text);
+          emit(text);
         }
         return sol.ok();
       },
       [&](const SceneParameters& p, const ScenePlan::Built& b) {
-        add_head(p, b.curve.get(), to_string(o.method), kInvalidScene, kNaN, kNaN, b.problem);
+        CsvRow row;
+        add_head(row, p, b.curve.get(), to_string(o.method), kInvalidScene, kNaN, kNaN, b.problem);
         add_empty(row, kProfileColumnCount);
         return row.take();
       });
@@ -582,17 +675,17 @@ double thrust_difference(double H_over_V, double reference) {
 // Every applicable method on every scene, against the reference. A row is within tolerance when the
 // method says success and its difference from the reference is within rtol plus the reference's own
 // error (a flagged reference is not the method's failure: its status and error are printed).
-int run_check(SceneOptions& so, const CLI::App& cmd, const Options& base, std::ostream& out) {
+int run_check(SceneOptions& so, const CLI::App& cmd, const Options& base, int threads, std::ostream& out) {
   check_options(base);
   const ScenePlan plan(so, cmd);
   RowWriter writer(out);
-  CsvRow row;
   writer.write(std::string(kSceneHeader) +
                ",method,integrator,rtol,segments,status,H_over_V,reference_method,reference_status,reference_error,"
                "reference_H_over_V,relative_difference,tolerance,within_tolerance,message\n");
   const bool all_ok = for_each_scene(
-      plan, writer,
-      [&](const SceneParameters& p, const Scene& scene) {
+      plan, writer, threads,
+      [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
+        CsvRow row;
         const Solution reference = reference_solution(scene, base);
         const std::string reference_method = reference.method == Method::closed_form
                                                  ? "closed-form"
@@ -618,10 +711,11 @@ int run_check(SceneOptions& so, const CLI::App& cmd, const Options& base, std::o
           row.add(sol.message);
           text += row.take();
         }
-        writer.write(text);
+        emit(text);
         return ok;
       },
       [&](const SceneParameters& p, const ScenePlan::Built& b) {
+        CsvRow row;
         add_scene_columns(row, p, b.curve.get());
         row.add(std::string_view{}).add(std::string_view{}).add(base.rtol).add(std::string_view{}).add(kInvalidScene);
         add_empty(row, 8);
@@ -632,16 +726,16 @@ int run_check(SceneOptions& so, const CLI::App& cmd, const Options& base, std::o
 }
 
 // The geometry: s, x, y, theta, kappa at equally spaced stations over the whole arch.
-int run_curve(SceneOptions& so, const CLI::App& cmd, int stations, std::ostream& out) {
+int run_curve(SceneOptions& so, const CLI::App& cmd, int stations, int threads, std::ostream& out) {
   check_stations(stations);
   const ScenePlan plan(so, cmd);
   check_rows(plan.size(), stations);
   RowWriter writer(out);
-  CsvRow row;
   writer.write(std::string(kSceneHeader) + ",status,message,s,x,y,theta,kappa\n");
   const bool all_ok = for_each_scene(
-      plan, writer,
-      [&](const SceneParameters& p, const Scene& scene) {
+      plan, writer, threads,
+      [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
+        CsvRow row;
         const Curve& curve = *scene.curve;
         const double S = curve.half_length();
         std::string text;
@@ -653,14 +747,15 @@ int run_curve(SceneOptions& so, const CLI::App& cmd, int stations, std::ostream&
           row.add(s).add(pt.x).add(pt.y).add(pt.theta).add(pt.kappa);
           text += row.take();
           if (text.size() >= (1u << 16)) {
-            writer.write(text);
+            emit(text);
             text.clear();
           }
         }
-        writer.write(text);
+        emit(text);
         return true;
       },
       [&](const SceneParameters& p, const ScenePlan::Built& b) {
+        CsvRow row;
         add_scene_columns(row, p, b.curve.get());
         row.add(kInvalidScene).add(b.problem);
         add_empty(row, 5);
@@ -699,13 +794,13 @@ int run_bench(SceneOptions& so, const CLI::App& cmd, const Options& base, const 
     throw UsageError(fmt::format("--rtols: {} scenes x {} methods x {} integrators x {} tolerances exceed {} rows",
                                  plan.size(), methods.size(), integrators.size(), rtols.size(), kMaxValues));
   RowWriter writer(out);
-  CsvRow row;
   writer.write(std::string(kSceneHeader) +
                ",method,integrator,rtol,segments,status,chosen_method,H_over_V,error_H_over_V,error_profile,"
                "error_estimate,reference_error,median_seconds,steps,rhs_evaluations,condition_estimate,message\n");
   for_each_scene(
-      plan, writer,
-      [&](const SceneParameters& p, const Scene& scene) {
+      plan, writer, 1,  // one thread: the timings are the point
+      [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
+        CsvRow row;
         Options ref_options = base;
         ref_options.stations = kBenchProfileStations;
         const Solution reference = reference_solution(scene, ref_options);
@@ -748,13 +843,14 @@ int run_bench(SceneOptions& so, const CLI::App& cmd, const Options& base, const 
               row.add(reference_error(reference));
               row.add(seconds[repeats / 2]).add(sol.diagnostics.steps).add(sol.diagnostics.rhs_evaluations);
               row.add(sol.diagnostics.condition_estimate).add(judged.message);
-              writer.write(row.take());
+              emit(row.take());
             }
           }
         }
         return true;
       },
       [&](const SceneParameters& p, const ScenePlan::Built& b) {
+        CsvRow row;
         add_scene_columns(row, p, b.curve.get());
         row.add(std::string_view{}).add(std::string_view{}).add(std::string_view{}).add(std::string_view{});
         row.add(kInvalidScene);
@@ -807,6 +903,16 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   bench->add_option("--rtols", bench_rtols, "tolerances: list or range")->capture_default_str();
   bench->add_option("--repeats", repeats, "solves per row; the median time is printed")->check(kCount)->capture_default_str();
 
+  // Sweeps use every core by default; the rows come out in the same order, byte for byte, with any N.
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  int threads = cores;
+  for (CLI::App* cmd : {thrust, profile, check, curve})
+    cmd->add_option("--threads", threads,
+                    fmt::format("scenes solved in parallel, 1 .. 256 (default: every core, {} here); the output "
+                                "is the same with any number",
+                                cores))
+        ->check(kCount);
+
   std::vector<const char*> argv{"ogive"};
   for (const std::string& a : args) argv.push_back(a.c_str());
   try {
@@ -826,10 +932,11 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     apply_solver_text(profile_options, profile_text);
     apply_solver_text(check_options_, check_text);
     apply_solver_text(bench_options, bench_text);
-    if (thrust->parsed()) return run_thrust(thrust_scene, *thrust, thrust_options, out);
-    if (profile->parsed()) return run_profile(profile_scene, *profile, profile_options, out);
-    if (check->parsed()) return run_check(check_scene, *check, check_options_, out);
-    if (curve->parsed()) return run_curve(curve_scene, *curve, curve_stations, out);
+    if (threads < 1 || threads > 256) throw UsageError(fmt::format("--threads: must lie in [1, 256], got {}", threads));
+    if (thrust->parsed()) return run_thrust(thrust_scene, *thrust, thrust_options, threads, out);
+    if (profile->parsed()) return run_profile(profile_scene, *profile, profile_options, threads, out);
+    if (check->parsed()) return run_check(check_scene, *check, check_options_, threads, out);
+    if (curve->parsed()) return run_curve(curve_scene, *curve, curve_stations, threads, out);
     if (bench->parsed()) return run_bench(bench_scene, *bench, bench_options, bench_methods, bench_integrators, bench_rtols,
                                             repeats, out);
   } catch (const UsageError& e) {

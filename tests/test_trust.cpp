@@ -378,3 +378,41 @@ TEST_CASE("trust: profile's failure row - one row per scene - no numbers - exit 
     for (const char* name : {"H_over_V", "s", "N", "M", "e"}) CHECK(column(r.out, name, row).empty());
   }
 }
+
+TEST_CASE("threads: the same bytes with any number of threads - invalid scenes and failures included") {
+  const std::vector<std::vector<std::string>> commands = {
+      {"thrust", "--curve", "catenary", "--rise-ratio", "0.3:2:40", "--thickness-ratio", "0.4"},
+      {"thrust", "--eccentricity", "0:1:30", "--method", "shooting", "--max-steps", "40"},
+      {"profile", "--eccentricity", "0:1:9", "--stations", "33"},
+      {"check", "--curve", "parabolic", "--rise-ratio", "0.3,0.5,0.7"},
+      {"curve", "--curve", "elliptical", "--rise-ratio", "0.2:0.6:5", "--stations", "9"},
+  };
+  for (const auto& command : commands) {
+    std::vector<std::string> one = command, many = command;
+    one.insert(one.end(), {"--threads", "1"});
+    const Run reference = run_command(one);
+    CAPTURE(command[0]);
+    for (const char* threads : {"2", "3", "8"}) {
+      many = command;
+      many.insert(many.end(), {"--threads", threads});
+      const Run r = run_command(many);
+      CAPTURE(threads);
+      CHECK(r.status == reference.status);
+      CHECK(r.out == reference.out);
+      CHECK(r.err == reference.err);
+    }
+  }
+  check_refused({"thrust", "--threads", "0"});
+  check_refused({"thrust", "--threads", "257"});
+  check_refused({"thrust", "--threads", "two"});
+}
+
+TEST_CASE("threads: a write error with several threads still ends the run cleanly - exit 4") {
+  RecordingBuffer full(5000);
+  std::ostream out(&full);
+  std::ostringstream err;
+  const int status = cli::run_cli({"thrust", "--eccentricity", "0:1:3000", "--threads", "4"}, out, err);
+  CHECK(status == cli::kExitOutput);
+  CHECK(lines(err.str()).size() == 1);
+  CHECK(full.all().back() == '\n');
+}
