@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
@@ -92,18 +93,29 @@ Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& o
   sol.diagnostics.segments = static_cast<int>(K);
 
   const CvodeTolerances tol = cvode_tolerances(options);
-  CvodeIntegrator integrator(*model, options.integrator, tol.rtol, tol.atol, options.max_steps, kStateSize + 1,
-                             options.restart_at_breakpoints);
-  CvodeIntegrator::Matrix Y0 = CvodeIntegrator::Matrix::Zero(kStateSize, kStateSize + 1);
-  Y0.leftCols<kStateSize>().setIdentity();
-  std::vector<SystemMatrix> Phi(K);
-  std::vector<StateVector> p(K);
+  // The first segment starts at the springing, where three components are given: it integrates the
+  // three unknown directions and the particular solution (4 columns). Later segments start from a full
+  // unknown state (the fundamental matrix and the particular solution: 7 columns).
+  const SpringingSplit split = springing_split(*model);
+  CvodeIntegrator first(*model, options.integrator, tol.rtol, tol.atol, options.max_steps, 4,
+                        options.restart_at_breakpoints);
+  std::optional<CvodeIntegrator> rest;
+  if (K > 1)
+    rest.emplace(*model, options.integrator, tol.rtol, tol.atol, options.max_steps, kStateSize + 1,
+                 options.restart_at_breakpoints);
+  // Segment k maps its unknown start x_k (u for k = 0, y_k after) to its end: G[k] x_k + g[k].
+  std::vector<Eigen::Matrix<double, kStateSize, Eigen::Dynamic>> G(K);
+  std::vector<StateVector> g(K);
   for (std::size_t k = 0; k < K; ++k) {
+    CvodeIntegrator::Matrix Y0(kStateSize, k == 0 ? 4 : kStateSize + 1);
+    if (k == 0) Y0 << split.U, split.start;
+    else Y0 << SystemMatrix::Identity(), StateVector::Zero();
     const double end = knots[k + 1];
+    CvodeIntegrator& integrator = k == 0 ? first : *rest;
     const auto failure = integrator.integrate(knots[k], Y0, std::span<const double>(&end, 1),
                                               [&](std::size_t, const CvodeIntegrator::Matrix& Y) {
-                                                Phi[k] = Y.leftCols<kStateSize>();
-                                                p[k] = Y.col(kStateSize);
+                                                G[k] = Y.leftCols(Y.cols() - 1);
+                                                g[k] = Y.col(Y.cols() - 1);
                                               });
     if (failure) {
       sol.status = Status::integrator_failure;
@@ -111,46 +123,43 @@ Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& o
       break;
     }
   }
-  const IntegratorStats& st = integrator.stats();
-  sol.diagnostics.steps = st.steps;
-  sol.diagnostics.rhs_evaluations = st.rhs_evaluations;
-  sol.diagnostics.error_test_failures = st.error_test_failures;
-  sol.diagnostics.jacobian_evaluations = st.jacobian_evaluations;
+  for (const CvodeIntegrator* integrator : {&first, rest ? &*rest : nullptr}) {
+    if (!integrator) continue;
+    const IntegratorStats& st = integrator->stats();
+    sol.diagnostics.steps += st.steps;
+    sol.diagnostics.rhs_evaluations += st.rhs_evaluations;
+    sol.diagnostics.error_test_failures += st.error_test_failures;
+    sol.diagnostics.jacobian_evaluations += st.jacobian_evaluations;
+  }
   if (sol.status == Status::integrator_failure) return sol;
 
   if (K == 1) {
-    const BvpSolution bvp = solve_single_segment(*model, Phi[0], p[0]);
+    const BvpSolution bvp = solve_reduced(*model, G[0], g[0]);
     finish_solution(sol, bvp, std::make_shared<ShootingField>(model, options, knots, std::vector{bvp.y0}));
     return sol;
   }
 
-  // Unknowns: the start state of every segment. Rows: 3 springing conditions, 6 continuity rows per
+  // Unknowns: u (3), then the start state of every later segment (6 each). Rows: 6 continuity rows per
   // interior knot, 3 crown conditions; block-bidiagonal, so the LU has little fill.
   const BoundaryConditions bc = model->boundary_conditions();
-  const Eigen::Index n = static_cast<Eigen::Index>(kStateSize * K);
+  auto column_of = [](std::size_t k) { return k == 0 ? Eigen::Index{0} : 3 + kStateSize * static_cast<Eigen::Index>(k - 1); };
+  const Eigen::Index n = 3 + kStateSize * static_cast<Eigen::Index>(K - 1);
   std::vector<Eigen::Triplet<double>> entries;
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
-  for (int r = 0; r < 3; ++r) {
-    for (int j = 0; j < kStateSize; ++j)
-      if (bc.at_springing(r, j) != 0) entries.emplace_back(r, j, bc.at_springing(r, j));
-    rhs(r) = bc.rhs(r);
-  }
   for (std::size_t k = 0; k + 1 < K; ++k) {
-    const Eigen::Index row = 3 + kStateSize * static_cast<Eigen::Index>(k);
-    const Eigen::Index col = kStateSize * static_cast<Eigen::Index>(k);
+    const Eigen::Index row = kStateSize * static_cast<Eigen::Index>(k);
     for (int i = 0; i < kStateSize; ++i) {
-      for (int j = 0; j < kStateSize; ++j)
-        if (Phi[k](i, j) != 0) entries.emplace_back(row + i, col + j, Phi[k](i, j));
-      entries.emplace_back(row + i, col + kStateSize + i, -1.0);
-      rhs(row + i) = -p[k](i);
+      for (Eigen::Index j = 0; j < G[k].cols(); ++j)
+        if (G[k](i, j) != 0) entries.emplace_back(row + i, column_of(k) + j, G[k](i, j));
+      entries.emplace_back(row + i, column_of(k + 1) + i, -1.0);
+      rhs(row + i) = -g[k](i);
     }
   }
-  const Eigen::Index last_col = kStateSize * static_cast<Eigen::Index>(K - 1);
-  const Eigen::Matrix<double, 3, kStateSize> crown = bc.at_crown.bottomRows<3>() * Phi[K - 1];
-  const Eigen::Vector3d crown_rhs = bc.rhs.tail<3>() - bc.at_crown.bottomRows<3>() * p[K - 1];
+  const Eigen::Matrix<double, 3, kStateSize> crown = bc.at_crown.bottomRows<3>() * G[K - 1];
+  const Eigen::Vector3d crown_rhs = bc.rhs.tail<3>() - bc.at_crown.bottomRows<3>() * g[K - 1];
   for (int r = 0; r < 3; ++r) {
     for (int j = 0; j < kStateSize; ++j)
-      if (crown(r, j) != 0) entries.emplace_back(n - 3 + r, last_col + j, crown(r, j));
+      if (crown(r, j) != 0) entries.emplace_back(n - 3 + r, column_of(K - 1) + j, crown(r, j));
     rhs(n - 3 + r) = crown_rhs(r);
   }
   Eigen::SparseMatrix<double> Q(n, n);
@@ -161,15 +170,16 @@ Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& o
   std::vector<StateVector> starts(K);
   if (lu.info() == Eigen::Success) {
     const Eigen::VectorXd z = lu.solve(rhs);
-    for (std::size_t k = 0; k < K; ++k) starts[k] = z.segment<kStateSize>(kStateSize * static_cast<Eigen::Index>(k));
+    starts[0] = split.start + split.U * z.head<3>();
+    for (std::size_t k = 1; k < K; ++k) starts[k] = z.segment<kStateSize>(column_of(k));
     bvp.y0 = starts.front();
-    bvp.yS = Phi[K - 1] * starts.back() + p[K - 1];
+    bvp.yS = G[K - 1] * starts.back() + g[K - 1];
     // The condition of the boundary-value problem, not of this discretisation of it: the sparse
     // system's own condition grows with the number of segments (its identity blocks), while its
-    // solution's accuracy does not. So the segments' transfers are condensed into Phi(S) and judged
+    // solution's accuracy does not. So the segments' transfers are condensed into Phi(S) U and judged
     // by the same function as single shooting and the closed form.
-    SystemMatrix whole = Phi[0];
-    for (std::size_t k = 1; k < K; ++k) whole = Phi[k] * whole;
+    ReducedTransfer whole = G[0];
+    for (std::size_t k = 1; k < K; ++k) whole = G[k] * whole;
     bvp.condition = boundary_value_condition(*model, whole);
   }
   finish_solution(sol, bvp, std::make_shared<ShootingField>(model, options, knots, std::move(starts)));

@@ -1,5 +1,6 @@
 #include "ogive/solve.hpp"
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -52,28 +53,57 @@ bool Options::is_valid(std::string* why) const {
   return true;
 }
 
-double boundary_value_condition(const ArchModel& model, const SystemMatrix& Phi) {
+SpringingSplit springing_split(const ArchModel& model) {
   const BoundaryConditions bc = model.boundary_conditions();
-  const SystemMatrix Q = bc.at_springing + bc.at_crown * Phi;
-  const Eigen::FullPivLU<SystemMatrix> lu(Q);
+  SpringingSplit split;
+  std::array<bool, kStateSize> known{};
+  for (int r = 0; r < 3; ++r) {
+    Eigen::Index j = 0;
+    bc.at_springing.row(r).cwiseAbs().maxCoeff(&j);
+    // Each springing condition fixes one component: a unit row (ArchModel's conditions are).
+    if (bc.at_springing(r, j) != 1.0 || bc.at_springing.row(r).cwiseAbs().sum() != 1.0)
+      throw std::logic_error("springing_split: a springing condition is not of the form y_j = value");
+    known[static_cast<std::size_t>(j)] = true;
+    split.start[j] = bc.rhs(r);
+  }
+  int column = 0;
+  for (int j = 0; j < kStateSize; ++j)
+    if (!known[static_cast<std::size_t>(j)]) split.U(j, column++) = 1.0;
+  return split;
+}
+
+double boundary_value_condition(const ArchModel& model, const ReducedTransfer& PhiU) {
+  const BoundaryConditions bc = model.boundary_conditions();
+  const Eigen::Matrix3d Q = bc.at_crown.bottomRows<3>() * PhiU;
+  const Eigen::FullPivLU<Eigen::Matrix3d> lu(Q);
   if (!lu.isInvertible()) return std::numeric_limits<double>::infinity();
   // Skeel's measure, not ||Q|| ||Q^-1||: the rows mix displacement and force conditions whose sizes
   // differ by orders of magnitude, and a norm-wise estimate would report that scaling, not a loss of
   // digits. |Q^-1| |Q| is what partial pivoting's backward error is amplified by, row scaling aside.
-  const SystemMatrix amplification = lu.inverse().cwiseAbs() * Q.cwiseAbs();
+  const Eigen::Matrix3d amplification = lu.inverse().cwiseAbs() * Q.cwiseAbs();
   const double condition = amplification.rowwise().sum().maxCoeff();
   return std::isfinite(condition) ? condition : std::numeric_limits<double>::infinity();
 }
 
-BvpSolution solve_single_segment(const ArchModel& model, const SystemMatrix& Phi, const StateVector& p) {
+double boundary_value_condition(const ArchModel& model, const SystemMatrix& Phi) {
+  return boundary_value_condition(model, ReducedTransfer(Phi * springing_split(model).U));
+}
+
+BvpSolution solve_reduced(const ArchModel& model, const ReducedTransfer& PhiU, const StateVector& q) {
   const BoundaryConditions bc = model.boundary_conditions();
-  const SystemMatrix Q = bc.at_springing + bc.at_crown * Phi;
-  const Eigen::PartialPivLU<SystemMatrix> lu(Q);
+  const SpringingSplit split = springing_split(model);
+  const Eigen::Matrix3d Q = bc.at_crown.bottomRows<3>() * PhiU;
+  const Eigen::Vector3d u = Q.partialPivLu().solve(bc.rhs.tail<3>() - bc.at_crown.bottomRows<3>() * q);
   BvpSolution out;
-  out.condition = boundary_value_condition(model, Phi);
-  out.y0 = lu.solve(bc.rhs - bc.at_crown * p);
-  out.yS = Phi * out.y0 + p;
+  out.condition = boundary_value_condition(model, PhiU);
+  out.y0 = split.start + split.U * u;
+  out.yS = PhiU * u + q;
   return out;
+}
+
+BvpSolution solve_single_segment(const ArchModel& model, const SystemMatrix& Phi, const StateVector& p) {
+  const SpringingSplit split = springing_split(model);
+  return solve_reduced(model, Phi * split.U, Phi * split.start + p);
 }
 
 void finish_solution(Solution& sol, const BvpSolution& bvp, std::shared_ptr<const StateField> field) {

@@ -127,20 +127,31 @@ TEST_CASE("failure mode: a rough survey - single shooting's profile at 67 rtol -
   CHECK(within_tolerance(true_error(chosen, ref, scene), rtol));
 }
 
-TEST_CASE("failure mode: flat segmental arches are ill-conditioned at tight rtol - flagged - and right at moderate rtol") {
-  const Scene scene = scene_of(make_segmental(10.0, 0.02));
-  const Solution ref = reference(scene);
-  REQUIRE(ref.field);
-  const Solution tight = run(scene, Method::multiple_shooting, Integrator::adams, 1e-12, true);
-  CHECK(tight.status == Status::ill_conditioned);
-  CHECK(tight.diagnostics.condition_estimate * std::numeric_limits<double>::epsilon() > 1e-12);
-  CHECK(std::isfinite(tight.H_over_V));  // solved, and said to be uncertain
+TEST_CASE("conditioning: flat segmental arches meet rtol 1e-12 - ill_conditioned only where condition x round-off exceeds rtol") {
+  // The map flagged flat arches as ill-conditioned while the 6 x 6 system's springing rows were in the
+  // estimate (condition ~1e4 at rise/L 0.02, for answers right to 1e-14). The reduced problem's
+  // condition (bvp.hpp) is 30 there; the verified solves at rtol 1e-12 are right, and say success.
+  const Scene flat = scene_of(make_segmental(10.0, 0.02));
+  const Solution ref = reference(flat);
+  REQUIRE(ref.ok());
   for (Method m : {Method::shooting, Method::multiple_shooting}) {
-    const Solution moderate = run(scene, m, Integrator::adams, 1e-8, true);
+    const Solution tight = run(flat, m, Integrator::adams, 1e-12, true);
     CAPTURE(to_string(m));
-    REQUIRE(moderate.ok());
-    CHECK(within_tolerance(true_error(moderate, ref, scene), 1e-8));
+    REQUIRE(tight.ok());
+    CHECK(within_tolerance(true_error(tight, ref, flat), 1e-12));
+    CHECK(close(tight.diagnostics.condition_estimate, ref.diagnostics.condition_estimate, 1e-6));
   }
+  // Where the condition (59 at rise/L 0.1) times round-off does exceed rtol, the status says so.
+  const Scene scene = scene_of(make_segmental(10.0, 0.1));
+  Options o;
+  o.method = Method::closed_form;
+  o.rtol = 1e-14;
+  const Solution tight = solve(scene, o);
+  CHECK(tight.diagnostics.condition_estimate * std::numeric_limits<double>::epsilon() > 1e-14);
+  CHECK(tight.status == Status::ill_conditioned);
+  CHECK(std::isfinite(tight.H_over_V));  // solved, and said to be uncertain
+  o.rtol = 1e-13;
+  CHECK(solve(scene, o).ok());
 }
 
 TEST_CASE("the closed form's own exponentials do not fail at the map's extremes - verified CVODE agrees to rtol") {

@@ -86,10 +86,11 @@ struct Diagnostics {
   std::int64_t error_test_failures = 0;  // CVODE local error test failures
   std::int64_t jacobian_evaluations = 0; // CVODE Jacobian evaluations (BDF)
   int segments = 0;                      // shooting segments used (arcs for the closed form)
-  // Skeel's condition number cond(Q) = || |Q^-1| |Q| ||_inf of the 6 x 6 boundary-value matrix
-  // Q = B_springing + B_crown Phi(S) of the scaled problem (invariant to the scaling of its rows). Every
-  // method reports the condition of the same problem: multiple shooting condenses its segments'
-  // transfers into Phi(S) for this estimate, so it does not grow with the number of segments.
+  // Skeel's condition number cond(Q) = || |Q^-1| |Q| ||_inf of the 3 x 3 boundary-value matrix
+  // Q = B_crown Phi(S) U of the scaled problem (U: the springing state's three unknown directions; the
+  // other three are given), invariant to the scaling of its rows. Every method reports the condition
+  // of the same problem: multiple shooting condenses its segments' transfers into Phi(S) U for this
+  // estimate, so it does not grow with the number of segments.
   double condition_estimate = std::numeric_limits<double>::quiet_NaN();
   double boundary_residual = std::numeric_limits<double>::quiet_NaN();   // max |BC residual|, scaled
   double equilibrium_residual = std::numeric_limits<double>::quiet_NaN(); // relative to half weight
