@@ -24,6 +24,7 @@
 #include "ogive/curve_families.hpp"
 #include "ogive/csv.hpp"
 #include "ogive/solve.hpp"
+#include "ogive/thrust_line.hpp"
 #include "values.hpp"
 
 namespace ogive::cli {
@@ -33,6 +34,7 @@ namespace {
 // Scene options: every numeric one takes a value, a list or a range; the scenes are their product.
 
 struct SceneParameters {
+  std::size_t scene = 0;  // 1-based number in the sweep
   std::string curve;
   double eccentricity, rise_ratio, haunch_angle, crown_angle;
   double span, thickness_ratio, support_displacement_ratio;
@@ -184,9 +186,21 @@ class ScenePlan {
 
   std::size_t size() const { return size_; }
 
+  // The columns of the inputs that take more than one value.
+  std::vector<std::string> varying_inputs() const {
+    std::vector<std::string> out;
+    for (const Axis& a : options_.axes) {
+      if (a.values.size() < 2) continue;
+      std::string name = a.flag.substr(2);
+      std::replace(name.begin(), name.end(), '-', '_');
+      out.push_back(name);
+    }
+    return out;
+  }
+
   // Scene number `index` (0-based) of the sweep; the last axis varies fastest.
   SceneParameters parameters(std::size_t index) const {
-    SceneParameters p{options_.curve, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, options_.plane_strain};
+    SceneParameters p{index + 1, options_.curve, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, options_.plane_strain};
     for (std::size_t i = options_.axes.size(); i-- > 0;) {
       const Axis& a = options_.axes[i];
       p.*(a.field) = a.values[index % a.values.size()];
@@ -251,9 +265,190 @@ class ScenePlan {
   std::size_t size_ = 1;
 };
 
-const char* kSceneHeader =
-    "curve,eccentricity,rise_ratio,haunch_angle,crown_angle,span,thickness_ratio,support_displacement_ratio,"
-    "youngs_modulus,poisson_ratio,density,gravity,shear_coefficient,plane_strain";
+// ---------------------------------------------------------------------------------------------
+// Columns: every column of every command, its unit and meaning, in one place. `--columns help` prints a
+// command's as CSV; the README lists them; a test checks that every header name is documented here.
+
+struct ColumnDoc {
+  std::string_view name, unit, meaning;
+};
+
+const std::vector<ColumnDoc> kColumnDocs = {
+    {"scene", "", "scene number in the sweep, from 1"},
+    {"curve", "", "generator curve family"},
+    {"eccentricity", "", "pointed arch: centres eccentricity x span beyond mid-span (0 semicircle, 0.5 equilateral)"},
+    {"rise_ratio", "", "rise / span: as asked, or for curves without --rise-ratio their own (12 digits)"},
+    {"haunch_angle", "deg", "three- and four-centred arches: angle turned by the haunch arc"},
+    {"crown_angle", "deg", "four-centred arch: tangent's angle at the pointed crown"},
+    {"span", "m", "span L between the springings, on the axis"},
+    {"thickness_ratio", "", "thickness t / span"},
+    {"support_displacement_ratio", "", "outward movement d of each springing / span"},
+    {"youngs_modulus", "Pa", "Young's modulus E"},
+    {"poisson_ratio", "", "Poisson's ratio nu"},
+    {"density", "kg/m^3", "density rho"},
+    {"gravity", "m/s^2", "gravitational acceleration g"},
+    {"shear_coefficient", "", "Timoshenko shear coefficient k"},
+    {"plane_strain", "", "true: plane strain, E / (1 - nu^2); false: plane stress"},
+    {"method", "", "method that produced the numbers (closed-form, shooting, multiple-shooting)"},
+    {"integrator", "", "CVODE's method (adams, bdf); empty for the closed form"},
+    {"rtol", "", "relative error asked (--rtol); success guarantees it"},
+    {"status", "", "success, or why not (README: What status promises)"},
+    {"H", "N/m", "horizontal reaction: inward push of a support on the arch, per metre of vault"},
+    {"V", "N/m", "vertical reaction of a support: half the weight, per metre of vault"},
+    {"H_over_V", "", "normalized horizontal reaction H / V"},
+    {"max_thrust_eccentricity", "%", "largest |thrust_eccentricity| along the arch; empty if N is not a compression everywhere"},
+    {"max_thrust_eccentricity_at", "m", "arc length from the left springing where it occurs"},
+    {"thrust_in_kern", "", "true: compression everywhere and |thrust_eccentricity| <= 100 % (no tension in the section)"},
+    {"thrust_in_section", "", "true: compression everywhere and |thrust_eccentricity| <= 300 % (resultant inside the masonry)"},
+    {"steps", "", "CVODE steps, all solves of the row"},
+    {"rhs_evaluations", "", "CVODE right-hand-side evaluations"},
+    {"segments", "", "shooting segments (arcs for the closed form)"},
+    {"condition_estimate", "", "Skeel condition number of the boundary-value problem"},
+    {"error_estimate", "", "estimated relative error of the row's numbers (thrust eccentricities in units of the kern)"},
+    {"boundary_residual", "", "largest residual of the six boundary conditions, scaled units"},
+    {"equilibrium_residual", "", "largest residual of the half arch's equilibrium / half weight"},
+    {"message", "", "why the status is not success; empty on success"},
+    {"s", "m", "arc length from the left springing"},
+    {"x", "m", "axis point, horizontal from the left springing"},
+    {"y", "m", "axis point, up from the springing line"},
+    {"theta", "rad", "tangent angle to the horizontal, in the direction of increasing s"},
+    {"kappa", "1/m", "curvature d theta / ds (negative: turning downwards)"},
+    {"Ux", "m", "horizontal displacement of the axis"},
+    {"Uy", "m", "vertical displacement of the axis"},
+    {"psi", "rad", "rotation of the cross-section, counter-clockwise positive"},
+    {"N", "N/m", "normal force, negative in compression"},
+    {"shear_force", "N/m", "shear force (V of the model's equations)"},
+    {"M", "N m/m", "bending moment: couple of the part beyond s on the part before s"},
+    {"thrust_eccentricity", "%", "e = 600 M / (N t): offset of the compression in per cent of the kern half-width t/6; < 0 towards the extrados"},
+    {"thrust_x", "m", "where the resultant crosses the section (line of thrust), horizontal"},
+    {"thrust_y", "m", "where the resultant crosses the section (line of thrust), vertical"},
+    {"warning", "", "tension, outside_section (|e| > 300 %), outside_kern (|e| > 100 %), no_normal_force, or empty"},
+    {"reference_method", "", "check: what the row is compared with"},
+    {"reference_status", "", "check: the reference's own status"},
+    {"reference_error", "", "check and bench: the reference's own estimated error"},
+    {"reference_H_over_V", "", "check: the reference's H / V"},
+    {"relative_difference", "", "check: |H/V - reference| / max(|reference|, 0.01)"},
+    {"tolerance", "", "check: the rtol the row is held to"},
+    {"within_tolerance", "", "check: true when the row says success and relative_difference <= rtol + reference_error"},
+    {"chosen_method", "", "bench: the method auto chose (or the method itself)"},
+    {"error_H_over_V", "", "bench: true error of H/V against the reference"},
+    {"error_profile", "", "bench: true error of the profile (profile_difference) against the reference"},
+    {"median_seconds", "s", "bench: median time of one solve"},
+};
+
+const ColumnDoc* find_column_doc(std::string_view name) {
+  for (const ColumnDoc& d : kColumnDocs)
+    if (d.name == name) return &d;
+  return nullptr;
+}
+
+const std::vector<std::string> kSceneColumns = {
+    "scene", "curve", "eccentricity", "rise_ratio", "haunch_angle", "crown_angle", "span", "thickness_ratio",
+    "support_displacement_ratio", "youngs_modulus", "poisson_ratio", "density", "gravity", "shear_coefficient",
+    "plane_strain"};
+
+// The --columns and --all-columns options of a command.
+struct ColumnText {
+  std::string columns;
+  bool all_columns = false;
+  const CLI::Option* option = nullptr;  // --columns, to tell an empty list from none given
+  bool given() const { return option && option->count() > 0; }
+};
+
+// A command's columns in their full order, and which of them are printed: by default the scene number,
+// the inputs that vary in the sweep and the command's results; `--columns a,b` chooses (in the full
+// order), `--all-columns` prints everything.
+class Columns {
+ public:
+  Columns(std::vector<std::string> results, std::vector<std::string> defaults)
+      : all_(kSceneColumns), defaults_(std::move(defaults)) {
+    all_.insert(all_.end(), results.begin(), results.end());
+  }
+  const std::vector<std::string>& all() const { return all_; }
+
+  // The user's --columns and --all-columns.
+  void select(const ColumnText& ct, const std::vector<std::string>& varying_inputs) {
+    const std::string& text = ct.columns;
+    if (ct.given() && ct.all_columns) throw UsageError("--columns: give either --columns or --all-columns");
+    keep_.assign(all_.size(), ct.all_columns);
+    if (ct.all_columns) return;
+    std::vector<std::string> wanted;
+    if (!ct.given()) {
+      wanted = defaults_;
+      wanted.push_back("scene");
+      wanted.insert(wanted.end(), varying_inputs.begin(), varying_inputs.end());
+    } else {
+      for (std::size_t pos = 0; pos <= text.size();) {
+        const std::size_t comma = std::min(text.find(',', pos), text.size());
+        const std::string name = text.substr(pos, comma - pos);
+        if (std::find(all_.begin(), all_.end(), name) == all_.end())
+          throw UsageError(fmt::format("--columns: no column '{}' in this command's output{} (--columns help lists them)",
+                                       name.substr(0, 60), suggestion(name)));
+        wanted.push_back(name);
+        pos = comma + 1;
+      }
+    }
+    for (std::size_t i = 0; i < all_.size(); ++i)
+      keep_[i] = std::find(wanted.begin(), wanted.end(), all_[i]) != wanted.end();
+  }
+  const std::vector<bool>* keep() const { return &keep_; }
+  bool selected(std::string_view name) const {
+    for (std::size_t i = 0; i < all_.size(); ++i)
+      if (all_[i] == name) return keep_[i];
+    return false;
+  }
+  std::string header() const {
+    std::string out;
+    for (std::size_t i = 0; i < all_.size(); ++i)
+      if (keep_[i]) out += (out.empty() ? "" : ",") + all_[i];
+    return out + "\n";
+  }
+  // --columns help: the command's columns, their units and meanings, as CSV.
+  std::string help() const {
+    std::string out = "column,unit,meaning\n";
+    CsvRow row;
+    for (const std::string& name : all_) {
+      const ColumnDoc* d = find_column_doc(name);
+      row.add(name).add(d ? d->unit : "").add(d ? d->meaning : "");
+      out += row.take();
+    }
+    return out;
+  }
+
+ private:
+  // " (did you mean 'x'?)" for the column closest to a misspelt name, by edit distance.
+  std::string suggestion(const std::string& name) const {
+    std::size_t best = std::string::npos, best_distance = 3;
+    for (std::size_t i = 0; i < all_.size(); ++i) {
+      const std::string& c = all_[i];
+      std::vector<std::size_t> row(c.size() + 1);
+      for (std::size_t j = 0; j <= c.size(); ++j) row[j] = j;
+      for (std::size_t a = 1; a <= name.size() && name.size() < 100; ++a) {
+        std::size_t diagonal = row[0];
+        row[0] = a;
+        for (std::size_t j = 1; j <= c.size(); ++j) {
+          const std::size_t up = row[j];
+          row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (name[a - 1] == c[j - 1] ? 0 : 1)});
+          diagonal = up;
+        }
+      }
+      if (name.size() < 100 && row[c.size()] < best_distance) {
+        best_distance = row[c.size()];
+        best = i;
+      }
+    }
+    return best == std::string::npos ? "" : " (did you mean '" + all_[best] + "'?)";
+  }
+  std::vector<std::string> all_, defaults_;
+  std::vector<bool> keep_;
+};
+
+void add_column_options(CLI::App& cmd, ColumnText& text) {
+  text.option = cmd.add_option("--columns", text.columns,
+                 "columns to print, comma-separated, in the output's order; 'help' lists every column with its "
+                 "unit (default: scene, the inputs that vary, the results)");
+  cmd.add_flag("--all-columns", text.all_columns, "print every column, the inputs that do not vary included");
+}
 
 // A parameter that does not apply to the scene's curve is an empty field, never "nan".
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -263,17 +458,25 @@ void add_parameter(CsvRow& row, double value) {
   else row.add(value);
 }
 
+// Twelve significant digits: a rise derived from the geometry (exact to about 1e-15) prints as the
+// number it is meant to be, 0.5 for the semicircle and not 0.4999999999999999.
+double rounded(double value) {
+  if (!std::isfinite(value) || value == 0) return value;
+  return std::stod(fmt::format("{:.12g}", value));
+}
+
 // curve may be null (a scene whose curve could not be made): its rise is then the one asked for.
 void add_scene_columns(CsvRow& row, const SceneParameters& p, const Curve* curve) {
-  row.add(p.curve);
+  row.add(static_cast<std::int64_t>(p.scene)).add(p.curve);
   add_parameter(row, p.eccentricity);
-  if (curve) row.add(curve->rise() / curve->span());  // the actual rise of every curve
-  else add_parameter(row, p.rise_ratio);
+  if (!std::isnan(p.rise_ratio)) row.add(p.rise_ratio);  // the rise asked for
+  else if (curve) row.add(rounded(curve->rise() / curve->span()));
+  else row.add(std::string_view{});
   add_parameter(row, p.haunch_angle);
   add_parameter(row, p.crown_angle);
   row.add(p.span).add(p.thickness_ratio).add(p.support_displacement_ratio);
   row.add(p.youngs_modulus).add(p.poisson_ratio).add(p.density).add(p.gravity).add(p.shear_coefficient);
-  row.add(p.plane_strain ? "1" : "0");
+  row.add_bool(p.plane_strain);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -311,14 +514,15 @@ std::string number_problem(const std::string& text, bool count) {
 const CLI::Validator kFiniteNumber([](std::string& text) { return number_problem(text, false); }, "NUMBER");
 const CLI::Validator kCount([](std::string& text) { return number_problem(text, true); }, "COUNT");
 
-// bench takes lists of methods and integrators instead (--methods, --integrators).
+// bench binds --method, --integrator and --rtol itself, as lists.
 void add_solver_options(CLI::App& cmd, Options& o, SolverText& text, bool with_method = true,
-                        bool with_integrator = true) {
+                        bool with_integrator = true, bool with_rtol = true) {
   if (with_method)
     cmd.add_option("--method", text.method, "closed-form, shooting, multiple-shooting or auto")->capture_default_str();
   if (with_integrator)
     cmd.add_option("--integrator", text.integrator, "CVODE's method: adams or bdf")->capture_default_str();
-  cmd.add_option("--rtol", o.rtol,
+  if (with_rtol)
+    cmd.add_option("--rtol", o.rtol,
                  "relative error asked of every printed number, 1e-14 .. 0.1; status success guarantees it. CVODE "
                  "itself runs at rtol/10 (adams) or rtol/1000 (bdf), and a verifying solve at rtol/16")
       ->check(kFiniteNumber)->capture_default_str();
@@ -356,27 +560,26 @@ void check_options(const Options& o) {
   if (!o.is_valid(&why)) throw UsageError(as_option_message(why));
 }
 
-const char* kSolutionHeader =
-    "method,integrator,rtol,status,H,V,H_over_V,steps,rhs_evaluations,segments,condition_estimate,"
-    "error_estimate,boundary_residual,equilibrium_residual,message";
-
 // The status of a row whose options are each valid but make no scene together (Scene::validate or the
 // curve's factory refused the combination); its message says why. Not a library Status: solve() is
 // never called for it.
 constexpr std::string_view kInvalidScene = "invalid_scene";
 
-void add_solution_columns(CsvRow& row, const Solution& sol, const Options& o) {
-  const bool numeric = sol.method != Method::closed_form;
-  row.add(to_string(sol.method)).add(numeric ? to_string(o.integrator) : "").add(o.rtol);
-  row.add(to_string(sol.status)).add(sol.H).add(sol.V).add(sol.H_over_V);
-  const Diagnostics& d = sol.diagnostics;
-  row.add(d.steps).add(d.rhs_evaluations).add(d.segments).add(d.condition_estimate).add(d.error_estimate);
-  row.add(d.boundary_residual).add(d.equilibrium_residual).add(sol.message);
+// A row with the scene's inputs and a few named fields (status, message, ...); every other field empty:
+// an impossible scene, or a solve that produced no numbers.
+std::string sparse_row(const Columns& columns, const SceneParameters& p, const Curve* curve,
+                       const std::vector<std::pair<std::string_view, std::string>>& fields) {
+  CsvRow row(columns.keep());
+  add_scene_columns(row, p, curve);
+  for (std::size_t i = kSceneColumns.size(); i < columns.all().size(); ++i) {
+    const auto it = std::find_if(fields.begin(), fields.end(), [&](const auto& f) { return f.first == columns.all()[i]; });
+    row.add(it == fields.end() ? std::string_view{} : std::string_view(it->second));
+  }
+  return row.take();
 }
 
-// Empty fields, n of them: no number.
-void add_empty(CsvRow& row, int n) {
-  for (int k = 0; k < n; ++k) row.add(std::string_view{});
+std::string invalid_scene_row(const Columns& columns, const SceneParameters& p, const ScenePlan::Built& b) {
+  return sparse_row(columns, p, b.curve.get(), {{"status", std::string(kInvalidScene)}, {"message", b.problem}});
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -539,29 +742,46 @@ bool for_each_scene(const ScenePlan& plan, RowWriter& writer, int threads, Solve
   return all_ok;
 }
 
-int run_thrust(SceneOptions& so, const CLI::App& cmd, const Options& o, int threads, std::ostream& out) {
+const Columns kThrustColumns(
+    {"method", "integrator", "rtol", "status", "H", "V", "H_over_V", "max_thrust_eccentricity",
+     "max_thrust_eccentricity_at", "thrust_in_kern", "thrust_in_section", "steps", "rhs_evaluations", "segments",
+     "condition_estimate", "error_estimate", "boundary_residual", "equilibrium_residual", "message"},
+    {"method", "status", "H", "V", "H_over_V", "max_thrust_eccentricity", "max_thrust_eccentricity_at",
+     "thrust_in_kern", "thrust_in_section", "error_estimate", "message"});
+
+// Stations at which a verified solve checks the profile when the thrust line is summarised.
+constexpr int kSummaryStations = 65;
+
+int run_thrust(SceneOptions& so, const CLI::App& cmd, Options o, const ColumnText& ct, int threads, std::ostream& out) {
   check_options(o);
   const ScenePlan plan(so, cmd);
+  Columns columns = kThrustColumns;
+  columns.select(ct, plan.varying_inputs());
+  const bool summary = columns.selected("max_thrust_eccentricity") || columns.selected("max_thrust_eccentricity_at") ||
+                       columns.selected("thrust_in_kern") || columns.selected("thrust_in_section");
+  // The summary prints eccentricities: their accuracy must be part of the error estimate.
+  if (summary) o.stations = kSummaryStations;
   RowWriter writer(out);
-  writer.write(std::string(kSceneHeader) + "," + kSolutionHeader + "\n");
+  writer.write(columns.header());
   const bool all_ok = for_each_scene(
       plan, writer, threads,
       [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
-        CsvRow row;
+        CsvRow row(columns.keep());
         const Solution sol = solve(scene, o);
+        const ThrustLineSummary line = summary ? summarize_thrust_line(sol) : ThrustLineSummary{};
         add_scene_columns(row, p, scene.curve.get());
-        add_solution_columns(row, sol, o);
+        row.add(to_string(sol.method)).add(sol.method != Method::closed_form ? to_string(o.integrator) : "").add(o.rtol);
+        row.add(to_string(sol.status)).add(sol.H).add(sol.V).add(sol.H_over_V);
+        row.add(line.max_abs_e).add(line.max_abs_e_at);
+        if (line.ok) row.add_bool(line.in_kern).add_bool(line.in_section);
+        else row.add(std::string_view{}).add(std::string_view{});
+        const Diagnostics& d = sol.diagnostics;
+        row.add(d.steps).add(d.rhs_evaluations).add(d.segments).add(d.condition_estimate).add(d.error_estimate);
+        row.add(d.boundary_residual).add(d.equilibrium_residual).add(sol.message);
         emit(row.take());
         return sol.ok();
       },
-      [&](const SceneParameters& p, const ScenePlan::Built& b) {
-        CsvRow row;
-        add_scene_columns(row, p, b.curve.get());
-        row.add(to_string(o.method)).add(std::string_view{}).add(o.rtol).add(kInvalidScene);
-        add_empty(row, 10);
-        row.add(b.problem);
-        return row.take();
-      });
+      [&](const SceneParameters& p, const ScenePlan::Built& b) { return invalid_scene_row(columns, p, b); });
   return all_ok ? kExitOk : kExitNotConverged;
 }
 
@@ -577,15 +797,21 @@ std::string_view section_warning(const ArchState& st) {
   return "";
 }
 
-const char* kProfileColumns = "s,x,y,theta,Ux,Uy,psi,N,V,M,e,thrust_x,thrust_y,warning";
-constexpr int kProfileColumnCount = 14;
+const Columns kProfileColumns(
+    {"method", "status", "H_over_V", "error_estimate", "message", "s", "x", "y", "theta", "Ux", "Uy", "psi", "N",
+     "shear_force", "M", "thrust_eccentricity", "thrust_x", "thrust_y", "warning"},
+    {"status", "message", "s", "x", "y", "theta", "Ux", "Uy", "psi", "N", "shear_force", "M", "thrust_eccentricity",
+     "thrust_x", "thrust_y", "warning"});
 constexpr int kProfilePiece = 4096;  // stations sampled and written at a time
 
-int run_profile(SceneOptions& so, const CLI::App& cmd, Options o, int threads, std::ostream& out) {
+int run_profile(SceneOptions& so, const CLI::App& cmd, Options o, const ColumnText& ct, int threads,
+                std::ostream& out) {
   check_stations(o.stations);
   check_options(o);
   const ScenePlan plan(so, cmd);
   check_rows(plan.size(), o.stations);
+  Columns columns = kProfileColumns;
+  columns.select(ct, plan.varying_inputs());
   const int stations = o.stations;
   // The solve verifies the profile at kVerificationStations at most; longer profiles are sampled
   // piece by piece from the verified field below, so that memory does not grow with the stations.
@@ -594,27 +820,22 @@ int run_profile(SceneOptions& so, const CLI::App& cmd, Options o, int threads, s
   // per scene, scenes are solved one after another instead, to keep memory bounded.
   if (stations > kProfilePiece) threads = 1;
   RowWriter writer(out);
-  writer.write(std::string(kSceneHeader) + ",method,status,H_over_V,error_estimate,message," + kProfileColumns + "\n");
-  auto add_head = [](CsvRow& row, const SceneParameters& p, const Curve* curve, std::string_view method,
-                     std::string_view status, double H_over_V, double estimate, std::string_view message) {
-    add_scene_columns(row, p, curve);
-    row.add(method).add(status).add(H_over_V).add(estimate).add(message);
-  };
+  writer.write(columns.header());
   const bool all_ok = for_each_scene(
       plan, writer, threads,
       [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
-        CsvRow row;
         const Solution sol = solve(scene, o);
-        auto head = [&] {
-          add_head(row, p, scene.curve.get(), to_string(sol.method), to_string(sol.status), sol.H_over_V,
-                   sol.diagnostics.error_estimate, sol.message);
-        };
         if (!sol.field) {  // unsolved: one row that says so, no numbers
-          head();
-          add_empty(row, kProfileColumnCount);
-          emit(row.take());
+          emit(sparse_row(columns, p, scene.curve.get(),
+                          {{"method", to_string(sol.method)}, {"status", to_string(sol.status)}, {"message", sol.message}}));
           return false;
         }
+        // The scene's fields are formatted once, then each station's after them.
+        CsvRow row(columns.keep());
+        add_scene_columns(row, p, scene.curve.get());
+        row.add(to_string(sol.method)).add(to_string(sol.status)).add(sol.H_over_V).add(sol.diagnostics.error_estimate);
+        row.add(sol.message);
+        row.mark();
         for (int first = 0; first < stations; first += kProfilePiece) {
           const int count = std::min(kProfilePiece, stations - first);
           const std::vector<ArchState> piece =
@@ -622,21 +843,15 @@ int run_profile(SceneOptions& so, const CLI::App& cmd, Options o, int threads, s
                                      : sample_stations(sol, stations, first, count);
           std::string text;
           for (const ArchState& st : piece) {
-            head();
             row.add(st.s).add(st.x).add(st.y).add(st.theta).add(st.Ux).add(st.Uy).add(st.psi);
             row.add(st.N).add(st.V).add(st.M).add(st.e).add(st.thrust_x).add(st.thrust_y).add(section_warning(st));
-            text += row.take();
+            text += row.take_to_mark();
           }
           emit(text);
         }
         return sol.ok();
       },
-      [&](const SceneParameters& p, const ScenePlan::Built& b) {
-        CsvRow row;
-        add_head(row, p, b.curve.get(), to_string(o.method), kInvalidScene, kNaN, kNaN, b.problem);
-        add_empty(row, kProfileColumnCount);
-        return row.take();
-      });
+      [&](const SceneParameters& p, const ScenePlan::Built& b) { return invalid_scene_row(columns, p, b); });
   return all_ok ? kExitOk : kExitNotConverged;
 }
 
@@ -672,20 +887,27 @@ double thrust_difference(double H_over_V, double reference) {
   return std::abs(H_over_V - reference) / std::max(std::abs(reference), 0.01);
 }
 
+const Columns kCheckColumns(
+    {"method", "integrator", "rtol", "segments", "status", "H_over_V", "reference_method", "reference_status",
+     "reference_error", "reference_H_over_V", "relative_difference", "tolerance", "within_tolerance", "message"},
+    {"method", "integrator", "rtol", "segments", "status", "H_over_V", "reference_method", "reference_status",
+     "reference_error", "reference_H_over_V", "relative_difference", "tolerance", "within_tolerance", "message"});
+
 // Every applicable method on every scene, against the reference. A row is within tolerance when the
 // method says success and its difference from the reference is within rtol plus the reference's own
 // error (a flagged reference is not the method's failure: its status and error are printed).
-int run_check(SceneOptions& so, const CLI::App& cmd, const Options& base, int threads, std::ostream& out) {
+int run_check(SceneOptions& so, const CLI::App& cmd, const Options& base, const ColumnText& ct, int threads,
+              std::ostream& out) {
   check_options(base);
   const ScenePlan plan(so, cmd);
+  Columns columns = kCheckColumns;
+  columns.select(ct, plan.varying_inputs());
   RowWriter writer(out);
-  writer.write(std::string(kSceneHeader) +
-               ",method,integrator,rtol,segments,status,H_over_V,reference_method,reference_status,reference_error,"
-               "reference_H_over_V,relative_difference,tolerance,within_tolerance,message\n");
+  writer.write(columns.header());
   const bool all_ok = for_each_scene(
       plan, writer, threads,
       [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
-        CsvRow row;
+        CsvRow row(columns.keep());
         const Solution reference = reference_solution(scene, base);
         const std::string reference_method = reference.method == Method::closed_form
                                                  ? "closed-form"
@@ -706,7 +928,7 @@ int run_check(SceneOptions& so, const CLI::App& cmd, const Options& base, int th
           row.add(to_string(sol.method)).add(m == Method::closed_form ? "" : to_string(o.integrator)).add(o.rtol);
           row.add(sol.diagnostics.segments).add(to_string(sol.status)).add(sol.H_over_V).add(reference_method);
           row.add(to_string(reference.status)).add(ref_error).add(reference.H_over_V).add(diff).add(o.rtol);
-          if (known) row.add(within ? "yes" : "no");
+          if (known) row.add_bool(within);
           else row.add(std::string_view{});
           row.add(sol.message);
           text += row.take();
@@ -714,38 +936,38 @@ int run_check(SceneOptions& so, const CLI::App& cmd, const Options& base, int th
         emit(text);
         return ok;
       },
-      [&](const SceneParameters& p, const ScenePlan::Built& b) {
-        CsvRow row;
-        add_scene_columns(row, p, b.curve.get());
-        row.add(std::string_view{}).add(std::string_view{}).add(base.rtol).add(std::string_view{}).add(kInvalidScene);
-        add_empty(row, 8);
-        row.add(b.problem);
-        return row.take();
-      });
+      [&](const SceneParameters& p, const ScenePlan::Built& b) { return invalid_scene_row(columns, p, b); });
   return all_ok ? kExitOk : kExitNotConverged;
 }
 
+const Columns kCurveColumns({"status", "message", "s", "x", "y", "theta", "kappa"},
+                            {"status", "message", "s", "x", "y", "theta", "kappa"});
+
 // The geometry: s, x, y, theta, kappa at equally spaced stations over the whole arch.
-int run_curve(SceneOptions& so, const CLI::App& cmd, int stations, int threads, std::ostream& out) {
+int run_curve(SceneOptions& so, const CLI::App& cmd, int stations, const ColumnText& ct, int threads,
+              std::ostream& out) {
   check_stations(stations);
   const ScenePlan plan(so, cmd);
   check_rows(plan.size(), stations);
+  Columns columns = kCurveColumns;
+  columns.select(ct, plan.varying_inputs());
   RowWriter writer(out);
-  writer.write(std::string(kSceneHeader) + ",status,message,s,x,y,theta,kappa\n");
+  writer.write(columns.header());
   const bool all_ok = for_each_scene(
       plan, writer, threads,
       [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
-        CsvRow row;
+        CsvRow row(columns.keep());
         const Curve& curve = *scene.curve;
+        add_scene_columns(row, p, &curve);
+        row.add("success").add(std::string_view{});
+        row.mark();
         const double S = curve.half_length();
         std::string text;
         for (int k = 0; k < stations; ++k) {
           const double s = 2.0 * S * k / (stations - 1);
           const CurvePoint pt = curve.at_whole_arch(s);
-          add_scene_columns(row, p, &curve);
-          row.add("success").add(std::string_view{});
           row.add(s).add(pt.x).add(pt.y).add(pt.theta).add(pt.kappa);
-          text += row.take();
+          text += row.take_to_mark();
           if (text.size() >= (1u << 16)) {
             emit(text);
             text.clear();
@@ -754,13 +976,7 @@ int run_curve(SceneOptions& so, const CLI::App& cmd, int stations, int threads, 
         emit(text);
         return true;
       },
-      [&](const SceneParameters& p, const ScenePlan::Built& b) {
-        CsvRow row;
-        add_scene_columns(row, p, b.curve.get());
-        row.add(kInvalidScene).add(b.problem);
-        add_empty(row, 5);
-        return row.take();
-      });
+      [&](const SceneParameters& p, const ScenePlan::Built& b) { return invalid_scene_row(columns, p, b); });
   return all_ok ? kExitOk : kExitNotConverged;
 }
 
@@ -768,8 +984,17 @@ constexpr int kBenchProfileStations = 41;
 
 // Time per solve (median over repeats) and true error against the reference, one row per method,
 // integrator and rtol. Failed runs stay in the table with their status.
+const Columns kBenchColumns(
+    {"method", "integrator", "rtol", "segments", "status", "chosen_method", "H_over_V", "error_H_over_V",
+     "error_profile", "error_estimate", "reference_error", "median_seconds", "steps", "rhs_evaluations",
+     "condition_estimate", "message"},
+    {"method", "integrator", "rtol", "segments", "status", "chosen_method", "H_over_V", "error_H_over_V",
+     "error_profile", "error_estimate", "reference_error", "median_seconds", "steps", "rhs_evaluations",
+     "condition_estimate", "message"});
+
 int run_bench(SceneOptions& so, const CLI::App& cmd, const Options& base, const std::string& methods_text,
-              const std::string& integrators_text, const std::string& rtols_text, int repeats, std::ostream& out) {
+              const std::string& integrators_text, const std::string& rtols_text, int repeats, const ColumnText& ct,
+              std::ostream& out) {
   check_options(base);
   if (repeats < 1 || repeats > 100000) throw UsageError(fmt::format("--repeats: must lie in [1, 100000], got {}", repeats));
   auto split = [](const std::string& text) {
@@ -782,25 +1007,25 @@ int run_bench(SceneOptions& so, const CLI::App& cmd, const Options& base, const 
     return names;
   };
   std::vector<Method> methods;
-  for (const std::string& name : split(methods_text)) methods.push_back(lookup(kMethods, name, "--methods"));
+  for (const std::string& name : split(methods_text)) methods.push_back(lookup(kMethods, name, "--method"));
   std::vector<Integrator> integrators;
   for (const std::string& name : split(integrators_text))
-    integrators.push_back(lookup(kIntegrators, name, "--integrators"));
-  const std::vector<double> rtols = parse_values(rtols_text, "--rtols");
+    integrators.push_back(lookup(kIntegrators, name, "--integrator"));
+  const std::vector<double> rtols = parse_values(rtols_text, "--rtol");
   for (double r : rtols)
-    if (!(r >= 1e-14 && r <= 0.1)) throw UsageError(fmt::format("--rtols: must lie in [1e-14, 0.1], got {}", r));
+    if (!(r >= 1e-14 && r <= 0.1)) throw UsageError(fmt::format("--rtol: must lie in [1e-14, 0.1], got {}", r));
   const ScenePlan plan(so, cmd);
   if (plan.size() * methods.size() * integrators.size() * rtols.size() > kMaxValues)
-    throw UsageError(fmt::format("--rtols: {} scenes x {} methods x {} integrators x {} tolerances exceed {} rows",
+    throw UsageError(fmt::format("--rtol: {} scenes x {} methods x {} integrators x {} tolerances exceed {} rows",
                                  plan.size(), methods.size(), integrators.size(), rtols.size(), kMaxValues));
+  Columns columns = kBenchColumns;
+  columns.select(ct, plan.varying_inputs());
   RowWriter writer(out);
-  writer.write(std::string(kSceneHeader) +
-               ",method,integrator,rtol,segments,status,chosen_method,H_over_V,error_H_over_V,error_profile,"
-               "error_estimate,reference_error,median_seconds,steps,rhs_evaluations,condition_estimate,message\n");
+  writer.write(columns.header());
   for_each_scene(
       plan, writer, 1,  // one thread: the timings are the point
       [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
-        CsvRow row;
+        CsvRow row(columns.keep());
         Options ref_options = base;
         ref_options.stations = kBenchProfileStations;
         const Solution reference = reference_solution(scene, ref_options);
@@ -849,15 +1074,7 @@ int run_bench(SceneOptions& so, const CLI::App& cmd, const Options& base, const 
         }
         return true;
       },
-      [&](const SceneParameters& p, const ScenePlan::Built& b) {
-        CsvRow row;
-        add_scene_columns(row, p, b.curve.get());
-        row.add(std::string_view{}).add(std::string_view{}).add(std::string_view{}).add(std::string_view{});
-        row.add(kInvalidScene);
-        add_empty(row, 10);
-        row.add(b.problem);
-        return row.take();
-      });
+      [&](const SceneParameters& p, const ScenePlan::Built& b) { return invalid_scene_row(columns, p, b); });
   return kExitOk;
 }
 
@@ -894,14 +1111,24 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
 
   CLI::App* bench = app.add_subcommand("bench", "median time per solve and true error, per method and rtol");
   add_scene_options(*bench, bench_scene);
-  add_solver_options(*bench, bench_options, bench_text, false, false);
+  add_solver_options(*bench, bench_options, bench_text, false, false, false);
   std::string bench_methods = "closed-form,shooting,multiple-shooting", bench_rtols = "1e-6,1e-8,1e-10";
   std::string bench_integrators = "adams";
   int repeats = 21;
-  bench->add_option("--methods", bench_methods, "comma-separated methods (auto included)")->capture_default_str();
-  bench->add_option("--integrators", bench_integrators, "comma-separated: adams, bdf")->capture_default_str();
-  bench->add_option("--rtols", bench_rtols, "tolerances: list or range")->capture_default_str();
+  // The same names as every other command's; lists here (the plural spellings are kept for old scripts).
+  bench->add_option("--method,--methods", bench_methods, "methods, comma-separated (auto included)")->capture_default_str();
+  bench->add_option("--integrator,--integrators", bench_integrators, "CVODE's methods, comma-separated: adams, bdf")
+      ->capture_default_str();
+  bench->add_option("--rtol,--rtols", bench_rtols, "tolerances: value, list or range, each in [1e-14, 0.1]")
+      ->capture_default_str();
   bench->add_option("--repeats", repeats, "solves per row; the median time is printed")->check(kCount)->capture_default_str();
+
+  ColumnText thrust_columns, profile_columns, check_columns, curve_columns, bench_columns;
+  add_column_options(*thrust, thrust_columns);
+  add_column_options(*profile, profile_columns);
+  add_column_options(*check, check_columns);
+  add_column_options(*curve, curve_columns);
+  add_column_options(*bench, bench_columns);
 
   // Sweeps use every core by default; the rows come out in the same order, byte for byte, with any N.
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -933,12 +1160,25 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     apply_solver_text(check_options_, check_text);
     apply_solver_text(bench_options, bench_text);
     if (threads < 1 || threads > 256) throw UsageError(fmt::format("--threads: must lie in [1, 256], got {}", threads));
-    if (thrust->parsed()) return run_thrust(thrust_scene, *thrust, thrust_options, threads, out);
-    if (profile->parsed()) return run_profile(profile_scene, *profile, profile_options, threads, out);
-    if (check->parsed()) return run_check(check_scene, *check, check_options_, threads, out);
-    if (curve->parsed()) return run_curve(curve_scene, *curve, curve_stations, threads, out);
+    // --columns help: the command's columns with units and meanings, nothing solved.
+    const std::pair<CLI::App*, std::pair<const ColumnText*, const Columns*>> helps[] = {
+        {thrust, {&thrust_columns, &kThrustColumns}},  {profile, {&profile_columns, &kProfileColumns}},
+        {check, {&check_columns, &kCheckColumns}},     {curve, {&curve_columns, &kCurveColumns}},
+        {bench, {&bench_columns, &kBenchColumns}}};
+    for (const auto& [cmd, what] : helps)
+      if (cmd->parsed() && what.first->columns == "help") {
+        RowWriter writer(out);
+        writer.write(what.second->help());
+        writer.flush();
+        return kExitOk;
+      }
+    if (thrust->parsed()) return run_thrust(thrust_scene, *thrust, thrust_options, thrust_columns, threads, out);
+    if (profile->parsed())
+      return run_profile(profile_scene, *profile, profile_options, profile_columns, threads, out);
+    if (check->parsed()) return run_check(check_scene, *check, check_options_, check_columns, threads, out);
+    if (curve->parsed()) return run_curve(curve_scene, *curve, curve_stations, curve_columns, threads, out);
     if (bench->parsed()) return run_bench(bench_scene, *bench, bench_options, bench_methods, bench_integrators, bench_rtols,
-                                            repeats, out);
+                                            repeats, bench_columns, out);
   } catch (const UsageError& e) {
     err << "ogive: " << e.what() << "\n";
     return kExitUsage;

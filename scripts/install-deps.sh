@@ -4,7 +4,7 @@
 # clang and libclang-rt-14-dev (libFuzzer, the sanitizers' runtimes for clang) serve scripts/fuzz.sh.
 set -euo pipefail
 packages=(cmake g++ make libsundials-dev libeigen3-dev libfmt-dev libcli11-dev doctest-dev clang libclang-rt-14-dev)
-if [[ "${1:-}" == "--charts" ]]; then packages+=(gnuplot-nox python3-scipy python3-numpy); fi
+if [[ "${1:-}" == "--charts" ]]; then packages+=(gnuplot-nox python3-scipy python3-numpy python3-pandas); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -214,7 +214,7 @@ def ogive_args(scene):
 
 
 def run_ogive(path, sub, args):
-    cmd = [path, sub, "--method", "closed-form"] + args
+    cmd = [path, sub, "--method", "closed-form", "--all-columns"] + args
     try:
         res = subprocess.run(cmd, capture_output=True, text=True, check=False)
     except OSError as e:
@@ -233,7 +233,7 @@ def ogive_reference_hv(path, scene):
     return float(rows[0]["H_over_V"])
 
 
-PROFILE_COLUMNS = ("s", "theta", "Ux", "Uy", "psi", "N", "V", "M")
+PROFILE_COLUMNS = ("s", "theta", "Ux", "Uy", "psi", "N", "shear_force", "M")
 
 
 def ogive_reference_profile(path, scene, stations):
@@ -312,7 +312,7 @@ def profile_error(sol, scene, ref):
 
     errors = [ratio(np.max(np.hypot(Ux - r["Ux"], Uy - r["Uy"])), np.max(np.hypot(r["Ux"], r["Uy"]))),
               ratio(np.max(np.abs(psi - r["psi"])), np.max(np.abs(r["psi"]))),
-              ratio(np.max(np.hypot(N - r["N"], V - r["V"])), np.max(np.hypot(r["N"], r["V"]))),
+              ratio(np.max(np.hypot(N - r["N"], V - r["shear_force"])), np.max(np.hypot(r["N"], r["shear_force"]))),
               ratio(np.max(np.abs(M - r["M"])), max(np.max(np.abs(r["M"])), np.max(np.abs(r["N"])) * t / 6))]
     worst = max(errors)
     return float(worst) if math.isfinite(worst) else math.nan
@@ -429,7 +429,7 @@ def main(argv):
                     sys.stderr.write(f"scipy_peer.py: eps={p['eccentricity']} tol={tol!r}: solve_bvp status "
                                      f"{sol.status}: {sol.message}\n")
                 row = {col: p[col] for _, col, _ in SCENE_OPTIONS}
-                row.update(curve="pointed", plane_strain=int(a.plane_strain), method="scipy-solve_bvp",
+                row.update(curve="pointed", plane_strain="true" if a.plane_strain else "false", method="scipy-solve_bvp",
                            integrator=integrator, rtol=tol, segments=sol.x.size - 1, status=status,
                            H_over_V=hv, error_H_over_V=err, error_profile=eprof,
                            median_seconds=statistics.median(seconds), steps=int(sol.niter),

@@ -89,7 +89,7 @@ def main():
                 out = run(args.ogive, ["bench"] + opts + ["--methods", method, "--integrators", integrator,
                                                           "--rtols", RTOLS, "--repeats", "1"] + flag)
                 for r in out:
-                    rows.append(dict(sweep=sweep, scene=label, verify=verify, **r))
+                    rows.append({**r, "sweep": sweep, "scene": label, "verify": verify})
     os.makedirs(os.path.dirname(args.csv), exist_ok=True)
     with open(args.csv, "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()), lineterminator="\n")

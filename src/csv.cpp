@@ -22,7 +22,7 @@ void append_number(std::string& out, double value) {
 }
 
 CsvRow& CsvRow::add(double value) {
-  separate();
+  if (!open_field()) return *this;
   // No number, no digits: an empty field reads as missing in gnuplot, pandas and spreadsheets, and a
   // row can never carry "nan" or "inf" that a script might take for a result.
   if (std::isfinite(value)) append_number(line_, value);
@@ -30,13 +30,13 @@ CsvRow& CsvRow::add(double value) {
 }
 
 CsvRow& CsvRow::add(std::int64_t value) {
-  separate();
+  if (!open_field()) return *this;
   line_ += std::to_string(value);
   return *this;
 }
 
 CsvRow& CsvRow::add(std::string_view text) {
-  separate();
+  if (!open_field()) return *this;
   // RFC 4180: a field with a separator, a quote or a line break is quoted, its quotes doubled. Messages
   // carry commas ("must lie in (0, 0.5)"); every other field ogive prints is a bare word or number.
   if (text.find_first_of(",\"\r\n") == std::string_view::npos) {
@@ -56,7 +56,18 @@ std::string CsvRow::take() {
   std::string out = std::move(line_);
   line_.clear();
   fields_ = 0;
+  index_ = 0;
+  mark_ = {};
   out += '\n';
+  return out;
+}
+
+std::string CsvRow::take_to_mark() {
+  std::string out = line_;
+  out += '\n';
+  line_.resize(mark_.size);
+  index_ = mark_.index;
+  fields_ = mark_.fields;
   return out;
 }
 

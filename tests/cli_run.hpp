@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "csv_fields.hpp"
 
 namespace ogive::test {
 
@@ -30,26 +31,8 @@ inline std::vector<std::string> lines(const std::string& text) {
   return out;
 }
 
-// One CSV line's fields (RFC 4180: a quoted field may hold commas and doubled quotes).
-inline std::vector<std::string> fields(const std::string& line) {
-  std::vector<std::string> out(1);
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') out.back() += line[++i];
-      else if (c == '"') quoted = false;
-      else out.back() += c;
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      out.emplace_back();
-    } else {
-      out.back() += c;
-    }
-  }
-  return out;
-}
+// One CSV line's fields.
+inline std::vector<std::string> fields(const std::string& line) { return csv_fields(line); }
 
 // The value of column `name` in data row `row` (1-based, after the header).
 inline std::string column(const std::string& csv, const std::string& name, std::size_t row = 1) {

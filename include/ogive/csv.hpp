@@ -5,27 +5,53 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace ogive {
 
 // Shortest decimal that reads back to the same double; "nan", "inf", "-inf" for the non-finite.
 void append_number(std::string& out, double value);
 
+// A row is built by adding every field of its command in the header's full order; with a selection,
+// the fields not selected are skipped unformatted, so that choosing columns costs nothing.
 class CsvRow {
  public:
+  CsvRow() = default;
+  // keep[i]: whether field i of the full order is printed (nullptr: every field). Must outlive the row.
+  explicit CsvRow(const std::vector<bool>* keep) : keep_(keep) {}
+
   CsvRow& add(double value);  // shortest round-trip; an empty field when not finite (no number)
   CsvRow& add(std::int64_t value);
   CsvRow& add(int value) { return add(static_cast<std::int64_t>(value)); }
   CsvRow& add(std::string_view text);  // quoted only where it must be
+  // Booleans have one spelling, true / false (what pandas reads as bool).
+  CsvRow& add_bool(bool value) { return add(std::string_view(value ? "true" : "false")); }
+  // Whether the next field is printed (and counts it): lets a caller skip computing a skipped field.
+  bool wants_next() const { return !keep_ || (index_ < keep_->size() && (*keep_)[index_]); }
   // The row with its newline; the row is cleared for reuse.
   std::string take();
+  // Rows that share their first fields (a scene's, on every station of a profile): mark() after
+  // adding them, and take_to_mark() returns the row and rewinds to the mark, formatted once.
+  void mark() { mark_ = {line_.size(), index_, fields_}; }
+  std::string take_to_mark();
 
  private:
-  void separate() {
-    if (fields_++ > 0) line_ += ',';
+  // Counts the field; false when it is not selected (nothing is written), else writes the separator.
+  bool open_field() {
+    const bool keep = wants_next();
+    ++index_;
+    if (keep && fields_++ > 0) line_ += ',';
+    return keep;
   }
+  struct Mark {
+    std::size_t size = 0, index = 0;
+    int fields = 0;
+  };
+  const std::vector<bool>* keep_ = nullptr;
+  std::size_t index_ = 0;
   std::string line_;
   int fields_ = 0;
+  Mark mark_;
 };
 
 }  // namespace ogive

@@ -25,6 +25,7 @@
 #include <fmt/format.h>
 
 #include "cli.hpp"
+#include "../csv_fields.hpp"
 #include "ogive/curve_families.hpp"
 #include "values.hpp"
 
@@ -124,6 +125,7 @@ inline void check_cli_value(std::string_view text, const std::vector<double>& va
   const bool geometry = c.args.front() == "curve";
   std::vector<std::string> args = c.args;
   args.push_back(fmt::format("{}={}", c.flag, text));
+  args.push_back("--all-columns");  // the checks read the inputs' columns too
   std::ostringstream out, err;
   const int status = ogive::cli::run_cli(args, out, err);
   const std::string o = out.str(), e = err.str();
@@ -155,7 +157,7 @@ inline void check_cli_value(std::string_view text, const std::vector<double>& va
     require(numbers.back() != std::string_view::npos, "{}no column {} in the CSV", where, name);
   }
   for (std::size_t r = 1; r + 1 < rows.size(); ++r) {
-    const auto fields = split(rows[r], ',');
+    const auto fields = ogive::test::csv_fields(rows[r]);
     require(fields.size() == width, "{}a row's width differs from the header's: {}", where, rows[r]);
     const bool solved = geometry || (status_col != std::string_view::npos && fields[status_col] == "success");
     if (status == ogive::cli::kExitOk)

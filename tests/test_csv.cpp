@@ -1,0 +1,156 @@
+// CSV that reads itself (issue 15): every command's output read by a strict reader; every column
+// documented with its unit; inputs echoed as typed; one spelling for booleans and for "no number".
+#include <doctest/doctest.h>
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "cli_run.hpp"
+#include "ogive/csv.hpp"
+#include "values.hpp"
+
+using namespace ogive::test;
+
+namespace {
+
+const std::vector<std::vector<std::string>> kCommands = {
+    {"thrust", "--eccentricity", "0:1:11", "--thickness-ratio", "0.06,0.1"},
+    {"thrust", "--curve", "catenary", "--rise-ratio", "0.5,2", "--thickness-ratio", "0.5"},  // an invalid scene
+    {"thrust", "--method", "shooting", "--max-steps", "3"},                                   // a failed solve
+    {"profile", "--eccentricity", "0,0.5", "--stations", "11"},
+    {"profile", "--method", "shooting", "--max-steps", "3"},
+    {"check", "--curve", "parabolic", "--rise-ratio", "0.2,0.4"},
+    {"curve", "--curve", "four-centred", "--rise-ratio", "0.4,0.5", "--stations", "7"},
+    {"bench", "--eccentricity", "0.5", "--method", "closed-form,shooting", "--rtol", "1e-6", "--repeats", "1"},
+};
+
+// The documented columns of a command: `--columns help` as name -> (unit, meaning).
+std::map<std::string, std::pair<std::string, std::string>> documented(const std::string& command) {
+  const Run help = run_command({command, "--columns", "help"});
+  REQUIRE(help.status == 0);
+  const auto ls = lines(help.out);
+  REQUIRE(ls.size() > 1);
+  CHECK(ls[0] == "column,unit,meaning");
+  std::map<std::string, std::pair<std::string, std::string>> out;
+  for (std::size_t i = 1; i < ls.size(); ++i) {
+    const auto f = fields(ls[i]);
+    REQUIRE(f.size() == 3);
+    out[f[0]] = {f[1], f[2]};
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("csv: a strict reader reads every command - rectangular - every column documented - no nan or inf") {
+  for (const auto& base : kCommands) {
+    const auto docs = documented(base[0]);
+    for (bool all : {false, true}) {
+      std::vector<std::string> args = base;
+      if (all) args.push_back("--all-columns");
+      const Run r = run_command(args);
+      CAPTURE(args[0]);
+      CAPTURE(args[1]);
+      CAPTURE(all);
+      REQUIRE((r.status == 0 || r.status == 3));
+      const auto ls = lines(r.out);
+      REQUIRE(ls.size() >= 2);
+      const auto header = fields(ls[0]);
+      CHECK(header.front() == "scene");
+      std::set<std::string> unique(header.begin(), header.end());
+      CHECK(unique.size() == header.size());  // no name twice
+      for (const std::string& name : header) {
+        CAPTURE(name);
+        REQUIRE(docs.count(name) == 1);
+        CHECK(!docs.at(name).second.empty());  // a meaning; the unit is empty only for pure numbers
+      }
+      for (std::size_t row = 1; row < ls.size(); ++row) {
+        const auto f = fields(ls[row]);
+        CHECK(f.size() == header.size());
+        for (const std::string& v : f) {
+          CHECK(v != "nan");
+          CHECK(v != "inf");
+          CHECK(v != "-inf");
+          CHECK(v != "none");
+        }
+        for (std::size_t c = 0; c < header.size(); ++c)
+          if (header[c] == "plane_strain" || header[c].rfind("thrust_in_", 0) == 0 || header[c] == "within_tolerance")
+            CHECK((f[c] == "true" || f[c] == "false" || f[c].empty()));
+      }
+    }
+  }
+}
+
+TEST_CASE("csv: inputs round-trip as typed - decimal ranges - a scene number per scene") {
+  const Run r = run_command({"thrust", "--support-displacement-ratio", "0:0.0003:7", "--eccentricity", "0:1:11"});
+  REQUIRE(r.status == 0);
+  REQUIRE(lines(r.out).size() == 1 + 77);
+  CHECK(column(r.out, "eccentricity", 4) == "0.3");
+  CHECK(column(r.out, "support_displacement_ratio", 12) == "5e-05");
+  CHECK(column(r.out, "scene", 77) == "77");
+  const Run seg = run_command({"thrust", "--curve", "segmental", "--rise-ratio", "0.2", "--all-columns"});
+  CHECK(column(seg.out, "rise_ratio") == "0.2");
+  CHECK(column(seg.out, "plane_strain") == "false");
+  CHECK(column(seg.out, "integrator").empty());  // not applicable to the closed form: empty
+  const Run semi = run_command({"thrust", "--curve", "semicircular", "--all-columns"});
+  CHECK(column(semi.out, "rise_ratio") == "0.5");  // derived from the geometry, 12 digits
+  // Every point of a decimal range is the double nearest the decimal value.
+  const std::vector<double> v = ogive::cli::parse_values("0.06:0.2:8", "--thickness-ratio");
+  const std::vector<double> expected = {0.06, 0.08, 0.1, 0.12, 0.14, 0.16, 0.18, 0.2};
+  CHECK(v == expected);
+  const std::vector<double> w = ogive::cli::parse_values("-1e-3:2e-3:4", "--x");
+  CHECK(w == std::vector<double>{-1e-3, 0.0, 1e-3, 2e-3});
+}
+
+TEST_CASE("csv: by default the inputs that vary and the results - --columns chooses - --all-columns prints all") {
+  const Run r = run_command({"thrust", "--eccentricity", "0,1"});
+  const auto header = fields(lines(r.out)[0]);
+  CHECK(std::find(header.begin(), header.end(), "eccentricity") != header.end());
+  CHECK(std::find(header.begin(), header.end(), "youngs_modulus") == header.end());  // the same in every scene
+  for (const char* name : {"H", "V", "H_over_V", "status", "message", "max_thrust_eccentricity", "thrust_in_kern"})
+    CHECK(std::find(header.begin(), header.end(), name) != header.end());
+  const Run chosen = run_command({"thrust", "--eccentricity", "0,1", "--columns", "H_over_V,eccentricity"});
+  CHECK(lines(chosen.out)[0] == "eccentricity,H_over_V");  // in the output's order
+  CHECK(column(chosen.out, "H_over_V") == column(r.out, "H_over_V"));
+  check_refused({"thrust", "--columns", "H_ovr_V"});
+  const Run misspelt = run_command({"thrust", "--columns", "H_ovr_V"});
+  CHECK(misspelt.err.find("did you mean 'H_over_V'") != std::string::npos);
+  check_refused({"profile", "--columns", ""});
+  check_refused({"bench", "--columns", "H,"});
+}
+
+TEST_CASE("csv: the thrust line's summary - largest |e| - where - in kern and in section - against the profile") {
+  // The semicircle at t = 0.08 L (paper's Figure 11): |e| peaks at the crown, 282 %; outside the kern,
+  // inside the section. The summary's maximum is at least the profile's largest station value.
+  const Run t = run_command({"thrust", "--curve", "semicircular"});
+  const Run p = run_command({"profile", "--curve", "semicircular", "--stations", "201"});
+  double largest = 0;
+  for (std::size_t row = 1; row < lines(p.out).size(); ++row)
+    largest = std::max(largest, std::abs(std::stod(column(p.out, "thrust_eccentricity", row))));
+  const double summary = std::stod(column(t.out, "max_thrust_eccentricity"));
+  CHECK(summary >= largest);
+  CHECK(summary <= largest * (1 + 1e-9));  // the crown is a station: the peak is sampled exactly
+  CHECK(std::abs(std::stod(column(t.out, "max_thrust_eccentricity_at")) - 0.5 * 3.141592653589793 * 5) <= 1e-5);
+  CHECK(column(t.out, "thrust_in_kern") == "false");
+  CHECK(column(t.out, "thrust_in_section") == "true");
+  // Thick equilateral arch: inside the kern everywhere (largest linear |e| 99 %, MODEL.md's Fig. 11).
+  const Run thick = run_command({"thrust", "--eccentricity", "0.5", "--thickness-ratio", "0.2"});
+  CHECK(std::stod(column(thick.out, "max_thrust_eccentricity")) < 100);
+  CHECK(column(thick.out, "thrust_in_kern") == "true");
+  // Where the crown goes into tension (support spreading past d/L = 0.0177 %) there is no bound.
+  const Run spread = run_command({"thrust", "--support-displacement-ratio", "0.0003"});
+  CHECK(column(spread.out, "max_thrust_eccentricity").empty());
+  CHECK(column(spread.out, "thrust_in_section") == "false");
+}
+
+TEST_CASE("csv: RFC 4180 quoting where a field needs it") {
+  ogive::CsvRow row;
+  row.add("plain").add("a, b").add("say \"x\"").add(1.5);
+  CHECK(row.take() == "plain,\"a, b\",\"say \"\"x\"\"\",1.5\n");
+  std::vector<bool> keep = {true, false, true};
+  ogive::CsvRow selected(&keep);
+  selected.add(1.0).add(2.0).add(3.0);
+  CHECK(selected.take() == "1,3\n");
+}
