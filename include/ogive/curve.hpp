@@ -103,7 +103,7 @@ SectionFaces section_faces(const CurvePoint& p, double thickness);
 // Position, angle and curvature on one arc, at distance ds (0 <= ds <= arc.length) from its start.
 CurvePoint point_on_arc(const CircularArc& arc, double ds);
 
-// The pointed (two-centred) arch of MODEL.md: radius R = (0.5 + eccentricity) * span, centre on the
+// The pointed (two-centred) arch of docs/model.md: radius R = (0.5 + eccentricity) * span, centre on the
 // springing line at eccentricity * span beyond mid-span; eccentricity 0 is the semicircle.
 // Throws std::invalid_argument naming `span` (in [kMinSpan, kMaxSpan]) or `eccentricity` for a value outside
 // its domain.
