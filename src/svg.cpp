@@ -129,6 +129,8 @@ void clamped_support(std::string& out, const char* id, const SectionFaces& faces
 
 }  // namespace
 
+double drawing_unit(double span) { return std::pow(10.0, std::floor(std::log10(span)) - 2); }
+
 bool DrawingOptions::is_valid(std::string* why) const {
   auto fail = [&](const std::string& reason) {
     if (why) *why = reason;
@@ -145,7 +147,15 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
   scene.validate();
   const Curve& curve = *scene.curve;
-  const double L = scene.span(), t = scene.thickness, S = curve.half_length();
+  const double S = curve.half_length();
+  // The drawing's unit (svg.hpp): the span is 100 to 1000 units, whatever its size in metres, so that
+  // fonts and strokes are a few units (rsvg draws no text below about 0.1 unit, nothing at 1e-5).
+  const double unit = drawing_unit(scene.span());
+  auto drawn_at = [unit](double x, double y) { return PlanePoint{x / unit, y / unit}; };
+  auto to_drawing = [&](PlanePoint p) { return drawn_at(p.x, p.y); };
+  auto faces_in_drawing = [&](const SectionFaces& f) { return SectionFaces{to_drawing(f.intrados), to_drawing(f.extrados)}; };
+  // From here on, lengths are in drawing units.
+  const double L = scene.span() / unit, t = scene.thickness / unit;
 
   // The arch: axis and faces at equal steps of arc length over the left half, mirrored onto the right.
   // At a pointed crown the two halves' sections differ (their tangents do), so each face is cut at, or
@@ -154,8 +164,8 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
   const CurvePoint crown = curve.at(S);
   for (int k = 0; k < options.samples; ++k) {
     const CurvePoint p = curve.at(k == options.samples - 1 ? S : S * k / (options.samples - 1));
-    const SectionFaces f = section_faces(p, t);
-    axis.push_back({p.x, p.y});
+    const SectionFaces f = faces_in_drawing(section_faces(p, scene.thickness));
+    axis.push_back(drawn_at(p.x, p.y));
     intrados.push_back(f.intrados);
     extrados.push_back(f.extrados);
   }
@@ -189,7 +199,8 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
 
   // Supports: the springing sections, the side of the support beyond each end of the axis.
   const CurvePoint left = curve.at_whole_arch(0), right = curve.at_whole_arch(2 * S);
-  const SectionFaces left_faces = section_faces(left, t), right_faces = section_faces(right, t);
+  const SectionFaces left_faces = faces_in_drawing(section_faces(left, scene.thickness));
+  const SectionFaces right_faces = faces_in_drawing(section_faces(right, scene.thickness));
   const PlanePoint left_away{-std::cos(left.theta), -std::sin(left.theta)};
   const PlanePoint right_away{std::cos(right.theta), std::sin(right.theta)};
   const double reach = 0.3 * std::max(t, 0.05 * L);
@@ -206,7 +217,7 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
   // The thrust line: runs of drawable stations.
   std::vector<std::vector<PlanePoint>> thrust(1);
   for (const ArchState& st : solution.profile) {
-    const PlanePoint p{st.thrust_x, st.thrust_y};
+    const PlanePoint p = drawn_at(st.thrust_x, st.thrust_y);
     if (std::isfinite(p.x) && std::isfinite(p.y) && box.contains(p, kFarFromArch * L)) {
       thrust.back().push_back(p);
       // The view follows the line a little way out of the arch, no farther.
@@ -232,7 +243,16 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
   path(body, "axis", {axis}, axis_style.c_str());
   const std::string thrust_style =
       fmt::format("fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"", kThrustColour, 1.5 * stroke);
-  if (!thrust.empty()) path(body, "thrust-line", thrust, thrust_style.c_str());
+  if (!thrust.empty()) {
+    // Clipped to the arch's surroundings (where the view follows it), so that a line that runs off
+    // stays clear of the title, the arrows and the scale bar; its points are all in the path.
+    body += "<clipPath id=\"near-the-arch\"><rect";
+    for (const auto& [name, v] : {std::pair{"x", drawn.x0}, std::pair{"y", -drawn.y1}, std::pair{"width", drawn.x1 - drawn.x0},
+                                  std::pair{"height", drawn.y1 - drawn.y0}})
+      attribute(body, name, v);
+    body += "/></clipPath>\n";
+    path(body, "thrust-line", thrust, (thrust_style + " clip-path=\"url(#near-the-arch)\"").c_str());
+  }
   body += supports;
 
   // Support movement: each springing moves horizontally by d, outwards for d > 0.
@@ -242,7 +262,7 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
     const double y = bottom - 1.2 * font, length = 0.08 * W, sign = d > 0 ? 1.0 : -1.0;
     body += "<g id=\"support-movement\" stroke=\"#1f4e9c\" fill=\"#1f4e9c\">\n";
     const std::string label = fmt::format("d = {:.3g} mm {}", std::abs(d) * 1000, d > 0 ? "outwards" : "inwards");
-    for (const auto& [x, outward] : {std::pair{left.x, -1.0}, std::pair{right.x, 1.0}}) {
+    for (const auto& [x, outward] : {std::pair{left.x / unit, -1.0}, std::pair{right.x / unit, 1.0}}) {
       line(body, {x, y}, {x + sign * outward * length, y},
            fmt::format("stroke-width=\"{}\" marker-end=\"url(#arrowhead)\"", 1.5 * stroke));
       // The label below the arrow, towards the arch so that it stays in the picture.
@@ -261,8 +281,8 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
     line(body, {x, y}, {x + length, y}, fmt::format("stroke-width=\"{}\"", stroke));
     for (double f : {0.0, 0.5, 1.0}) line(body, {x + f * length, y}, {x + f * length, y + tick}, fmt::format("stroke-width=\"{}\"", stroke));
     text(body, {x, y - 1.1 * font}, 0.8 * font, "middle", "0");
-    text(body, {x + 0.5 * length, y - 1.1 * font}, 0.8 * font, "middle", fmt::format("{:g}", 0.5 * length));
-    text(body, {x + length, y - 1.1 * font}, 0.8 * font, "middle", fmt::format("{:g} m", length));
+    text(body, {x + 0.5 * length, y - 1.1 * font}, 0.8 * font, "middle", fmt::format("{:g}", 0.5 * length * unit));
+    text(body, {x + length, y - 1.1 * font}, 0.8 * font, "middle", fmt::format("{:g} m", length * unit));
     body += "</g>\n";
     bottom = y - 1.6 * font;
   }
@@ -284,7 +304,7 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
   text(title, {box.x0 + 2.5 * font, legend_y}, 0.8 * font, "start", "elastic line of thrust");
   line(title, {box.x0 + 14 * font, legend_y + 0.3 * font}, {box.x0 + 16 * font, legend_y + 0.3 * font}, axis_style);
   text(title, {box.x0 + 16.5 * font, legend_y}, 0.8 * font, "start",
-       fmt::format("axis; section t = {:g} m; clamped springings", t));
+       fmt::format("axis; section t = {:g} m; clamped springings", scene.thickness));
   title += "</g>\n";
 
   // The view: everything drawn, the title's width (about 40 font sizes) and a margin.
@@ -301,8 +321,11 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
     svg += ' ';
   }
   svg.back() = '"';
-  svg += " font-family=\"sans-serif\">\n";
-  svg += "<desc>ogive draw: one user unit is one metre; the arch's point (x, y) is drawn at (x, -y).</desc>\n";
+  svg += " font-family=\"sans-serif\" data-metres-per-unit=\"";
+  number(svg, unit);
+  svg += "\">\n";
+  svg += fmt::format("<desc>ogive draw: one user unit is {:g} m; the arch's point (x, y) is drawn at (x, -y) / {:g}.</desc>\n",
+                     unit, unit);
   svg += "<defs><marker id=\"arrowhead\" viewBox=\"0 0 10 10\" refX=\"8\" refY=\"5\" markerWidth=\"4\" "
          "markerHeight=\"4\" orient=\"auto\"><path d=\"M 0 0 L 10 5 L 0 10 Z\" fill=\"#1f4e9c\"/></marker></defs>\n";
   svg += "<rect";

@@ -293,9 +293,13 @@ std::string read_text(const std::string& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// The points of the SVG path with the given id, in the arch's metres: SVG (x, -y) back to (x, y).
-// Each subpath ("M") is one run; the drawing writes "M x,y L x,y ..." (include/ogive/svg.hpp).
+// The points of the SVG path with the given id, in the arch's metres: SVG (x, -y) times the drawing's
+// unit (data-metres-per-unit) back to (x, y). Each subpath ("M") is one run; the drawing writes
+// "M x,y L x,y ..." (include/ogive/svg.hpp).
 std::vector<std::vector<std::pair<double, double>>> svg_path_points(const std::string& svg, const std::string& id) {
+  const std::size_t unit_at = svg.find("data-metres-per-unit=\"");
+  REQUIRE(unit_at != std::string::npos);
+  const double unit = std::stod(svg.substr(unit_at + 22));
   const std::size_t at = svg.find("id=\"" + id + "\"");
   REQUIRE_MESSAGE(at != std::string::npos, "no element " << id);
   const std::size_t d = svg.find(" d=\"", at) + 4;
@@ -305,7 +309,7 @@ std::vector<std::vector<std::pair<double, double>>> svg_path_points(const std::s
     REQUIRE((command == "M" || command == "L"));
     if (command == "M") runs.emplace_back();
     const std::size_t comma = xy.find(',');
-    runs.back().emplace_back(std::stod(xy.substr(0, comma)), -std::stod(xy.substr(comma + 1)));
+    runs.back().emplace_back(unit * std::stod(xy.substr(0, comma)), -unit * std::stod(xy.substr(comma + 1)));
   }
   return runs;
 }
@@ -318,9 +322,11 @@ bool xmllint_accepts(const std::string& path) {
 
 TEST_CASE("draw: the SVG is well-formed and its thrust line is the profile's, point by point") {
   TempDir dir("ogive_test_draw");
-  // Closed form, CVODE shooting on a smooth curve, spreading supports, a pointed crown.
+  // Closed form, CVODE shooting on a smooth curve, spreading supports, a pointed crown, a model arch
+  // of 5 mm drawn in units of 1 mm.
   const std::vector<std::vector<std::string>> scenes = {
       {"--eccentricity", "0.5"},
+      {"--span", "0.005"},
       {"--curve", "catenary", "--rise-ratio", "0.4"},
       {"--curve", "semicircular", "--support-displacement-ratio", "0.0001"},
       {"--eccentricity", "1", "--thickness-ratio", "0.2"}};
@@ -342,7 +348,8 @@ TEST_CASE("draw: the SVG is well-formed and its thrust line is the profile's, po
     REQUIRE(runs[0].size() == 41);
     const double span = std::stod(column(profiled.out, "span"));
     for (std::size_t k = 0; k < 41; ++k) {
-      // Both print the shortest decimal that reads back to the same double, so they agree to round-off.
+      // Both print the shortest decimal that reads back to the same double: they agree to round-off (of
+      // the division by the drawing's unit, exact when the unit is 1 m).
       CHECK(std::abs(runs[0][k].first - std::stod(column(profiled.out, "thrust_x", k + 1))) <= ogive::kExact * span);
       CHECK(std::abs(runs[0][k].second - std::stod(column(profiled.out, "thrust_y", k + 1))) <= ogive::kExact * span);
     }

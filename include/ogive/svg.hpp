@@ -1,9 +1,10 @@
 // An SVG drawing of one scene and its solution, to scale, for people to look at (`ogive draw`).
 //
-// Coordinates: one SVG user unit is one metre; a point (x, y) of the arch (x from the left springing,
-// y up from the springing line, as in curve.hpp) is drawn at SVG (x, -y), since SVG's y axis points
-// down. So every coordinate in the file reads back as metres with the sign of y flipped, and the
-// drawing's scale (pixels per metre) is only the ratio of the width attribute to the viewBox width.
+// Coordinates: one SVG user unit is drawing_unit(span) metres (0.1 m for a 10 m arch; the root element
+// says it in data-metres-per-unit, and its <desc> in words); a point (x, y) of the arch (x from the left springing,
+// y up from the springing line, as in curve.hpp) is drawn at SVG (x, -y) / unit, since SVG's y axis
+// points down. So every coordinate in the file times the unit reads back as metres with the sign of y
+// flipped; the rendered scale (pixels per unit) is the width attribute over the viewBox width.
 //
 // What is drawn, with the element ids that scripts and tests can find:
 //   #section    the arch's cross-sections, filled (extrados, then intrados back), springing to springing
@@ -34,6 +35,11 @@ namespace ogive {
 // Thrust-line points farther than this many spans outside the arch's bounding box are not drawn (the
 // line runs off to infinity where N changes sign; renderers misbehave on coordinates near 1e300).
 inline constexpr double kFarFromArch = 10.0;
+
+// Metres per SVG user unit: the power of ten that makes the span 100 to 1000 units (1e-2 m for spans
+// in [1, 10) m, 0.1 m in [10, 100) m), whatever the span. Renderers need it: rsvg draws no text in
+// fonts of a tenth of a unit and nothing at all when one unit is a million pixels.
+double drawing_unit(double span);
 
 struct DrawingOptions {
   std::string title;      // caption, e.g. the scene's parameters; one line, plain text (escaped here)
