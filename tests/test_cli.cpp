@@ -2,6 +2,8 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -11,6 +13,7 @@
 
 #include "cli.hpp"
 #include "ogive/solve.hpp"
+#include "ogive/svg.hpp"
 #include "tolerances.hpp"
 
 using ogive::cli::run_cli;
@@ -458,4 +461,54 @@ TEST_CASE("cli: every subcommand's help has two examples, and they run") {
       CHECK(r.status == 0);
     }
   }
+}
+
+TEST_CASE("draw: an unsolved scene is drawn without a thrust line - its row says why - exit 3") {
+  TempDir dir("ogive_test_draw_unsolved");
+  const Run r = cli({"draw", "--curve", "catenary", "--method", "closed-form", "--output", dir / "c.svg"});
+  CHECK(r.status == 3);
+  CHECK(column(r.out, "status") == "not_applicable");
+  CHECK(column(r.out, "H_over_V").empty());
+  const std::string svg = read_text(dir / "c.svg");
+  CHECK(xmllint_accepts(dir / "c.svg"));
+  CHECK(svg.find("id=\"thrust-line\"") == std::string::npos);
+  CHECK(svg.find("no solution: not_applicable") != std::string::npos);
+  CHECK(svg_path_points(svg, "extrados").size() == 1);
+}
+
+TEST_CASE("draw: a thrust line that runs off keeps the profile's points in order - drops only the far ones") {
+  // Where N changes sign the thrust point runs to infinity: the semicircle at d/L = 0.02 % has such a
+  // station; the drawing leaves out points farther than kFarFromArch spans from the arch.
+  TempDir dir("ogive_test_draw_far");
+  const std::vector<std::string> scene = {"--curve", "semicircular", "--support-displacement-ratio", "0.0002",
+                                          "--stations", "101"};
+  std::vector<std::string> draw = {"draw", "--output", dir / "far.svg"}, profile = {"profile"};
+  draw.insert(draw.end(), scene.begin(), scene.end());
+  profile.insert(profile.end(), scene.begin(), scene.end());
+  const Run drawn = cli(draw), profiled = cli(profile);
+  REQUIRE(drawn.status == 0);
+  REQUIRE(profiled.status == 0);
+  const auto runs = svg_path_points(read_text(dir / "far.svg"), "thrust-line");
+  std::vector<std::pair<double, double>> points;
+  for (const auto& run : runs) points.insert(points.end(), run.begin(), run.end());
+  const double L = 10, t = 0.8;
+  std::size_t next = 0, far = 0;
+  for (std::size_t k = 1; k <= 101; ++k) {
+    const std::string tx = column(profiled.out, "thrust_x", k), ty = column(profiled.out, "thrust_y", k);
+    const double x = std::stod(tx), y = std::stod(ty);
+    // The arch's box: x in [-t/2, L + t/2], y in [0, L/2 + t/2].
+    const bool near = x >= -t / 2 - ogive::kFarFromArch * L && x <= L + t / 2 + ogive::kFarFromArch * L &&
+                      y >= -ogive::kFarFromArch * L && y <= L / 2 + t / 2 + ogive::kFarFromArch * L;
+    if (!near) {
+      ++far;
+      continue;
+    }
+    REQUIRE(next < points.size());
+    CHECK(std::abs(points[next].first - x) <= ogive::kExact * L);
+    CHECK(std::abs(points[next].second - y) <= ogive::kExact * L);
+    ++next;
+  }
+  CHECK(next == points.size());
+  CHECK(far >= 1);           // the scene does run off ...
+  CHECK(runs.size() == far + 1);  // ... and each dropped station splits the line (none at the ends here)
 }
