@@ -114,7 +114,7 @@ void clamped_support(std::string& out, const char* id, const SectionFaces& faces
   const PlanePoint b{faces.extrados.x + reach * u.x, faces.extrados.y + reach * u.y};
   const double total = length + 2 * reach;
   const int hatches = 10;
-  const double depth = 0.35 * total / hatches * 3;
+  const double depth = total / hatches;  // hatches as long as they are apart, as drawings show them
   // Hatches at 45 degrees between the support's side and the section's direction.
   const PlanePoint h{(away.x - u.x) / std::sqrt(2.0), (away.y - u.y) / std::sqrt(2.0)};
   out += fmt::format("<g id=\"{}\" stroke=\"black\" stroke-linecap=\"round\">\n", id);
