@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <functional>
 #include <condition_variable>
 #include <exception>
@@ -12,6 +14,7 @@
 #include <mutex>
 #include <optional>
 #include <ostream>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -24,6 +27,7 @@
 #include "ogive/curve_families.hpp"
 #include "ogive/csv.hpp"
 #include "ogive/solve.hpp"
+#include "ogive/svg.hpp"
 #include "ogive/thrust_line.hpp"
 #include "values.hpp"
 
@@ -83,38 +87,56 @@ struct SceneOptions {
   std::shared_ptr<const Curve> points;  // read once from curve_file
   std::vector<Axis> axes{
       // Order: the last axis varies fastest in the output.
-      {"--span", "10", &SceneParameters::span, positive, "must be > 0 (m)"},
-      {"--youngs-modulus", "14.8e9", &SceneParameters::youngs_modulus, positive, "must be > 0 (Pa)"},
+      {"--span", "10", &SceneParameters::span, positive, "must be > 0"},
+      {"--youngs-modulus", "14.8e9", &SceneParameters::youngs_modulus, positive, "must be > 0"},
       {"--poisson-ratio", "0.2", &SceneParameters::poisson_ratio,
        [](double v) { return v > -1 && v <= 0.5; }, "must lie in (-1, 0.5]"},
-      {"--density", "2348", &SceneParameters::density, positive, "must be > 0 (kg/m^3)"},
-      {"--gravity", "9.81", &SceneParameters::gravity, positive, "must be > 0 (m/s^2)"},
+      {"--density", "2348", &SceneParameters::density, positive, "must be > 0"},
+      {"--gravity", "9.81", &SceneParameters::gravity, positive, "must be > 0"},
       {"--shear-coefficient", "0.8333333333333334", &SceneParameters::shear_coefficient,
        [](double v) { return v > 0 && v <= 2; }, "must lie in (0, 2]"},
       {"--thickness-ratio", "0.08", &SceneParameters::thickness_ratio,
-       [](double v) { return v > 0 && v < 1; }, "must lie in (0, 1) (t/L)"},
+       [](double v) { return v > 0 && v < 1; }, "must lie in (0, 1)"},
       {"--support-displacement-ratio", "0", &SceneParameters::support_displacement_ratio,
        [](double v) { return std::abs(v) <= 0.01; },
        "must lie in [-0.01, 0.01] (d/L; beyond, small-displacement theory does not hold)"},
       {"--haunch-angle", "", &SceneParameters::haunch_angle, [](double v) { return v > 0 && v < 90; },
-       "must lie in (0, 90) degrees"},
+       "must lie in (0, 90)"},
       {"--crown-angle", "", &SceneParameters::crown_angle, [](double v) { return v > 0 && v < 90; },
-       "must lie in (0, 90) degrees"},
+       "must lie in (0, 90)"},
       {"--rise-ratio", "", &SceneParameters::rise_ratio, [](double v) { return v > 0 && v <= 2; },
-       "must lie in (0, 2] (h/L)"},
+       "must lie in (0, 2]"},
       {"--eccentricity", "0", &SceneParameters::eccentricity, [](double v) { return v >= 0 && v <= 100; },
        "must lie in [0, 100]"},
   };
+};
+
+// What each scene option is, with its unit, for --help (the rules are the Axis table's).
+const std::map<std::string, std::string> kAxisMeaning = {
+    {"--span", "span L between the springings' axis points, m"},
+    {"--youngs-modulus", "Young's modulus E, Pa"},
+    {"--poisson-ratio", "Poisson's ratio nu (shear modulus G = E / (2 (1 + nu)))"},
+    {"--density", "density rho, kg/m^3"},
+    {"--gravity", "gravitational acceleration g, m/s^2"},
+    {"--shear-coefficient", "Timoshenko shear coefficient k (5/6 for a rectangle)"},
+    {"--thickness-ratio", "thickness over span t/L"},
+    {"--support-displacement-ratio", "outward movement of each springing over span d/L (0.0003 = 0.03 %)"},
+    {"--haunch-angle", "three- and four-centred: angle the haunch arc turns through, degrees"},
+    {"--crown-angle", "four-centred: the tangent's angle above the horizontal at the crown, degrees"},
+    {"--rise-ratio", "rise over span h/L (not for pointed, semicircular, points)"},
+    {"--eccentricity", "pointed: the centres' offset beyond mid-span over the span (0 semicircle, 0.5 equilateral)"},
 };
 
 void add_scene_options(CLI::App& cmd, SceneOptions& o) {
   std::string names;
   for (const CurveFamily& f : kFamilies) names += (names.empty() ? "" : ", ") + f.name;
   cmd.add_option("--curve", o.curve, "generator curve: " + names)->capture_default_str();
-  cmd.add_option("--curve-file", o.curve_file, "with --curve points: CSV of axis points x,y, springing to crown");
+  cmd.add_option("--curve-file", o.curve_file,
+                 "with --curve points: CSV file with header x,y and the axis points in m, springing (y = 0) to crown");
   for (Axis& a : o.axes)
-    cmd.add_option(a.flag, a.text, "value, list a,b,c or range start:stop:count" +
-                                       std::string(a.text.empty() ? " (default: the curve's)" : ""))
+    cmd.add_option(a.flag, a.text,
+                   fmt::format("{}; {}; a value, a list a,b,c or a range start:stop:count{}", kAxisMeaning.at(a.flag),
+                               a.rule, a.text.empty() ? " (default: the curve's)" : ""))
         ->capture_default_str();
   cmd.add_flag("--plane-strain", o.plane_strain, "plane strain: E / (1 - nu^2) for axial and bending stiffness");
 }
@@ -334,6 +356,7 @@ const std::vector<ColumnDoc> kColumnDocs = {
     {"error_H_over_V", "", "bench: true error of H/V against the reference"},
     {"error_profile", "", "bench: true error of the profile (profile_difference) against the reference"},
     {"median_seconds", "s", "bench: median time of one solve"},
+    {"file", "", "draw: the SVG file written for the scene"},
 };
 
 const ColumnDoc* find_column_doc(std::string_view name) {
@@ -518,20 +541,22 @@ const CLI::Validator kCount([](std::string& text) { return number_problem(text, 
 void add_solver_options(CLI::App& cmd, Options& o, SolverText& text, bool with_method = true,
                         bool with_integrator = true, bool with_rtol = true) {
   if (with_method)
-    cmd.add_option("--method", text.method, "closed-form, shooting, multiple-shooting or auto")->capture_default_str();
+    cmd.add_option("--method", text.method, "closed-form (circular arcs only), shooting, multiple-shooting or auto (the closed form where it "
+                   "applies, else shooting with 1, 2, 4 .. 64 segments until the error estimate meets --rtol)")->capture_default_str();
   if (with_integrator)
-    cmd.add_option("--integrator", text.integrator, "CVODE's method: adams or bdf")->capture_default_str();
+    cmd.add_option("--integrator", text.integrator, "CVODE's method: adams or bdf (the closed form uses none)")->capture_default_str();
   if (with_rtol)
     cmd.add_option("--rtol", o.rtol,
-                 "relative error asked of every printed number, 1e-14 .. 0.1; status success guarantees it. CVODE "
-                 "itself runs at rtol/10 (adams) or rtol/1000 (bdf), and a verifying solve at rtol/16")
+                 "relative error asked of every printed number; must lie in [1e-14, 0.1]; status success "
+                 "guarantees it. CVODE itself runs at rtol/10 (adams) or rtol/1000 (bdf), and a verifying solve "
+                 "at rtol/16")
       ->check(kFiniteNumber)->capture_default_str();
   cmd.add_option("--atol", o.atol,
-                 "CVODE's absolute tolerance on the scaled state (0: 1e-6 of CVODE's rtol); the verifying solve "
-                 "uses the smaller of atol and that default, /16")
+                 "CVODE's absolute tolerance on the scaled state; must be >= 0 (0: 1e-6 of CVODE's rtol); the "
+                 "verifying solve uses the smaller of atol and that default, /16")
       ->check(kFiniteNumber)->capture_default_str();
-  cmd.add_option("--segments", o.segments, "multiple-shooting segments over the half arch")->check(kCount)->capture_default_str();
-  cmd.add_option("--max-steps", o.max_steps, "CVODE step limit per integration span")->check(kCount)->capture_default_str();
+  cmd.add_option("--segments", o.segments, "multiple-shooting segments over the half arch (breakpoints add more); must lie in [1, 10000]")->check(kCount)->capture_default_str();
+  cmd.add_option("--max-steps", o.max_steps, "CVODE step limit per integration span; must be >= 1")->check(kCount)->capture_default_str();
   cmd.add_flag("--no-verify", text.no_verify,
                "skip the second solve at rtol/16 that estimates the error (raw methods, for benchmarks): the "
                "status is then at best unverified, never success; auto always verifies");
@@ -1079,6 +1104,145 @@ int run_bench(SceneOptions& so, const CLI::App& cmd, const Options& base, const 
   return kExitOk;
 }
 
+// ---------------------------------------------------------------------------------------------
+// Help: what the program is, and two examples per subcommand.
+
+void add_help_texts(CLI::App& app) {
+  app.footer(
+      "Units are SI: m, Pa, kg/m^3, m/s^2; forces per metre of vault length (N/m). Every numeric scene option\n"
+      "takes a value, a list a,b,c or a range start:stop:count; several give their cartesian product.\n"
+      "Output: CSV on stdout, an empty field for no number; exit 0 every row solved (status success),\n"
+      "3 some row not, 2 bad input (one line on stderr), 1 internal error. The model, the sign conventions\n"
+      "and every output column: docs/model.md. `ogive SUBCOMMAND --help` lists a subcommand's options.");
+  const std::map<std::string, std::string> examples = {
+      {"thrust",
+       "  ogive thrust --eccentricity 0:1:11                      # the paper's Figure 8, H/V against eccentricity\n"
+       "  ogive thrust --curve segmental --rise-ratio 0.1:0.4:4 --thickness-ratio 0.1"},
+      {"profile",
+       "  ogive profile --eccentricity 0.5 --stations 41          # the equilateral arch's thrust line\n"
+       "  ogive profile --support-displacement-ratio 0,0.0003     # the semicircle with spreading supports"},
+      {"check",
+       "  ogive check --eccentricity 0:2:5\n"
+       "  ogive check --curve three-centred --rise-ratio 0.25 --rtol 1e-10"},
+      {"curve",
+       "  ogive curve --curve four-centred --stations 21\n"
+       "  ogive curve --curve points --curve-file data/curves/parabola-40.csv"},
+      {"bench",
+       "  ogive bench --eccentricity 0.5 --repeats 11\n"
+       "  ogive bench --curve catenary --methods shooting,auto --rtols 1e-6,1e-8,1e-10 --integrators adams,bdf"},
+      {"draw",
+       "  ogive draw --eccentricity 0.5 --output equilateral.svg\n"
+       "  ogive draw --eccentricity 0,0.5,1 --support-displacement-ratio 0.0001 --output-dir pictures"},
+  };
+  for (CLI::App* sub : app.get_subcommands({})) {
+    const auto it = examples.find(sub->get_name());
+    if (it != examples.end()) sub->footer("Examples:\n" + it->second + "\nUnits, output columns, signs: docs/model.md.");
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// draw: one SVG file per scene (include/ogive/svg.hpp), and one CSV row per file on stdout.
+
+// Scenes one draw may write: each is a file, and a sweep of thousands of pictures is a mistake.
+constexpr std::size_t kMaxDrawings = 1000;
+
+struct DrawTargets {
+  std::string output;      // --output FILE: exactly one scene
+  std::string output_dir;  // --output-dir DIR: one file per scene, named by draw_file_name
+};
+
+// The drawing's caption: the curve, its shape parameters, span, t/L and d/L, as the options name them.
+std::string draw_title(const SceneParameters& p) {
+  std::string title = p.curve;
+  for (const auto& [name, v] : {std::pair{"eccentricity", p.eccentricity}, std::pair{"rise ratio", p.rise_ratio},
+                                std::pair{"haunch angle", p.haunch_angle}, std::pair{"crown angle", p.crown_angle}})
+    if (!std::isnan(v)) title += fmt::format(", {} {}", name, v);
+  return title + fmt::format(", span {} m, t/L {}, d/L {}{}", p.span, p.thickness_ratio, p.support_displacement_ratio,
+                             p.plane_strain ? ", plane strain" : "");
+}
+
+// The file of one scene in --output-dir: the curve, then each option that varies in the sweep with the
+// scene's value, e.g. "pointed_thickness-ratio-0.2_eccentricity-0.5.svg" (the order of --help).
+std::string draw_file_name(const SceneParameters& p, const SceneOptions& so) {
+  std::string name = p.curve;
+  for (const Axis& a : so.axes)
+    if (a.values.size() > 1) name += fmt::format("_{}-{}", a.flag.substr(2), p.*(a.field));
+  return name + ".svg";
+}
+
+// Refuses, before anything is solved or printed, a target that cannot be written: a directory where a
+// file should be, a missing directory, a file that cannot be opened for writing.
+void check_writable(const std::string& path, const char* flag) {
+  if (path.find_first_of(",\r\n") != std::string::npos)
+    throw UsageError(fmt::format("{}: the path must not contain a comma or a line break (it is printed in the CSV)", flag));
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw UsageError(fmt::format("{}: '{}' is a directory, not a file", flag, path));
+  // Appending creates the file if needed and leaves an existing one as it is until it is drawn.
+  std::ofstream probe(path, std::ios::app);
+  if (!probe) throw UsageError(fmt::format("{}: cannot write '{}': {}", flag, path, std::strerror(errno)));
+}
+
+const Columns kDrawColumns({"method", "status", "H", "V", "H_over_V", "message", "file"},
+                           {"method", "status", "H", "V", "H_over_V", "message", "file"});
+
+int run_draw(SceneOptions& so, const CLI::App& cmd, Options o, const DrawTargets& to, const ColumnText& ct,
+             std::ostream& out) {
+  check_stations(o.stations);
+  check_options(o);
+  if (to.output.empty() == to.output_dir.empty())
+    throw UsageError(to.output.empty() ? "--output: draw needs --output FILE.svg (one scene) or --output-dir DIR "
+                                         "(one file per scene)"
+                                       : "--output-dir: give --output FILE.svg or --output-dir DIR, not both");
+  const ScenePlan plan(so, cmd);
+  if (!to.output.empty() && plan.size() > 1)
+    throw UsageError(fmt::format("--output: the options give {} scenes and one file holds one drawing; use "
+                                 "--output-dir DIR for one file per scene", plan.size()));
+  if (plan.size() > kMaxDrawings)
+    throw UsageError(fmt::format("--output-dir: the options give {} scenes, more than {} drawings", plan.size(), kMaxDrawings));
+  Columns columns = kDrawColumns;
+  columns.select(ct, plan.varying_inputs());
+  std::vector<std::string> files;
+  if (!to.output.empty()) {
+    files.push_back(to.output);
+  } else {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(to.output_dir, ec))
+      throw UsageError(fmt::format("--output-dir: '{}' is not an existing directory", to.output_dir));
+    std::set<std::string> seen;
+    for (std::size_t i = 0; i < plan.size(); ++i) {
+      const std::string name = draw_file_name(plan.parameters(i), so);
+      if (!seen.insert(name).second)
+        throw UsageError(fmt::format("--output-dir: two scenes would both be drawn into {} (a value repeats)", name));
+      files.push_back((std::filesystem::path(to.output_dir) / name).string());
+    }
+  }
+  for (const std::string& f : files) check_writable(f, to.output.empty() ? "--output-dir" : "--output");
+
+  RowWriter writer(out);
+  writer.write(columns.header());
+  const bool all_ok = for_each_scene(
+      plan, writer, 1,  // one file at a time
+      [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
+        const Solution sol = solve(scene, o);
+        DrawingOptions drawing;
+        drawing.title = draw_title(p);
+        const std::string& path = files[p.scene - 1];
+        std::ofstream file(path, std::ios::trunc);
+        file << arch_svg(scene, sol, drawing);
+        file.close();
+        if (!file) throw OutputError(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
+        CsvRow row(columns.keep());
+        add_scene_columns(row, p, scene.curve.get());
+        row.add(to_string(sol.method)).add(to_string(sol.status)).add(sol.H).add(sol.V).add(sol.H_over_V);
+        row.add(sol.message).add(path);
+        emit(row.take());
+        return sol.ok();
+      },
+      [&](const SceneParameters& p, const ScenePlan::Built& b) { return invalid_scene_row(columns, p, b); });
+  return all_ok ? kExitOk : kExitNotConverged;
+}
+
 }  // namespace
 
 int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -1096,7 +1260,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   CLI::App* profile = app.add_subcommand("profile", "N, V, M, e and the thrust line along the arch");
   add_scene_options(*profile, profile_scene);
   add_solver_options(*profile, profile_options, profile_text);
-  profile->add_option("--stations", profile_options.stations, "stations, springing to springing (>= 2)")
+  profile->add_option("--stations", profile_options.stations, "stations, equally spaced in arc length, springing to springing; must lie in [2, 1000000]")
       ->check(kCount)
       ->capture_default_str();
 
@@ -1108,7 +1272,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   int curve_stations = 101;
   CLI::App* curve = app.add_subcommand("curve", "the generator curve: s, x, y, theta, kappa");
   add_scene_options(*curve, curve_scene);
-  curve->add_option("--stations", curve_stations, "stations, springing to springing (>= 2)")->check(kCount)->capture_default_str();
+  curve->add_option("--stations", curve_stations, "stations, equally spaced in arc length, springing to springing; must lie in [2, 1000000]")->check(kCount)->capture_default_str();
 
   CLI::App* bench = app.add_subcommand("bench", "median time per solve and true error, per method and rtol");
   add_scene_options(*bench, bench_scene);
@@ -1117,14 +1281,40 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   std::string bench_integrators = "adams";
   int repeats = 21;
   // The same names as every other command's; lists here (the plural spellings are kept for old scripts).
-  bench->add_option("--method,--methods", bench_methods, "methods, comma-separated (auto included)")->capture_default_str();
+  bench->add_option("--method,--methods", bench_methods, "methods, comma-separated: closed-form, shooting, multiple-shooting, auto")->capture_default_str();
   bench->add_option("--integrator,--integrators", bench_integrators, "CVODE's methods, comma-separated: adams, bdf")
       ->capture_default_str();
   bench->add_option("--rtol,--rtols", bench_rtols, "tolerances: value, list or range, each in [1e-14, 0.1]")
       ->capture_default_str();
-  bench->add_option("--repeats", repeats, "solves per row; the median time is printed")->check(kCount)->capture_default_str();
+  bench->add_option("--repeats", repeats, "solves per row, the median time is printed; must lie in [1, 100000]")->check(kCount)->capture_default_str();
 
-  ColumnText thrust_columns, profile_columns, check_columns, curve_columns, bench_columns;
+  SceneOptions draw_scene;
+  Options draw_options;
+  SolverText draw_text;
+  DrawTargets draw_targets;
+  draw_options.stations = 101;
+  CLI::App* draw = app.add_subcommand("draw", "an SVG picture of each scene to scale: arch, thrust line, supports");
+  add_scene_options(*draw, draw_scene);
+  add_solver_options(*draw, draw_options, draw_text);
+  draw->add_option("--stations", draw_options.stations,
+                   "points of the thrust line, springing to springing; must lie in [2, 1000000]")
+      ->check(kCount)
+      ->capture_default_str();
+  draw->add_option("--output", draw_targets.output, "the SVG file of the one scene (refused for a sweep)");
+  draw->add_option("--output-dir", draw_targets.output_dir,
+                   "an existing directory: one SVG per scene, named after the curve and the options that vary");
+
+  add_help_texts(app);
+  app.set_version_flag("--version", std::string("ogive ") + OGIVE_VERSION, "print the version and exit");
+  // Bare `ogive`: the help, but on stderr with status 2, since stdout is for CSV only and a script that
+  // forgot the subcommand should fail rather than read the help as data.
+  if (args.empty()) {
+    err << app.help();
+    return kExitUsage;
+  }
+
+  ColumnText thrust_columns, profile_columns, check_columns, curve_columns, bench_columns, draw_columns;
+  add_column_options(*draw, draw_columns);
   add_column_options(*thrust, thrust_columns);
   add_column_options(*profile, profile_columns);
   add_column_options(*check, check_columns);
@@ -1149,6 +1339,8 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     return app.exit(e, out, err);
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e, out, err);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e, out, err);
   } catch (const CLI::ParseError& e) {
     std::string what = e.what();
     std::replace(what.begin(), what.end(), '\n', ' ');
@@ -1160,12 +1352,13 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     apply_solver_text(profile_options, profile_text);
     apply_solver_text(check_options_, check_text);
     apply_solver_text(bench_options, bench_text);
+    apply_solver_text(draw_options, draw_text);
     if (threads < 1 || threads > 256) throw UsageError(fmt::format("--threads: must lie in [1, 256], got {}", threads));
     // --columns help: the command's columns with units and meanings, nothing solved.
     const std::pair<CLI::App*, std::pair<const ColumnText*, const Columns*>> helps[] = {
         {thrust, {&thrust_columns, &kThrustColumns}},  {profile, {&profile_columns, &kProfileColumns}},
         {check, {&check_columns, &kCheckColumns}},     {curve, {&curve_columns, &kCurveColumns}},
-        {bench, {&bench_columns, &kBenchColumns}}};
+        {bench, {&bench_columns, &kBenchColumns}},     {draw, {&draw_columns, &kDrawColumns}}};
     for (const auto& [cmd, what] : helps)
       if (cmd->parsed() && what.first->columns == "help") {
         RowWriter writer(out);
@@ -1178,6 +1371,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
       return run_profile(profile_scene, *profile, profile_options, profile_columns, threads, out);
     if (check->parsed()) return run_check(check_scene, *check, check_options_, check_columns, threads, out);
     if (curve->parsed()) return run_curve(curve_scene, *curve, curve_stations, curve_columns, threads, out);
+    if (draw->parsed()) return run_draw(draw_scene, *draw, draw_options, draw_targets, draw_columns, out);
     if (bench->parsed()) return run_bench(bench_scene, *bench, bench_options, bench_methods, bench_integrators, bench_rtols,
                                             repeats, bench_columns, out);
   } catch (const UsageError& e) {

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Peer solver: the pointed-arch scenes of ogive solved by scipy.integrate.solve_bvp.
 
-Solves the six first-order ODEs of /work/shared/MODEL.md along the half arch (springing s=0 to the
+Solves the six first-order ODEs of docs/model.md along the half arch (springing s=0 to the
 crown s=S) in ogive's non-dimensional form:
 
     s~ = s/L; forces in w L; moments in w L^2; displacements in w L^4/(E I); rotations in w L^3/(E I)

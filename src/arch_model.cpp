@@ -107,9 +107,9 @@ ArchState ArchModel::to_physical(double s, const StateVector& y, bool mirrored) 
   st.e = 600.0 * st.M / (st.N * t);
   // F acting at offset a along the extrados normal n = (-sn, c) has moment -a N about the axis point,
   // so the resultant crosses the section at a = -M / N.
-  const double a = -st.M / st.N;
-  st.thrust_x = st.x - a * sn;
-  st.thrust_y = st.y + a * c;
+  const PlanePoint thrust = along_normal(p, -st.M / st.N);
+  st.thrust_x = thrust.x;
+  st.thrust_y = thrust.y;
   return st;
 }
 

@@ -35,6 +35,14 @@ CurvePoint point_on_arc(const CircularArc& arc, double ds) {
 
 CurvePoint mirror(const CurvePoint& p, double span) { return {span - p.x, p.y, -p.theta, p.kappa}; }
 
+PlanePoint along_normal(const CurvePoint& p, double offset) {
+  return {p.x - offset * std::sin(p.theta), p.y + offset * std::cos(p.theta)};
+}
+
+SectionFaces section_faces(const CurvePoint& p, double thickness) {
+  return {along_normal(p, -0.5 * thickness), along_normal(p, 0.5 * thickness)};
+}
+
 CurvePoint Curve::at_whole_arch(double s) const {
   const double S = half_length();
   return s <= S ? at(s) : mirror(at(2.0 * S - s), span());

@@ -107,7 +107,7 @@ TEST_CASE("Figure 8: H/V about 0.40 for the semicircle - about 41 % lower at eps
   CHECK(close(semicircle, 0.40, kFigureReading));
   const double drop_half = 1.0 - closed_form(paper_scene(0.5)).H_over_V / semicircle;
   const double drop_one = 1.0 - closed_form(paper_scene(1.0)).H_over_V / semicircle;
-  // MODEL.md: a careful implementation gives ~41 % and ~55 % (the paper's text rounds to 45 %, 55 %).
+  // docs/model.md: a careful implementation gives ~41 % and ~55 % (the paper's text rounds to 45 %, 55 %).
   CHECK(std::abs(drop_half - 0.41) < 0.03);
   CHECK(std::abs(drop_one - 0.55) < 0.03);
   // And H/V falls monotonically with pointedness.

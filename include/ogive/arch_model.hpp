@@ -1,4 +1,4 @@
-// The arch model of MODEL.md in non-dimensional form: state layout, right-hand side and boundary
+// The arch model of docs/model.md in non-dimensional form: state layout, right-hand side and boundary
 // conditions of the six first-order equations. No solver types here: every method builds on this.
 //
 // Scaling (why: so that one matrix mixes numbers of order one whatever t/L and E are):

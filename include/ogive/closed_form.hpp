@@ -1,4 +1,4 @@
-// Closed-form solution for piecewise-circular curves (MODEL.md, the paper's section 2.6).
+// Closed-form solution for piecewise-circular curves (docs/model.md, the paper's section 2.6).
 //
 // On an arc of constant curvature the local-component system (u, v, psi, N, V, M) has a constant
 // matrix; appending c = cos theta and sn = sin theta (c' = -kappa sn, sn' = kappa c) makes the

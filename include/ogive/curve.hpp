@@ -82,10 +82,28 @@ class PiecewiseCircularCurve final : public Curve {
 // springing (theta < 0); the curvature keeps its sign: the mirrored arch still turns downwards.
 CurvePoint mirror(const CurvePoint& p, double span);
 
+// A point of the plane of the arch, m.
+struct PlanePoint {
+  double x = 0, y = 0;
+};
+
+// The point at signed distance `offset` (m) from the axis point p along the section's normal
+// n = (-sin theta, cos theta), which points to the extrados on both halves of the arch (theta < 0 on
+// the right half). The thrust line's point (offset -M/N) and the section's faces (offset +-t/2) are
+// both this one formula.
+PlanePoint along_normal(const CurvePoint& p, double offset);
+
+// The two ends of the cross-section at axis point p of an arch of thickness t (m): the intrados at
+// offset -t/2 and the extrados at +t/2 along the normal (along_normal).
+struct SectionFaces {
+  PlanePoint intrados, extrados;
+};
+SectionFaces section_faces(const CurvePoint& p, double thickness);
+
 // Position, angle and curvature on one arc, at distance ds (0 <= ds <= arc.length) from its start.
 CurvePoint point_on_arc(const CircularArc& arc, double ds);
 
-// The pointed (two-centred) arch of MODEL.md: radius R = (0.5 + eccentricity) * span, centre on the
+// The pointed (two-centred) arch of docs/model.md: radius R = (0.5 + eccentricity) * span, centre on the
 // springing line at eccentricity * span beyond mid-span; eccentricity 0 is the semicircle.
 // Throws std::invalid_argument naming `span` (in [kMinSpan, kMaxSpan]) or `eccentricity` for a value outside
 // its domain.

@@ -1,4 +1,4 @@
-// The classic arch families of MODEL.md ("Generator curves") and the user's surveyed points, as Curves.
+// The classic arch families of docs/model.md ("Generator curves") and the user's surveyed points, as Curves.
 //
 // Every factory takes the span L (m, in [kMinSpan, kMaxSpan] of curve.hpp) and the rise as a ratio
 // rise_ratio = h / L, and returns the LEFT half of a symmetric arch (see curve.hpp). Invalid parameters

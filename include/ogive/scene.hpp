@@ -1,4 +1,4 @@
-// A scene: one unit-width slice of a symmetric barrel vault under its own weight (MODEL.md).
+// A scene: one unit-width slice of a symmetric barrel vault under its own weight (docs/model.md).
 // SI units throughout: m, Pa, kg/m^3, m/s^2, N. Defaults are the paper's travertine.
 #pragma once
 
