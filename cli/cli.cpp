@@ -335,6 +335,10 @@ const std::vector<ColumnDoc> kColumnDocs = {
     {"y", "m", "axis point, up from the springing line"},
     {"theta", "rad", "tangent angle to the horizontal, in the direction of increasing s"},
     {"kappa", "1/m", "curvature d theta / ds (negative: turning downwards)"},
+    {"intrados_x", "m", "the section's end on the intrados (the axis point - t/2 along the normal), horizontal"},
+    {"intrados_y", "m", "the section's end on the intrados, vertical"},
+    {"extrados_x", "m", "the section's end on the extrados (the axis point + t/2 along the normal), horizontal"},
+    {"extrados_y", "m", "the section's end on the extrados, vertical"},
     {"Ux", "m", "horizontal displacement of the axis"},
     {"Uy", "m", "vertical displacement of the axis"},
     {"psi", "rad", "rotation of the cross-section, counter-clockwise positive"},
@@ -824,10 +828,11 @@ std::string_view section_warning(const ArchState& st) {
 }
 
 const Columns kProfileColumns(
-    {"method", "status", "H_over_V", "error_estimate", "message", "s", "x", "y", "theta", "Ux", "Uy", "psi", "N",
-     "shear_force", "M", "thrust_eccentricity", "thrust_x", "thrust_y", "warning"},
-    {"status", "message", "s", "x", "y", "theta", "Ux", "Uy", "psi", "N", "shear_force", "M", "thrust_eccentricity",
-     "thrust_x", "thrust_y", "warning"});
+    {"method", "status", "H_over_V", "error_estimate", "message", "s", "x", "y", "theta", "intrados_x", "intrados_y",
+     "extrados_x", "extrados_y", "Ux", "Uy", "psi", "N", "shear_force", "M", "thrust_eccentricity", "thrust_x",
+     "thrust_y", "warning"},
+    {"status", "message", "s", "x", "y", "theta", "intrados_x", "intrados_y", "extrados_x", "extrados_y", "Ux", "Uy",
+     "psi", "N", "shear_force", "M", "thrust_eccentricity", "thrust_x", "thrust_y", "warning"});
 constexpr int kProfilePiece = 4096;  // stations sampled and written at a time
 
 int run_profile(SceneOptions& so, const CLI::App& cmd, Options o, const ColumnText& ct, int threads,
@@ -869,7 +874,11 @@ int run_profile(SceneOptions& so, const CLI::App& cmd, Options o, const ColumnTe
                                      : sample_stations(sol, stations, first, count);
           std::string text;
           for (const ArchState& st : piece) {
-            row.add(st.s).add(st.x).add(st.y).add(st.theta).add(st.Ux).add(st.Uy).add(st.psi);
+            // The section's two ends, so that a plot shows the thrust line against the masonry.
+            const SectionFaces faces = section_faces(CurvePoint{st.x, st.y, st.theta, 0.0}, scene.thickness);
+            row.add(st.s).add(st.x).add(st.y).add(st.theta);
+            row.add(faces.intrados.x).add(faces.intrados.y).add(faces.extrados.x).add(faces.extrados.y);
+            row.add(st.Ux).add(st.Uy).add(st.psi);
             row.add(st.N).add(st.V).add(st.M).add(st.e).add(st.thrust_x).add(st.thrust_y).add(section_warning(st));
             text += row.take_to_mark();
           }

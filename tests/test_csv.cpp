@@ -2,6 +2,7 @@
 // documented with its unit; inputs echoed as typed; one spelling for booleans and for "no number".
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <map>
 #include <set>
 #include <string>
@@ -155,4 +156,18 @@ TEST_CASE("csv: RFC 4180 quoting where a field needs it") {
   ogive::CsvRow selected(&keep);
   selected.add(1.0).add(2.0).add(3.0);
   CHECK(selected.take() == "1,3\n");
+}
+
+TEST_CASE("csv: profile prints each section's intrados and extrados points - t apart, centred on the axis") {
+  const Run r = run_command({"profile", "--eccentricity", "0.5", "--thickness-ratio", "0.2", "--stations", "21"});
+  REQUIRE(r.status == 0);
+  const double t = 2.0;
+  for (std::size_t row = 1; row <= 21; ++row) {
+    auto at = [&](const char* name) { return std::stod(column(r.out, name, row)); };
+    CHECK(std::abs(std::hypot(at("extrados_x") - at("intrados_x"), at("extrados_y") - at("intrados_y")) - t) <= 1e-12 * t);
+    CHECK(std::abs((at("extrados_x") + at("intrados_x")) / 2 - at("x")) <= 1e-12 * 10);
+    CHECK(std::abs((at("extrados_y") + at("intrados_y")) / 2 - at("y")) <= 1e-12 * 10);
+    // Inside the kern (|e| <= 100 %): the thrust point lies between the faces, within t/6 of the axis.
+    CHECK(std::hypot(at("thrust_x") - at("x"), at("thrust_y") - at("y")) <= t / 6 * (1 + 1e-12));
+  }
 }
