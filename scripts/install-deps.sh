@@ -3,7 +3,7 @@
 # all is there). With --charts it also installs what the benchmark charts and the scipy peer need.
 # clang and libclang-rt-14-dev (libFuzzer, the sanitizers' runtimes for clang) serve scripts/fuzz.sh.
 set -euo pipefail
-packages=(cmake g++ make libsundials-dev libeigen3-dev libfmt-dev libcli11-dev doctest-dev clang libclang-rt-14-dev)
+packages=(cmake g++ make libsundials-dev libeigen3-dev libfmt-dev libcli11-dev doctest-dev coinor-libclp-dev pkg-config clang libclang-rt-14-dev)
 if [[ "${1:-}" == "--charts" ]]; then packages+=(gnuplot-nox python3-scipy python3-numpy); fi
 missing=()
 for p in "${packages[@]}"; do
