@@ -16,6 +16,7 @@
 #include "ogive/closed_form.hpp"
 #include "ogive/curve_families.hpp"
 #include "ogive/csv.hpp"
+#include "ogive/limit.hpp"
 #include "ogive/solve.hpp"
 #include "values.hpp"
 
@@ -485,6 +486,164 @@ int run_curve(SceneOptions& so, const CLI::App& cmd, int stations, std::ostream&
   return kExitOk;
 }
 
+// ---------------------------------------------------------------------------------------------
+// Limit analysis.
+
+const std::map<std::string, JointOrientation> kJointOrientations = {{"radial", JointOrientation::radial},
+                                                                    {"vertical", JointOrientation::vertical}};
+const std::map<std::string, WeightModel> kWeightModels = {{"voussoir", WeightModel::voussoir},
+                                                          {"axis", WeightModel::axis}};
+const std::map<std::string, int> kThrustLines = {{"min", 0}, {"max", 1}, {"collapse", 2}};
+
+struct LimitText {
+  std::string joints = "radial", weight = "voussoir", thrust_line;
+  int joints_count = kDefaultJointsCount;
+  double friction = 0, point_load = 0, point_load_at = 0.5;
+  int repeats = 0;
+};
+
+void add_limit_options(CLI::App& cmd, LimitText& t) {
+  cmd.add_option("--joints", t.joints, "interior joints: radial (normal to the axis) or vertical")->capture_default_str();
+  cmd.add_option("--weight", t.weight, "voussoir (the ring's true weight at each centroid) or axis (rho g t per axis length)")
+      ->capture_default_str();
+  cmd.add_option("--joints-count", t.joints_count, "joints springing to springing, both included; odd, >= 5")
+      ->check(kCount)->capture_default_str();
+  cmd.add_option("--friction", t.friction, "friction coefficient of the joints (> 0): adds the sliding check")
+      ->check(kFiniteNumber);
+  cmd.add_option("--point-load", t.point_load, "vertical point load P, N per metre of width, downward (> 0)")
+      ->check(kFiniteNumber);
+  cmd.add_option("--point-load-at", t.point_load_at, "where P acts: x/L in [0, 1] (default 0.5)")->check(kFiniteNumber);
+  cmd.add_option("--thrust-line", t.thrust_line, "instead of the summary, one row per joint of the min, max or collapse state");
+  cmd.add_option("--repeats", t.repeats, "solve each scene this many times and add median_seconds (benchmark)")
+      ->check(kCount);
+}
+
+// The options as the library's, refused with the option's name when they break a rule.
+LimitOptions limit_options(const LimitText& t, const CLI::App& cmd) {
+  LimitOptions o;
+  o.joints = lookup(kJointOrientations, t.joints, "--joints");
+  o.weight = lookup(kWeightModels, t.weight, "--weight");
+  o.joints_count = t.joints_count;
+  if (cmd.count("--friction") > 0 && !(t.friction > 0))
+    throw UsageError(fmt::format("--friction: must be > 0 (omit it for no sliding check), got {}", t.friction));
+  o.friction = t.friction;
+  if (cmd.count("--point-load") > 0 && !(t.point_load > 0))
+    throw UsageError(fmt::format("--point-load: must be > 0 (N/m, downward), got {}", t.point_load));
+  if (cmd.count("--point-load-at") > 0 && cmd.count("--point-load") == 0)
+    throw UsageError("--point-load-at: needs --point-load");
+  o.point_load = {t.point_load, t.point_load_at};
+  if (cmd.count("--support-displacement-ratio") > 0)
+    throw UsageError("--support-displacement-ratio: does not apply to limit (rigid voussoirs: a spreading support "
+                     "brings the arch to H_min)");
+  if (!t.thrust_line.empty() && lookup(kThrustLines, t.thrust_line, "--thrust-line") == 2 && !o.point_load.present())
+    throw UsageError("--thrust-line collapse: a load factor needs a live load (--point-load)");
+  if (t.repeats < 0 || t.repeats > 100000)
+    throw UsageError(fmt::format("--repeats: must lie in [1, 100000], got {}", t.repeats));
+  std::string why;
+  if (!o.is_valid(&why)) throw UsageError(as_option_message(why));
+  return o;
+}
+
+// Hinges as "x/L:face" joined by ';' (x of the hinge point, on the intrados or extrados), e.g.
+// "0.1129:intrados;0.5:extrados": no commas inside the CSV field.
+std::string hinge_text(const std::vector<Hinge>& hinges, double span) {
+  std::string text;
+  for (const Hinge& h : hinges) {
+    if (!text.empty()) text += ';';
+    text += fmt::format("{:.6g}:{}", h.point.x() / span, h.face == Face::intrados ? "intrados" : "extrados");
+  }
+  return text;
+}
+
+void add_limit_setup(CsvRow& row, const LimitOptions& o) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  row.add(to_string(o.joints)).add(to_string(o.weight)).add(o.joints_count);
+  row.add(o.friction > 0 ? o.friction : nan);
+  row.add(o.point_load.present() ? o.point_load.force : nan).add(o.point_load.present() ? o.point_load.position : nan);
+}
+
+// The message as one CSV field.
+std::string csv_field(std::string text) {
+  std::replace(text.begin(), text.end(), ',', ';');
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  return text;
+}
+
+// One row per scene (or, with --thrust-line, one per joint), each written as soon as it is solved.
+// Exit 0 when every scene has an answer (success, or inadmissible: an arch that cannot stand is an
+// answer), 3 when an LP failed.
+int run_limit(SceneOptions& so, const CLI::App& cmd, const LimitText& text, std::ostream& out) {
+  const LimitOptions o = limit_options(text, cmd);
+  const std::vector<SceneParameters> grid = scene_grid(so, cmd);
+  const std::vector<Scene> scenes = make_scenes(grid, so);
+  const std::string setup = "joints,weight,joints_count,friction,point_load,point_load_at";
+  const bool lines = !text.thrust_line.empty();
+  if (lines) {
+    check_rows(grid.size(), o.joints_count);
+    out << kSceneHeader << ',' << setup
+        << ",state,status,H,load_factor,joint,s,intrados_x,intrados_y,extrados_x,extrados_y,thrust_x,thrust_y,hinge\n";
+  } else {
+    out << kSceneHeader << ',' << setup
+        << ",status,H_min,H_max,V,H_min_over_V,H_max_over_V,thickness_min_ratio,geometric_safety_factor,hinges_min,"
+           "hinges_max,load_factor,load_factor_mechanism,hinges_collapse,lp_solves,message"
+        << (text.repeats > 0 ? ",median_seconds\n" : "\n");
+  }
+  CsvRow row;
+  bool all_answered = true;
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    const Scene& scene = scenes[i];
+    const double L = scene.span();
+    LimitResult r;
+    std::vector<double> seconds;
+    for (int k = 0; k < std::max(1, text.repeats); ++k) {
+      const auto t0 = std::chrono::steady_clock::now();
+      r = analyse_limit(scene, o);
+      seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    }
+    std::nth_element(seconds.begin(), seconds.begin() + seconds.size() / 2, seconds.end());
+    all_answered = all_answered && r.status != LimitStatus::lp_failure;
+    if (lines) {
+      const int which = kThrustLines.at(text.thrust_line);
+      const ThrustState& st = which == 0 ? r.min_state : which == 1 ? r.max_state : r.collapse_state;
+      auto start = [&] {
+        add_scene_columns(row, grid[i], scene);
+        add_limit_setup(row, o);
+        row.add(text.thrust_line).add(to_string(r.status)).add(st.H).add(st.load_factor);
+      };
+      if (!st.found()) {  // no such state: one row that says so, no numbers
+        start();
+        for (int k = 0; k < 9; ++k) row.add(std::numeric_limits<double>::quiet_NaN());
+        row.add(std::string_view{});
+        out << row.take();
+        continue;
+      }
+      // Rebuild the ring the state belongs to (the same options give the same joints).
+      const Ring ring = make_ring(*scene.curve, scene.thickness, scene.material.density * scene.material.gravity, o);
+      for (std::size_t j = 0; j < ring.joints.size(); ++j) {
+        const Joint& joint = ring.joints[j];
+        std::string hinge;
+        for (const Hinge& h : st.hinges)
+          if (h.joint == static_cast<int>(j)) hinge = h.face == Face::intrados ? "intrados" : "extrados";
+        start();
+        row.add(static_cast<std::int64_t>(j)).add(joint.s).add(joint.intrados.x()).add(joint.intrados.y());
+        row.add(joint.extrados.x()).add(joint.extrados.y()).add(st.crossing[j].x()).add(st.crossing[j].y()).add(hinge);
+        out << row.take();
+      }
+      continue;
+    }
+    add_scene_columns(row, grid[i], scene);
+    add_limit_setup(row, o);
+    row.add(to_string(r.status)).add(r.H_min()).add(r.H_max()).add(r.V).add(r.H_min() / r.V).add(r.H_max() / r.V);
+    row.add(r.thickness_min / L).add(scene.thickness / r.thickness_min);
+    row.add(hinge_text(r.min_state.hinges, L)).add(hinge_text(r.max_state.hinges, L));
+    row.add(r.load_factor()).add(r.load_factor_mechanism).add(hinge_text(r.collapse_state.hinges, L));
+    row.add(r.lp_solves).add(csv_field(r.message));
+    if (text.repeats > 0) row.add(seconds[seconds.size() / 2]);
+    out << row.take();
+  }
+  return all_answered ? kExitOk : kExitNotConverged;
+}
+
 constexpr int kProfileStations = 41;
 
 // Time per solve (median over repeats) and true error against the reference, one row per method,
@@ -611,6 +770,13 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   bench->add_option("--rtols", bench_rtols, "tolerances: list or range")->capture_default_str();
   bench->add_option("--repeats", repeats, "solves per row; the median time is printed")->check(kCount)->capture_default_str();
 
+  SceneOptions limit_scene;
+  LimitText limit_text;
+  CLI::App* limit = app.add_subcommand(
+      "limit", "limit analysis (rigid voussoirs, no tension): H_min, H_max, t_min, collapse load; one row per scene");
+  add_scene_options(*limit, limit_scene);
+  add_limit_options(*limit, limit_text);
+
   std::vector<const char*> argv{"ogive"};
   for (const std::string& a : args) argv.push_back(a.c_str());
   try {
@@ -634,6 +800,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     if (profile->parsed()) return run_profile(profile_scene, *profile, profile_options, out);
     if (check->parsed()) return run_check(check_scene, *check, check_options_, out);
     if (curve->parsed()) return run_curve(curve_scene, *curve, curve_stations, out);
+    if (limit->parsed()) return run_limit(limit_scene, *limit, limit_text, out);
     if (bench->parsed()) return run_bench(bench_scene, *bench, bench_options, bench_methods, bench_integrators, bench_rtols,
                                             repeats, out);
   } catch (const UsageError& e) {

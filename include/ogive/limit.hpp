@@ -56,7 +56,7 @@ struct PointLoad {
 
 // The default number of joints: enough that every printed number of the semicircle and the pointed
 // family (eps 0 .. 1.5, t/L 0.06 .. 0.2) is converged to 1e-4 (the convergence table of the README).
-inline constexpr int kDefaultJointsCount = 201;
+inline constexpr int kDefaultJointsCount = 401;
 inline constexpr int kMinJointsCount = 5;
 inline constexpr int kMaxJointsCount = 20001;
 
@@ -174,7 +174,9 @@ ThrustState thrust_state(const Ring& ring, const PointLoad& load, double H, doub
 // The kinematic (upper-bound) multiplier of the point load for the mechanism whose hinges are given:
 // the voussoirs between consecutive hinges rotate as rigid bodies, those before the first and after the
 // last stay on their supports; virtual work of self-weight plus lambda P vanishes. NaN unless the hinges
-// make a mechanism of exactly one degree of freedom in which the point load does work.
+// make a mechanism of one degree of freedom in which the point load does work and every hinge opens on
+// the face opposite to its own (kinematically admissible). Given more than four hinges (a degenerate
+// static optimum), the least multiplier of the admissible mechanisms of four of them.
 double mechanism_load_factor(const Ring& ring, const PointLoad& load, const std::vector<Hinge>& hinges);
 
 }  // namespace ogive

@@ -22,6 +22,10 @@ double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() 
 // The relative width of the bracket on t at which the root-finder stops.
 constexpr double kThicknessTolerance = 1e-10;
 
+// The margin of a program infeasible for every mu (the margin is at most 1/2: half a joint's normal
+// force, in units of the self-weight, of distance to each face).
+constexpr double kNoMargin = -1.0;
+
 // The feasibility margin of the arch of the same axis with thickness t (see analyse_limit).
 struct MarginFunction {
   const Curve& curve;
@@ -36,6 +40,8 @@ struct MarginFunction {
     LimitLp lp(ring, options.point_load, options.friction);
     const LimitLp::Answer a = lp.margin(load_factor);
     solves += lp.solves();
+    // No margin at all (friction can forbid every thrust line, whatever mu): as inadmissible as it gets.
+    if (a.outcome == LimitLp::Outcome::infeasible) return kNoMargin;
     if (a.outcome != LimitLp::Outcome::optimal) failed = true;
     return a.margin;
   }
@@ -106,12 +112,12 @@ ThrustState thrust_state(const Ring& ring, const PointLoad& load, double H, doub
   return st;
 }
 
-double mechanism_load_factor(const Ring& ring, const PointLoad& load, const std::vector<Hinge>& hinges) {
-  if (!load.present() || hinges.size() < 3) return kNaN;
-  std::vector<Hinge> h = hinges;
-  std::sort(h.begin(), h.end(), [](const Hinge& a, const Hinge& b) { return a.joint < b.joint; });
-  for (std::size_t i = 1; i < h.size(); ++i)
-    if (h[i].joint == h[i - 1].joint) return kNaN;
+namespace {
+
+// The multiplier of one mechanism with hinges h (sorted by joint, distinct joints): NaN unless it has
+// exactly one degree of freedom, the point load does work in it, and it is kinematically admissible
+// (each hinge opens on the face opposite to its own).
+double one_mechanism(const Ring& ring, const PointLoad& load, const std::vector<Hinge>& h) {
   // Bodies b = 0 .. k-2 between consecutive hinges, each with a rigid velocity (u, v, omega): a point p
   // moves with (u - omega p_y, v + omega p_x). The parts outside the first and last hinges stay put.
   const int k = static_cast<int>(h.size()), bodies = k - 1;
@@ -131,21 +137,57 @@ double mechanism_load_factor(const Ring& ring, const PointLoad& load, const std:
   }
   Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
   lu.setThreshold(1e-10);
-  const Eigen::MatrixXd kernel = lu.kernel();
-  if (kernel.cols() != 1 || lu.rank() != 3 * bodies - 1) return kNaN;
+  Eigen::VectorXd mode = lu.kernel();
+  if (lu.dimensionOfKernel() != 1) return kNaN;
   auto vertical_velocity = [&](int voussoir, double x) {
     for (int b = 0; b < bodies; ++b)
-      if (voussoir >= h[b].joint && voussoir < h[b + 1].joint)
-        return kernel(3 * b + 1, 0) + kernel(3 * b + 2, 0) * x / L;
+      if (voussoir >= h[b].joint && voussoir < h[b + 1].joint) return mode(3 * b + 1) + mode(3 * b + 2) * x / L;
     return 0.0;
   };
+  const int loaded = limit_detail::loaded_voussoir(ring, load);
+  double live_work = -load.force * vertical_velocity(loaded, load.position * L);
   double dead_work = 0;
   for (std::size_t v = 0; v < ring.voussoirs.size(); ++v)
     dead_work -= ring.voussoirs[v].weight * vertical_velocity(static_cast<int>(v), ring.voussoirs[v].centroid.x());
-  const int loaded = limit_detail::loaded_voussoir(ring, load);
-  const double live_work = -load.force * vertical_velocity(loaded, load.position * L);
   if (!(std::abs(live_work) > 1e-12 * std::abs(dead_work))) return kNaN;
+  if (live_work < 0) {  // the sense in which the load does positive work
+    mode = -mode;
+    live_work = -live_work;
+    dead_work = -dead_work;
+  }
+  // A hinge on the intrados opens the extrados: the right part turns clockwise relative to the left one
+  // (omega_right - omega_left < 0); on the extrados, counter-clockwise.
+  const double scale = mode.tail(1).cwiseAbs().maxCoeff() + mode.cwiseAbs().maxCoeff();
+  for (int i = 0; i < k; ++i) {
+    const double right = i < bodies ? mode(3 * i + 2) : 0.0, left = i > 0 ? mode(3 * (i - 1) + 2) : 0.0;
+    const double turn = (right - left) * (h[i].face == Face::intrados ? 1.0 : -1.0);
+    if (turn > 1e-9 * scale) return kNaN;
+  }
   return -dead_work / live_work;
+}
+
+}  // namespace
+
+double mechanism_load_factor(const Ring& ring, const PointLoad& load, const std::vector<Hinge>& hinges) {
+  if (!load.present() || hinges.size() < 3) return kNaN;
+  std::vector<Hinge> h = hinges;
+  std::sort(h.begin(), h.end(), [](const Hinge& a, const Hinge& b) { return a.joint < b.joint; });
+  for (std::size_t i = 1; i < h.size(); ++i)
+    if (h[i].joint == h[i - 1].joint) return kNaN;
+  if (h.size() <= 4) return one_mechanism(ring, load, h);
+  // More hinges than a one-degree mechanism has (a degenerate optimum: e.g. the thrust line along an
+  // intrados chord touches two adjacent joints): every admissible mechanism of four of them is an upper
+  // bound (the kinematic theorem); the least is the multiplier of these hinges.
+  double best = kNaN;
+  const std::size_t n = h.size();
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a + 1; b < n; ++b)
+      for (std::size_t c = b + 1; c < n; ++c)
+        for (std::size_t d = c + 1; d < n; ++d) {
+          const double m = one_mechanism(ring, load, {h[a], h[b], h[c], h[d]});
+          if (!std::isnan(m) && !(m >= best)) best = m;
+        }
+  return best;
 }
 
 LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
@@ -169,15 +211,21 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
   };
   auto state = [&](const LimitLp::Answer& a) { return thrust_state(ring, load, a.H, a.V, a.M, a.load_factor); };
 
-  const LimitLp::Answer margin = lp.margin(load_factor);
-  if (margin.outcome != LimitLp::Outcome::optimal) return fail("the feasibility margin");
-  const bool admissible = margin.margin >= 0;
+  LimitLp::Answer margin = lp.margin(load_factor);
+  if (margin.outcome == LimitLp::Outcome::infeasible) margin.margin = kNoMargin;
+  else if (margin.outcome != LimitLp::Outcome::optimal) return fail("the feasibility margin");
+  bool admissible = margin.margin >= 0;
   if (admissible) {
     const LimitLp::Answer lo = lp.extreme_thrust(load_factor, false), hi = lp.extreme_thrust(load_factor, true);
-    if (lo.outcome != LimitLp::Outcome::optimal) return fail("the minimum thrust");
-    if (hi.outcome != LimitLp::Outcome::optimal) return fail("the maximum thrust");
-    r.min_state = state(lo);
-    r.max_state = state(hi);
+    for (const LimitLp::Answer& a : {lo, hi})
+      if (a.outcome != LimitLp::Outcome::optimal && a.outcome != LimitLp::Outcome::infeasible)
+        return fail(&a == &lo ? "the minimum thrust" : "the maximum thrust");
+    // A margin of zero to round-off can still leave the thrust programs infeasible: not admissible.
+    admissible = lo.outcome == LimitLp::Outcome::optimal && hi.outcome == LimitLp::Outcome::optimal;
+    if (admissible) {
+      r.min_state = state(lo);
+      r.max_state = state(hi);
+    }
   }
   if (load.present()) {
     const LimitLp::Answer c = lp.collapse();

@@ -29,6 +29,9 @@ enum Column { kH = 0, kV = 1, kM = 2, kLambda = 3, kMu = 4, kUnknowns = 5 };
 // arch's real values); an optimum on one of them means "no finite answer".
 constexpr double kCap = 1e6;
 
+// Feasibility and optimality tolerances of the scaled programs (coefficients of order one).
+constexpr double kFeasibility = 1e-11;
+
 // One inequality a . z <= b in the scaled unknowns z = (H/W, V/W, M/(W L), lambda, mu).
 struct Inequality {
   std::array<double, kUnknowns> a;
@@ -121,6 +124,10 @@ LimitLp::Answer LimitLp::Impl::optimise(Column target, bool maximise,
   // The program is scaled already (forces in W, lengths in L: coefficients of order one); Clp's own
   // scaling made it report "optimal" answers that were infeasible once unscaled (secondary status 3).
   model.scaling(0);
+  // Clp's dual feasibility tolerance is how far the thrust line may stray outside a joint (in units of
+  // W L): its default 1e-7 let the collapse multiplier exceed the kinematic one by 1e-6.
+  model.setDualTolerance(kFeasibility);
+  model.setPrimalTolerance(kFeasibility);
   model.loadProblem(columns, m, start.data(), index.data(), value.data(), column_lower.data(), column_upper.data(),
                     cost.data(), rhs.data(), rhs.data());
   model.setOptimizationDirection(1.0);
