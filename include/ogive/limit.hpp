@@ -141,7 +141,8 @@ struct LimitResult {
   // the scene is symmetric.
   double V = std::numeric_limits<double>::quiet_NaN();
   ThrustState min_state;  // the smallest H (the arch pushes least: the state a spreading support reaches)
-  ThrustState max_state;  // the largest H
+  ThrustState max_state;  // the largest H; absent (with a message) when H is unbounded: a flat, thick
+                          // arch holds a straight thrust line of any H (infinite compressive strength)
   double thickness_min = std::numeric_limits<double>::quiet_NaN();  // t_min, m, same axis and loads
   // With a point load: the largest multiplier of the point load that the arch carries (self-weight
   // times 1), its state with the collapse mechanism's hinges, and the kinematic multiplier of the same

@@ -22,8 +22,8 @@ double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() 
 // The relative width of the bracket on t at which the root-finder stops.
 constexpr double kThicknessTolerance = 1e-10;
 
-// The margin of a program infeasible for every mu (the margin is at most 1/2: half a joint's normal
-// force, in units of the self-weight, of distance to each face).
+// The margin given to a program infeasible for every mu (friction can forbid every thrust line): a
+// negative number for the root-finder, which needs only the sign.
 constexpr double kNoMargin = -1.0;
 
 // The feasibility margin of the arch of the same axis with thickness t (see analyse_limit).
@@ -215,16 +215,18 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
   if (margin.outcome == LimitLp::Outcome::infeasible) margin.margin = kNoMargin;
   else if (margin.outcome != LimitLp::Outcome::optimal) return fail("the feasibility margin");
   bool admissible = margin.margin >= 0;
+  bool unbounded_thrust = false;
   if (admissible) {
     const LimitLp::Answer lo = lp.extreme_thrust(load_factor, false), hi = lp.extreme_thrust(load_factor, true);
-    for (const LimitLp::Answer& a : {lo, hi})
-      if (a.outcome != LimitLp::Outcome::optimal && a.outcome != LimitLp::Outcome::infeasible)
-        return fail(&a == &lo ? "the minimum thrust" : "the maximum thrust");
+    if (lo.outcome == LimitLp::Outcome::failure || lo.outcome == LimitLp::Outcome::unbounded)
+      return fail("the minimum thrust");
+    if (hi.outcome == LimitLp::Outcome::failure) return fail("the maximum thrust");
     // A margin of zero to round-off can still leave the thrust programs infeasible: not admissible.
-    admissible = lo.outcome == LimitLp::Outcome::optimal && hi.outcome == LimitLp::Outcome::optimal;
+    admissible = lo.outcome == LimitLp::Outcome::optimal && hi.outcome != LimitLp::Outcome::infeasible;
     if (admissible) {
       r.min_state = state(lo);
-      r.max_state = state(hi);
+      if (hi.outcome == LimitLp::Outcome::optimal) r.max_state = state(hi);
+      else unbounded_thrust = true;
     }
   }
   if (load.present()) {
@@ -277,15 +279,18 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
   }
   if (!admissible) {
     r.status = LimitStatus::inadmissible;
+    const char* where = options.friction > 0 ? "inside the arch and its joints' friction cones" : "inside the arch";
     r.message = std::isnan(r.thickness_min)
-                    ? fmt::format("no thrust line fits inside the arch at any thickness up to {} m", t_cap)
-                    : "no thrust line fits inside the arch: t < t_min";
+                    ? fmt::format("no thrust line fits {} at any thickness up to {} m", where, t_cap)
+                    : fmt::format("no thrust line fits {}: t < t_min", where);
     return r;
   }
   r.status = LimitStatus::success;
   if (!bracketed) r.message = fmt::format("t_min below {} m: not searched further", hi);
+  auto note = [&](const std::string& text) { r.message += (r.message.empty() ? "" : "; ") + text; };
+  if (unbounded_thrust) note("no largest thrust: a thrust line of any H fits inside the arch (H_max absent)");
   if (load.present() && std::isnan(r.load_factor()))
-    r.message = "the point load cannot turn the arch into a mechanism (no finite load factor)";
+    note("the point load cannot turn the arch into a mechanism (no finite load factor)");
   return r;
 }
 

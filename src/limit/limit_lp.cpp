@@ -29,6 +29,10 @@ enum Column { kH = 0, kV = 1, kM = 2, kLambda = 3, kMu = 4, kUnknowns = 5 };
 // arch's real values); an optimum on one of them means "no finite answer".
 constexpr double kCap = 1e6;
 
+// Only the margin's sign matters; bounded, it stays finite where the thrust may grow without bound (a
+// flat, thick arch holds a straight thrust line of any H).
+constexpr double kMaxMargin = 1.0;
+
 // Feasibility and optimality tolerances of the scaled programs (coefficients of order one).
 constexpr double kFeasibility = 1e-11;
 
@@ -77,7 +81,7 @@ LimitLp::LimitLp(const Ring& ring, const PointLoad& load, double friction) : imp
   rows.push_back({{0, 0, 0, -1, 0}, 0.0});
   for (int c = 0; c < kUnknowns; ++c)
     for (double sign : {1.0, -1.0}) {
-      Inequality cap{{0, 0, 0, 0, 0}, kCap};
+      Inequality cap{{0, 0, 0, 0, 0}, c == kMu && sign > 0 ? kMaxMargin : kCap};
       cap.a[c] = sign;
       rows.push_back(cap);
     }
@@ -148,9 +152,7 @@ LimitLp::Answer LimitLp::Impl::optimise(Column target, bool maximise,
   a.M = z[kM] * weight * span;
   a.load_factor = z[kLambda];
   a.margin = z[kMu];
-  bool capped = false;
-  for (double v : z) capped = capped || std::abs(v) >= 0.5 * kCap;
-  a.outcome = capped ? Outcome::unbounded : Outcome::optimal;
+  a.outcome = std::abs(z[target]) >= 0.5 * kCap ? Outcome::unbounded : Outcome::optimal;
   return a;
 }
 
