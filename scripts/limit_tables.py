@@ -78,6 +78,11 @@ def main():
         print(f"| {e:g} | {t:.4f} | {float(v['thickness_min_ratio']):.4f} | {float(a['thickness_min_ratio']):.4f} | {t / (0.5 + e):.4f} |")
     charts = os.path.join(ROOT, "docs", "charts")
     os.makedirs(charts, exist_ok=True)
+    # The chart on a finer grid: t_min has kinks where the collapse mechanism changes.
+    fine = "0:1.5:61"
+    _, rows = run(ogive, "limit", "--eccentricity", fine, "--thickness-ratio", "0.15")
+    _, vertical = run(ogive, "limit", "--eccentricity", fine, "--thickness-ratio", "0.15", "--joints", "vertical")
+    _, axis = run(ogive, "limit", "--eccentricity", fine, "--thickness-ratio", "0.15", "--weight", "axis")
     data = os.path.join(ROOT, "data", "limit", "thickness-joints.dat")
     with open(data, "w") as f:
         for r, v, a in zip(rows, vertical, axis):
@@ -87,11 +92,12 @@ def main():
 set output '{charts}/limit-thickness.{ext}'
 set xlabel 'eccentricity eps (0: semicircle, 0.5: equilateral)'
 set ylabel 'minimum thickness t_min / L'
-set key top right
+set key bottom right
+set termoption noenhanced
 set grid
-plot '{data}' using 1:2 with linespoints title 'radial joints, true weight', \\
-     '' using 1:3 with linespoints title 'vertical joints, true weight', \\
-     '' using 1:4 with linespoints title 'radial joints, weight on the axis'
+plot '{data}' using 1:2 with lines lw 2 title 'radial joints, true weight', \\
+     '' using 1:3 with lines lw 2 title 'vertical joints, true weight', \\
+     '' using 1:4 with lines lw 2 title 'radial joints, weight on the axis'
 """
         subprocess.run(["gnuplot"], input=script, text=True, check=True)
     os.remove(data)
