@@ -340,6 +340,13 @@ TEST_CASE("cli: limit with a point load prints the load factor and its mechanism
     hinges += !field(lines.out, "hinge", j).empty();
   }
   CHECK(hinges == 4);
+
+  // A state that does not exist (the arch cannot stand): one row that says so, without numbers.
+  const Run none = limit_cli({"--thrust-line", "max", "--thickness-ratio", "0.03", "--joints-count", "41"});
+  REQUIRE(none.status == 0);
+  REQUIRE(split(none.out, '\n').size() == 2);
+  CHECK(field(none.out, "status") == "inadmissible");
+  CHECK(field(none.out, "thrust_x").empty());
 }
 
 TEST_CASE("cli: limit refuses bad input with one line and exit 2") {

@@ -28,8 +28,8 @@ namespace ogive {
 // Joint orientation. The springing joints (the beds on the supports) are always normal to the axis;
 // this chooses the interior joints. At a pointed crown (a kink of the axis) the joints normal to the two
 // halves' axes meet inside the section, and a line that does not cut the arch in two is not a joint:
-// the crown joint is always vertical (for a smooth crown that is also the normal one), and a radial
-// joint whose intrados point lies beyond mid-span is dropped.
+// the crown joint is always vertical (for a smooth crown that is also the normal one), and the radial
+// joints are spaced over the axis only up to the point whose normal meets the intrados at mid-span.
 enum class JointOrientation {
   radial,    // normal to the axis (default)
   vertical,  // vertical lines through equally spaced points of the intrados
@@ -99,8 +99,7 @@ struct Ring {
 
 // The voussoirs of `curve` (the left half of a symmetric arch) with thickness t (m) and unit weight
 // gamma = rho g (N/m^3). Throws std::invalid_argument naming the field for a thickness that does not fit
-// the curve or invalid options. Fewer joints than options.joints_count when radial joints near a pointed
-// crown are dropped (see JointOrientation).
+// the curve or invalid options. joints.size() == options.joints_count.
 Ring make_ring(const Curve& curve, double thickness, double unit_weight, const LimitOptions& options);
 
 // ---------------------------------------------------------------------------------------------

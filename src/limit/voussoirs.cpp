@@ -108,7 +108,7 @@ bool LimitOptions::is_valid(std::string* why) const {
     return fail(fmt::format("joints_count: must be odd and lie in [{}, {}] (a joint at the crown), got {}",
                             kMinJointsCount, kMaxJointsCount, joints_count));
   if (!std::isfinite(friction) || friction < 0)
-    return fail(fmt::format("friction: must be finite and > 0 (0: no sliding check), got {}", friction));
+    return fail(fmt::format("friction: must be finite and >= 0 (0: no sliding check), got {}", friction));
   if (!std::isfinite(point_load.force) || point_load.force < 0)
     return fail(fmt::format("point_load: must be finite and >= 0 (N/m, downward), got {}", point_load.force));
   if (!std::isfinite(point_load.position) || point_load.position < 0 || point_load.position > 1)
