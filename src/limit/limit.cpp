@@ -291,6 +291,9 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
   if (unbounded_thrust) note("no largest thrust: a thrust line of any H fits inside the arch (H_max absent)");
   if (load.present() && std::isnan(r.load_factor()))
     note("the point load cannot turn the arch into a mechanism (no finite load factor)");
+  if (!std::isnan(r.load_factor()) && std::isnan(r.load_factor_mechanism))
+    note(options.friction > 0 ? "no rotational mechanism through the collapse hinges: joints slide at collapse"
+                              : "no one-degree rotational mechanism through the collapse hinges");
   return r;
 }
 
