@@ -207,6 +207,22 @@ TEST_CASE("limit: the ring's weight and centroids are those of the annulus; the 
   CHECK(close(axis.total_weight(), kGamma * t * 2.0 * curve->half_length(), kExact));
 }
 
+TEST_CASE("limit: the pointed ring weighs what the two annulus segments left of mid-span weigh, whatever the joints") {
+  // Each half is the part of an annulus (centre eps L beyond mid-span, radii R -+ t/2) above the
+  // springing line and before mid-span: half a circular segment of each disc, cut at d = eps L from the
+  // centre, of area r^2 acos(d/r) - d sqrt(r^2 - d^2).
+  const double eps = 0.5, L = 10.0, t = 1.5, R = (0.5 + eps) * L, d = eps * L;
+  auto segment = [&](double r) { return r * r * std::acos(d / r) - d * std::sqrt(r * r - d * d); };
+  const double area = segment(R + t / 2) - segment(R - t / 2);  // both halves
+  for (JointOrientation j : {JointOrientation::radial, JointOrientation::vertical})
+    for (int n : {9, kDefaultJointsCount}) {
+      LimitOptions o;
+      o.joints = j;
+      o.joints_count = n;
+      CHECK(close(make_ring(*make_pointed(L, eps), t, kGamma, o).total_weight(), kGamma * area, kExact));
+    }
+}
+
 TEST_CASE("limit: at a pointed crown the crown joint is vertical and every joint cuts the arch in two") {
   for (JointOrientation j : {JointOrientation::radial, JointOrientation::vertical}) {
     LimitOptions o;

@@ -258,6 +258,8 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
       hi = lo;
       f_hi = f_lo;
     }
+  } else if (margin.margin >= 0) {
+    r.thickness_min = t;  // a zero margin whose thrust programs are infeasible: t is t_min to round-off
   } else {
     for (int i = 0; i < 60 && !f.failed && hi < t_cap; ++i) {
       hi = std::min(2.0 * lo, t_cap);
