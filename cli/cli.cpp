@@ -538,7 +538,7 @@ LimitOptions limit_options(const LimitText& t, const CLI::App& cmd) {
   if (!t.thrust_line.empty() && lookup(kThrustLines, t.thrust_line, "--thrust-line") == 2 && !o.point_load.present())
     throw UsageError("--thrust-line collapse: a load factor needs a live load (--point-load)");
   if (t.repeats < 0 || t.repeats > 100000)
-    throw UsageError(fmt::format("--repeats: must lie in [1, 100000], got {}", t.repeats));
+    throw UsageError(fmt::format("--repeats: must lie in [0, 100000] (0: no timing), got {}", t.repeats));
   std::string why;
   if (!o.is_valid(&why)) throw UsageError(as_option_message(why));
   return o;
