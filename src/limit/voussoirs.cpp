@@ -1,5 +1,7 @@
 // The ring of voussoirs: joints, and the weight of each voussoir with where it acts.
 #include <algorithm>
+#include <array>
+#include <utility>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -21,20 +23,21 @@ struct FacePoint {
   Eigen::Vector2d p, dp;
 };
 
-FacePoint face_at(const Curve& curve, double n, double s) {
+CurvePoint axis_at(const Curve& curve, double s) {
   const double S = curve.half_length();
-  CurvePoint q;
-  if (s <= S || !curve.arcs().empty()) {
-    q = curve.at(s);
-  } else {
-    const CurvePoint c = curve.at(S);
-    q = {c.x + (s - S) * std::cos(c.theta), c.y + (s - S) * std::sin(c.theta), c.theta, 0.0};
-  }
+  if (s <= S || !curve.arcs().empty()) return curve.at(s);
+  const CurvePoint c = curve.at(S);
+  return {c.x + (s - S) * std::cos(c.theta), c.y + (s - S) * std::sin(c.theta), c.theta, 0.0};
+}
+
+FacePoint offset(const CurvePoint& q, double n) {
   const Eigen::Vector2d tangent(std::cos(q.theta), std::sin(q.theta));
   const Eigen::Vector2d normal(-tangent.y(), tangent.x());  // towards the extrados
   // d(P + n normal)/ds = tangent (1 - n kappa): d normal/ds = -kappa tangent.
   return {Eigen::Vector2d(q.x, q.y) + n * normal, (1.0 - n * q.kappa) * tangent};
 }
+
+FacePoint face_at(const Curve& curve, double n, double s) { return offset(axis_at(curve, s), n); }
 
 // The arc length s in [lo, hi] where the face at n reaches abscissa x. x grows with s on every face of
 // a valid ring (dx/ds = cos theta (1 - n kappa) >= 0), so a safeguarded Newton iteration converges.
@@ -63,28 +66,44 @@ struct RegionMoments {
     sy -= dx * (p.y() * p.y() + p.y() * q.y() + q.y() * q.y()) / 6.0;
   }
 
-  // The face at n from arc length a to b (either order), piece by piece between the curve's breakpoints
-  // (and the crown), where the integrand is smooth.
-  void add_face(const Curve& curve, double n, double a, double b) {
-    std::vector<double> knots{std::min(a, b)};
-    std::vector<double> breaks = curve.breakpoints();
-    breaks.push_back(curve.half_length());
-    for (double k : breaks)
-      if (k > std::min(a, b) && k < std::max(a, b)) knots.push_back(k);
-    knots.push_back(std::max(a, b));
-    if (a > b) std::reverse(knots.begin(), knots.end());
-    for (std::size_t i = 0; i + 1 < knots.size(); ++i) {
-      const Eigen::Vector3d piece = gauss_legendre_8(
+  // Green's integrands along a face point f.
+  static Eigen::Vector3d integrand(const FacePoint& f) {
+    const double x = f.p.x(), y = f.p.y();
+    return {x * f.dp.y(), 0.5 * x * x * f.dp.y(), -0.5 * y * y * f.dp.x()};
+  }
+
+  void add(const Eigen::Vector3d& piece) {
+    area += piece[0];
+    sx += piece[1];
+    sy += piece[2];
+  }
+
+  // The faces at each n of `faces`, all from arc length a to b (either order) and each counted with its
+  // sign (+1 along a -> b, -1 back), piece by piece between the knots (the curve's breakpoints and the
+  // crown), where the integrand is smooth; one evaluation of the axis per node serves every face.
+  template <std::size_t N>
+  void add_faces(const Curve& curve, const std::vector<double>& breaks, const std::array<std::pair<double, double>, N>& faces,
+                 double a, double b) {
+    double from = a;
+    auto piece = [&](double to) {
+      add(gauss_legendre_8(
           [&](double s) -> Eigen::Vector3d {
-            const FacePoint f = face_at(curve, n, s);
-            const double x = f.p.x(), y = f.p.y();
-            return {x * f.dp.y(), 0.5 * x * x * f.dp.y(), -0.5 * y * y * f.dp.x()};
+            const CurvePoint q = axis_at(curve, s);
+            Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+            for (const auto& [n, sign] : faces) sum += sign * integrand(offset(q, n));
+            return sum;
           },
-          knots[i], knots[i + 1]);
-      area += piece[0];
-      sx += piece[1];
-      sy += piece[2];
+          from, to));
+      from = to;
+    };
+    if (a < b) {
+      for (double k : breaks)
+        if (k > a && k < b) piece(k);
+    } else {
+      for (auto k = breaks.rbegin(); k != breaks.rend(); ++k)
+        if (*k < a && *k > b) piece(*k);
     }
+    piece(b);
   }
 };
 
@@ -172,14 +191,21 @@ Ring make_ring(const Curve& curve, double thickness, double unit_weight, const L
   crown.joint.intrados.x() = crown.joint.extrados.x() = 0.5 * L;  // exactly vertical
   half.push_back(crown);
 
+  // Where the faces' integrands are not smooth: the curve's breakpoints and the crown (sorted).
+  std::vector<double> breaks = curve.breakpoints();
+  breaks.push_back(S);
   std::vector<Voussoir> left(m);
   for (int k = 0; k < m; ++k) {
     const HalfJoint &a = half[k], &b = half[k + 1];
     if (options.weight == WeightModel::voussoir) {
       RegionMoments r;
-      r.add_face(curve, -half_t, a.s_intrados, b.s_intrados);
+      if (a.s_intrados == a.s_extrados && b.s_intrados == b.s_extrados) {  // radial joints: one band
+        r.add_faces<2>(curve, breaks, {{{-half_t, 1.0}, {half_t, -1.0}}}, a.s_intrados, b.s_intrados);
+      } else {
+        r.add_faces<1>(curve, breaks, {{{-half_t, 1.0}}}, a.s_intrados, b.s_intrados);
+        r.add_faces<1>(curve, breaks, {{{half_t, 1.0}}}, b.s_extrados, a.s_extrados);
+      }
       r.add_segment(b.joint.intrados, b.joint.extrados);
-      r.add_face(curve, half_t, b.s_extrados, a.s_extrados);
       r.add_segment(a.joint.extrados, a.joint.intrados);
       left[k] = {unit_weight * r.area, Eigen::Vector2d(r.sx / r.area, r.sy / r.area)};
     } else {
