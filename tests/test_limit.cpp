@@ -24,8 +24,8 @@ constexpr double kQuotedReading = 0.02;
 // The static and kinematic multipliers of one mechanism are the same number computed twice (the
 // issue's tolerance; they agree to round-off).
 constexpr double kVirtualWork = 1e-6;
-// H_min and H_max at the t_min the root-finder returns (the feasible end of a bracket of relative width
-// 1e-10 or a last step below it): the range has closed to this relative width.
+// H_min and H_max just above the t_min the root-finder returns (the feasible end of a bracket of
+// relative width 1e-10, or a last step below it): the range has closed to this relative width.
 constexpr double kRangeAtMinimum = 1e-5;
 // The convergence that the default number of joints is chosen for (README's table).
 constexpr double kConverged = 1e-4;
@@ -46,7 +46,7 @@ TEST_CASE("limit: semicircle, radial joints, true weight: t_min / R = 0.1075, in
   // At t_min: the five-hinge mechanism; the haunch hinges on the intrados, at the published angle to
   // within one joint spacing.
   Scene at_min = paper_scene(0.0);
-  at_min.thickness = r.thickness_min;
+  at_min.thickness = r.thickness_min * (1 + 1e-9);  // just above: t_min is known to 1e-10
   const LimitResult m = analyse_limit(at_min, {});
   REQUIRE(m.status == LimitStatus::success);
   const double spacing = 180.0 / (kDefaultJointsCount - 1);
@@ -108,8 +108,10 @@ TEST_CASE("limit: H_min <= H_max; H_min falls and H_max rises with thickness; bo
       if (t_min == 0) t_min = r.thickness_min;
       CHECK(close(r.thickness_min, t_min, 1e-9));
     }
+    // t_min is known to 1e-10 (the root-finder's bracket) and its margin is zero to round-off there:
+    // the range is evaluated just above it.
     Scene at_min = paper_scene(eps);
-    at_min.thickness = t_min;
+    at_min.thickness = t_min * (1 + 1e-9);
     const LimitResult m = analyse_limit(at_min, {});
     REQUIRE(m.status == LimitStatus::success);
     CHECK(close(m.H_min(), m.H_max(), kRangeAtMinimum));

@@ -34,12 +34,14 @@ struct MarginFunction {
   double load_factor;
   int solves = 0;
   bool failed = false;
+  std::vector<int> basis;  // the last margin's optimal basis: the next thickness starts from it
 
   double operator()(double t) {
     const Ring ring = make_ring(curve, t, unit_weight, options);
     LimitLp lp(ring, options.point_load, options.friction);
-    const LimitLp::Answer a = lp.margin(load_factor);
+    LimitLp::Answer a = lp.margin(load_factor, basis.empty() ? nullptr : &basis);
     solves += lp.solves();
+    basis = std::move(a.basis);
     // No margin at all (friction can forbid every thrust line, whatever mu): as inadmissible as it gets.
     if (a.outcome == LimitLp::Outcome::infeasible) return kNoMargin;
     if (a.outcome != LimitLp::Outcome::optimal) failed = true;
@@ -243,6 +245,7 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
 
   // t_min: bracket the root of the margin, then Illinois.
   MarginFunction f{curve, unit_weight, options, load_factor};
+  f.basis = margin.basis;
   const double t = scene.thickness;
   const double t_cap = 0.99 * max_thickness(curve);
   double lo = t, f_lo = margin.margin, hi = t, f_hi = margin.margin;

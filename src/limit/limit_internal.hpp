@@ -37,11 +37,14 @@ class LimitLp {
   struct Answer {
     Outcome outcome = Outcome::failure;
     double H = 0, V = 0, M = 0, load_factor = 0, margin = 0;  // SI units; margin dimensionless
+    std::vector<int> basis;  // the optimal basis (which joint inequalities are tight), to warm-start
   };
   // The smallest or largest H of an admissible state under self-weight + load_factor * P (mu = 0).
   Answer extreme_thrust(double load_factor, bool largest);
   // The largest margin mu under self-weight + load_factor * P: >= 0 iff the arch is admissible.
-  Answer margin(double load_factor);
+  // `warm`: the basis of the margin of a ring with the same joints count (another thickness), to start
+  // from.
+  Answer margin(double load_factor, const std::vector<int>* warm = nullptr);
   // The largest load factor lambda >= 0 with an admissible state (mu = 0).
   Answer collapse();
   int solves() const { return solves_; }

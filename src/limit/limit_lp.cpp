@@ -49,7 +49,8 @@ struct LimitLp::Impl {
   double weight = 1, span = 1;  // the scales: forces in W, lengths in L
 
   // Maximises (or minimises) unknown `target` with the unknowns in `fixed` (NaN: free) held.
-  Answer optimise(Column target, bool maximise, const std::array<double, kUnknowns>& fixed) const;
+  Answer optimise(Column target, bool maximise, const std::array<double, kUnknowns>& fixed,
+                  const std::vector<int>* warm = nullptr) const;
 };
 
 LimitLp::LimitLp(const Ring& ring, const PointLoad& load, double friction) : impl_(std::make_unique<Impl>()) {
@@ -89,8 +90,8 @@ LimitLp::LimitLp(const Ring& ring, const PointLoad& load, double friction) : imp
 
 LimitLp::~LimitLp() = default;
 
-LimitLp::Answer LimitLp::Impl::optimise(Column target, bool maximise,
-                                        const std::array<double, kUnknowns>& fixed) const {
+LimitLp::Answer LimitLp::Impl::optimise(Column target, bool maximise, const std::array<double, kUnknowns>& fixed,
+                                        const std::vector<int>* warm) const {
   // The free unknowns become the dual's rows; every inequality with a free coefficient a column.
   std::vector<int> free;
   for (int c = 0; c < kUnknowns; ++c)
@@ -99,7 +100,9 @@ LimitLp::Answer LimitLp::Impl::optimise(Column target, bool maximise,
   std::vector<CoinBigIndex> start{0};
   std::vector<int> index;
   std::vector<double> value, cost;
-  for (const Inequality& row : rows) {
+  std::vector<int> kept;  // the inequality of each column
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const Inequality& row = rows[r];
     double b = row.b;
     for (int c = 0; c < kUnknowns; ++c)
       if (!std::isnan(fixed[c])) b -= row.a[c] * fixed[c];
@@ -116,6 +119,7 @@ LimitLp::Answer LimitLp::Impl::optimise(Column target, bool maximise,
       continue;
     }
     cost.push_back(b);
+    kept.push_back(static_cast<int>(r));
     start.push_back(static_cast<CoinBigIndex>(index.size()));
   }
   const int columns = static_cast<int>(cost.size());
@@ -135,6 +139,18 @@ LimitLp::Answer LimitLp::Impl::optimise(Column target, bool maximise,
   model.loadProblem(columns, m, start.data(), index.data(), value.data(), column_lower.data(), column_upper.data(),
                     cost.data(), rhs.data(), rhs.data());
   model.setOptimizationDirection(1.0);
+  if (warm && static_cast<int>(warm->size()) == m) {
+    // Start from the given basic columns (the same inequalities tight as in the previous program),
+    // every other column at its bound of 0, every row out of the basis.
+    model.createStatus();
+    for (int c = 0; c < columns; ++c) model.setColumnStatus(c, ClpSimplex::atLowerBound);
+    for (int k = 0; k < m; ++k) model.setRowStatus(k, ClpSimplex::isFixed);
+    int c = 0;
+    for (int r : *warm) {
+      while (c < columns && kept[c] < r) ++c;
+      if (c < columns && kept[c] == r) model.setColumnStatus(c, ClpSimplex::basic);
+    }
+  }
   model.dual();
   Answer a;
   // The dual infeasible (no y) <=> the primal unbounded, prevented by the caps; the dual unbounded <=>
@@ -153,6 +169,8 @@ LimitLp::Answer LimitLp::Impl::optimise(Column target, bool maximise,
   a.load_factor = z[kLambda];
   a.margin = z[kMu];
   a.outcome = std::abs(z[target]) >= 0.5 * kCap ? Outcome::unbounded : Outcome::optimal;
+  for (int c = 0; c < columns; ++c)
+    if (model.getColumnStatus(c) == ClpSimplex::basic) a.basis.push_back(kept[c]);
   return a;
 }
 
@@ -162,10 +180,10 @@ LimitLp::Answer LimitLp::extreme_thrust(double load_factor, bool largest) {
   return impl_->optimise(kH, largest, {nan, nan, nan, load_factor, 0.0});
 }
 
-LimitLp::Answer LimitLp::margin(double load_factor) {
+LimitLp::Answer LimitLp::margin(double load_factor, const std::vector<int>* warm) {
   ++solves_;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  return impl_->optimise(kMu, true, {nan, nan, nan, load_factor, nan});
+  return impl_->optimise(kMu, true, {nan, nan, nan, load_factor, nan}, warm);
 }
 
 LimitLp::Answer LimitLp::collapse() {
