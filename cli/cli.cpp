@@ -493,7 +493,9 @@ const std::map<std::string, JointOrientation> kJointOrientations = {{"radial", J
                                                                     {"vertical", JointOrientation::vertical}};
 const std::map<std::string, WeightModel> kWeightModels = {{"voussoir", WeightModel::voussoir},
                                                           {"axis", WeightModel::axis}};
-const std::map<std::string, int> kThrustLines = {{"min", 0}, {"max", 1}, {"collapse", 2}};
+enum class ThrustLine { min, max, collapse };
+const std::map<std::string, ThrustLine> kThrustLines = {
+    {"min", ThrustLine::min}, {"max", ThrustLine::max}, {"collapse", ThrustLine::collapse}};
 
 struct LimitText {
   std::string joints = "radial", weight = "voussoir", thrust_line;
@@ -535,7 +537,8 @@ LimitOptions limit_options(const LimitText& t, const CLI::App& cmd) {
   if (cmd.count("--support-displacement-ratio") > 0)
     throw UsageError("--support-displacement-ratio: does not apply to limit (rigid voussoirs: a spreading support "
                      "brings the arch to H_min)");
-  if (!t.thrust_line.empty() && lookup(kThrustLines, t.thrust_line, "--thrust-line") == 2 && !o.point_load.present())
+  const bool collapse = !t.thrust_line.empty() && lookup(kThrustLines, t.thrust_line, "--thrust-line") == ThrustLine::collapse;
+  if (collapse && !o.point_load.present())
     throw UsageError("--thrust-line collapse: a load factor needs a live load (--point-load)");
   if (t.repeats < 0 || t.repeats > 100000)
     throw UsageError(fmt::format("--repeats: must lie in [0, 100000] (0: no timing), got {}", t.repeats));
@@ -603,8 +606,10 @@ int run_limit(SceneOptions& so, const CLI::App& cmd, const LimitText& text, std:
     std::nth_element(seconds.begin(), seconds.begin() + seconds.size() / 2, seconds.end());
     all_answered = all_answered && r.status != LimitStatus::lp_failure;
     if (lines) {
-      const int which = kThrustLines.at(text.thrust_line);
-      const ThrustState& st = which == 0 ? r.min_state : which == 1 ? r.max_state : r.collapse_state;
+      const ThrustLine which = kThrustLines.at(text.thrust_line);
+      const ThrustState& st = which == ThrustLine::min   ? r.min_state
+                              : which == ThrustLine::max ? r.max_state
+                                                         : r.collapse_state;
       auto start = [&] {
         add_scene_columns(row, grid[i], scene);
         add_limit_setup(row, o);

@@ -244,8 +244,7 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
   r.lp_solves += lp.solves();
 
   // t_min: bracket the root of the margin, then Illinois.
-  MarginFunction f{curve, unit_weight, options, load_factor};
-  f.basis = margin.basis;
+  MarginFunction f{curve, unit_weight, options, load_factor, 0, false, margin.basis};
   const double t = scene.thickness;
   const double t_cap = 0.99 * max_thickness(curve);
   double lo = t, f_lo = margin.margin, hi = t, f_hi = margin.margin;

@@ -116,7 +116,11 @@ LimitLp::Answer LimitLp::Impl::optimise(Column target, bool maximise, const std:
       }
     if (!any) {
       // A row of held unknowns only: it holds or the program is infeasible.
-      if (b < -1e-12) return {Outcome::infeasible};
+      if (b < -1e-12) {
+        Answer infeasible;
+        infeasible.outcome = Outcome::infeasible;
+        return infeasible;
+      }
       continue;
     }
     cost.push_back(b);
