@@ -26,6 +26,7 @@
 #include "ogive/closed_form.hpp"
 #include "ogive/curve_families.hpp"
 #include "ogive/csv.hpp"
+#include "ogive/limit.hpp"
 #include "ogive/solve.hpp"
 #include "ogive/svg.hpp"
 #include "ogive/thrust_line.hpp"
@@ -314,9 +315,9 @@ const std::vector<ColumnDoc> kColumnDocs = {
     {"method", "", "method that produced the numbers (closed-form, shooting, multiple-shooting)"},
     {"integrator", "", "CVODE's method (adams, bdf); empty for the closed form"},
     {"rtol", "", "relative error asked (--rtol); success guarantees it"},
-    {"status", "", "success, or why not (README: What status promises)"},
-    {"H", "N/m", "horizontal reaction: inward push of a support on the arch, per metre of vault"},
-    {"V", "N/m", "vertical reaction of a support: half the weight, per metre of vault"},
+    {"status", "", "success, or why not (README: What status promises); limit: success or inadmissible"},
+    {"H", "N/m", "horizontal reaction: inward push of a support on the arch, per metre of vault (limit --thrust-line: of that state)"},
+    {"V", "N/m", "vertical reaction of a support: half the weight (limit: half the total vertical load), per metre of vault"},
     {"H_over_V", "", "normalized horizontal reaction H / V"},
     {"max_thrust_eccentricity", "%", "largest |thrust_eccentricity| along the arch; empty if N is not a compression everywhere"},
     {"max_thrust_eccentricity_at", "m", "arc length from the left springing where it occurs"},
@@ -330,14 +331,14 @@ const std::vector<ColumnDoc> kColumnDocs = {
     {"boundary_residual", "", "largest residual of the six boundary conditions, scaled units"},
     {"equilibrium_residual", "", "largest residual of the half arch's equilibrium / half weight"},
     {"message", "", "why the status is not success; empty on success"},
-    {"s", "m", "arc length from the left springing"},
+    {"s", "m", "arc length from the left springing (limit --thrust-line: of the joint's axis point)"},
     {"x", "m", "axis point, horizontal from the left springing"},
     {"y", "m", "axis point, up from the springing line"},
     {"theta", "rad", "tangent angle to the horizontal, in the direction of increasing s"},
     {"kappa", "1/m", "curvature d theta / ds (negative: turning downwards)"},
-    {"intrados_x", "m", "the section's end on the intrados (the axis point - t/2 along the normal), horizontal"},
+    {"intrados_x", "m", "the section's (limit: the joint's) end on the intrados, horizontal (profile: axis point - t/2 along the normal)"},
     {"intrados_y", "m", "the section's end on the intrados, vertical"},
-    {"extrados_x", "m", "the section's end on the extrados (the axis point + t/2 along the normal), horizontal"},
+    {"extrados_x", "m", "the section's (limit: the joint's) end on the extrados, horizontal (profile: axis point + t/2 along the normal)"},
     {"extrados_y", "m", "the section's end on the extrados, vertical"},
     {"Ux", "m", "horizontal displacement of the axis"},
     {"Uy", "m", "vertical displacement of the axis"},
@@ -346,7 +347,7 @@ const std::vector<ColumnDoc> kColumnDocs = {
     {"shear_force", "N/m", "shear force (V of the model's equations)"},
     {"M", "N m/m", "bending moment: couple of the part beyond s on the part before s"},
     {"thrust_eccentricity", "%", "e = 600 M / (N t): offset of the compression in per cent of the kern half-width t/6; < 0 towards the extrados"},
-    {"thrust_x", "m", "where the resultant crosses the section (line of thrust), horizontal"},
+    {"thrust_x", "m", "where the resultant crosses the section or joint (line of thrust), horizontal"},
     {"thrust_y", "m", "where the resultant crosses the section (line of thrust), vertical"},
     {"warning", "", "tension, outside_section (|e| > 300 %), outside_kern (|e| > 100 %), no_normal_force, or empty"},
     {"reference_method", "", "check: what the row is compared with"},
@@ -361,6 +362,27 @@ const std::vector<ColumnDoc> kColumnDocs = {
     {"error_profile", "", "bench: true error of the profile (profile_difference) against the reference"},
     {"median_seconds", "s", "bench: median time of one solve"},
     {"file", "", "draw: the SVG file written for the scene"},
+    {"joints", "", "limit: joint orientation, radial (normal to the axis) or vertical"},
+    {"weight", "", "limit: voussoir (each voussoir's weight at its centroid) or axis (rho g t per axis length)"},
+    {"joints_count", "", "limit: joints springing to springing, both included"},
+    {"friction", "", "limit: friction coefficient of the joints; empty: no sliding check"},
+    {"point_load", "N/m", "limit: vertical point load P, downward, per metre of vault"},
+    {"point_load_at", "", "limit: where P acts, x / span from the left springing"},
+    {"H_min", "N/m", "limit: minimum horizontal thrust of an admissible state"},
+    {"H_max", "N/m", "limit: maximum horizontal thrust of an admissible state"},
+    {"H_min_over_V", "", "limit: H_min / V"},
+    {"H_max_over_V", "", "limit: H_max / V"},
+    {"thickness_min_ratio", "", "limit: t_min / span, the thinnest arch of the same axis that stands"},
+    {"geometric_safety_factor", "", "limit: t / t_min"},
+    {"hinges_min", "", "limit: hinges of the minimum-thrust state, x/L:face joined by ';'"},
+    {"hinges_max", "", "limit: hinges of the maximum-thrust state, x/L:face joined by ';'"},
+    {"load_factor", "", "limit: multiplier on the point load at collapse (static LP)"},
+    {"load_factor_mechanism", "", "limit: the same from the mechanism of those hinges by virtual work"},
+    {"hinges_collapse", "", "limit: hinges of the collapse mechanism, x/L:face joined by ';'"},
+    {"lp_solves", "", "limit: linear programs solved for the row"},
+    {"state", "", "limit --thrust-line: min, max or collapse"},
+    {"joint", "", "limit --thrust-line: joint index from the left springing"},
+    {"hinge", "", "limit --thrust-line: intrados or extrados where the joint is a hinge, else empty"},
 };
 
 const ColumnDoc* find_column_doc(std::string_view name) {
@@ -1015,6 +1037,177 @@ int run_curve(SceneOptions& so, const CLI::App& cmd, int stations, const ColumnT
   return all_ok ? kExitOk : kExitNotConverged;
 }
 
+// ---------------------------------------------------------------------------------------------
+// Limit analysis.
+
+const std::map<std::string, JointOrientation> kJointOrientations = {{"radial", JointOrientation::radial},
+                                                                    {"vertical", JointOrientation::vertical}};
+const std::map<std::string, WeightModel> kWeightModels = {{"voussoir", WeightModel::voussoir},
+                                                          {"axis", WeightModel::axis}};
+enum class ThrustLine { min, max, collapse };
+const std::map<std::string, ThrustLine> kThrustLines = {
+    {"min", ThrustLine::min}, {"max", ThrustLine::max}, {"collapse", ThrustLine::collapse}};
+
+struct LimitText {
+  std::string joints = "radial", weight = "voussoir", thrust_line;
+  int joints_count = kDefaultJointsCount;
+  double friction = 0, point_load = 0, point_load_at = 0.5;
+  int repeats = 0;
+};
+
+void add_limit_options(CLI::App& cmd, LimitText& t) {
+  cmd.add_option("--joints", t.joints, "interior joints: radial (normal to the axis) or vertical")->capture_default_str();
+  cmd.add_option("--weight", t.weight, "voussoir (the ring's true weight at each centroid) or axis (rho g t per axis length)")
+      ->capture_default_str();
+  cmd.add_option("--joints-count", t.joints_count, "joints springing to springing, both included; odd, >= 5")
+      ->check(kCount)->capture_default_str();
+  cmd.add_option("--friction", t.friction, "friction coefficient of the joints (> 0): adds the sliding check")
+      ->check(kFiniteNumber);
+  cmd.add_option("--point-load", t.point_load, "vertical point load P, N per metre of width, downward (> 0)")
+      ->check(kFiniteNumber);
+  cmd.add_option("--point-load-at", t.point_load_at, "where P acts: x/L in [0, 1] (default 0.5)")->check(kFiniteNumber);
+  cmd.add_option("--thrust-line", t.thrust_line, "instead of the summary, one row per joint of the min, max or collapse state");
+  cmd.add_option("--repeats", t.repeats, "solve each scene this many times and add median_seconds (benchmark)")
+      ->check(kCount);
+}
+
+// The options as the library's, refused with the option's name when they break a rule.
+LimitOptions limit_options(const LimitText& t, const CLI::App& cmd) {
+  LimitOptions o;
+  o.joints = lookup(kJointOrientations, t.joints, "--joints");
+  o.weight = lookup(kWeightModels, t.weight, "--weight");
+  o.joints_count = t.joints_count;
+  if (cmd.count("--friction") > 0 && !(t.friction > 0))
+    throw UsageError(fmt::format("--friction: must be > 0 (omit it for no sliding check), got {}", t.friction));
+  o.friction = t.friction;
+  if (cmd.count("--point-load") > 0 && !(t.point_load > 0))
+    throw UsageError(fmt::format("--point-load: must be > 0 (N/m, downward), got {}", t.point_load));
+  if (cmd.count("--point-load-at") > 0 && cmd.count("--point-load") == 0)
+    throw UsageError("--point-load-at: needs --point-load");
+  o.point_load = {t.point_load, t.point_load_at};
+  if (cmd.count("--support-displacement-ratio") > 0)
+    throw UsageError("--support-displacement-ratio: does not apply to limit (rigid voussoirs: a spreading support "
+                     "brings the arch to H_min)");
+  const bool collapse = !t.thrust_line.empty() && lookup(kThrustLines, t.thrust_line, "--thrust-line") == ThrustLine::collapse;
+  if (collapse && !o.point_load.present())
+    throw UsageError("--thrust-line collapse: a load factor needs a live load (--point-load)");
+  if (t.repeats < 0 || t.repeats > 100000)
+    throw UsageError(fmt::format("--repeats: must lie in [0, 100000] (0: no timing), got {}", t.repeats));
+  std::string why;
+  if (!o.is_valid(&why)) throw UsageError(as_option_message(why));
+  return o;
+}
+
+// Hinges as "x/L:face" joined by ';' (x of the hinge point, on the intrados or extrados), e.g.
+// "0.1129:intrados;0.5:extrados": no commas inside the CSV field.
+std::string hinge_text(const std::vector<Hinge>& hinges, double span) {
+  std::string text;
+  for (const Hinge& h : hinges) {
+    if (!text.empty()) text += ';';
+    text += fmt::format("{:.6g}:{}", h.point.x() / span, h.face == Face::intrados ? "intrados" : "extrados");
+  }
+  return text;
+}
+
+const std::vector<std::string> kLimitSetup = {"joints", "weight", "joints_count", "friction", "point_load",
+                                             "point_load_at"};
+
+void add_limit_setup(CsvRow& row, const LimitOptions& o) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  row.add(to_string(o.joints)).add(to_string(o.weight)).add(o.joints_count);
+  row.add(o.friction > 0 ? o.friction : nan);
+  row.add(o.point_load.present() ? o.point_load.force : nan).add(o.point_load.present() ? o.point_load.position : nan);
+}
+
+
+// The columns of limit: a summary per scene, or (--thrust-line) one row per joint of one state.
+Columns limit_columns(bool lines, bool timed) {
+  std::vector<std::string> results = kLimitSetup, defaults;
+  const std::vector<std::string> summary = {
+      "status", "H_min", "H_max", "V", "H_min_over_V", "H_max_over_V", "thickness_min_ratio",
+      "geometric_safety_factor", "hinges_min", "hinges_max", "load_factor", "load_factor_mechanism",
+      "hinges_collapse", "lp_solves", "message", "median_seconds"};
+  const std::vector<std::string> joints = {"state",      "status",     "H",          "load_factor", "joint",
+                                           "s",          "intrados_x", "intrados_y", "extrados_x",  "extrados_y",
+                                           "thrust_x",   "thrust_y",   "hinge"};
+  const std::vector<std::string>& own = lines ? joints : summary;
+  results.insert(results.end(), own.begin(), own.end());
+  for (const std::string& name : own)
+    if (name != "lp_solves" && (name != "median_seconds" || timed)) defaults.push_back(name);
+  return Columns(results, defaults);
+}
+
+// One row per scene (or, with --thrust-line, one per joint), each written as soon as it is solved.
+// Exit 0 when every scene has an answer (success, or inadmissible: an arch that cannot stand is an
+// answer, not a failure), 3 when an LP failed or a scene could not be made.
+int run_limit(SceneOptions& so, const CLI::App& cmd, const LimitText& text, const ColumnText& ct, std::ostream& out) {
+  const LimitOptions o = limit_options(text, cmd);
+  const ScenePlan plan(so, cmd);
+  const bool lines = !text.thrust_line.empty();
+  if (lines) check_rows(plan.size(), o.joints_count);
+  Columns columns = limit_columns(lines, text.repeats > 0);
+  columns.select(ct, plan.varying_inputs());
+  RowWriter writer(out);
+  writer.write(columns.header());
+  const bool all_answered = for_each_scene(
+      plan, writer, 1,  // one thread: the timings (--repeats), and Clp kept to one thread
+      [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
+        const double L = scene.span();
+        LimitResult r;
+        std::vector<double> seconds;
+        for (int k = 0; k < std::max(1, text.repeats); ++k) {
+          const auto t0 = std::chrono::steady_clock::now();
+          r = analyse_limit(scene, o);
+          seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        }
+        std::nth_element(seconds.begin(), seconds.begin() + seconds.size() / 2, seconds.end());
+        const bool answered = r.status != LimitStatus::lp_failure;
+        CsvRow row(columns.keep());
+        if (lines) {
+          const ThrustLine which = kThrustLines.at(text.thrust_line);
+          const ThrustState& st = which == ThrustLine::min   ? r.min_state
+                                  : which == ThrustLine::max ? r.max_state
+                                                             : r.collapse_state;
+          add_scene_columns(row, p, scene.curve.get());
+          add_limit_setup(row, o);
+          row.add(text.thrust_line).add(to_string(r.status)).add(st.H).add(st.load_factor);
+          if (!st.found()) {  // no such state: one row that says so, no numbers
+            for (int k = 0; k < 9; ++k) row.add(std::string_view{});
+            emit(row.take());
+            return answered;
+          }
+          row.mark();
+          // Rebuild the ring the state belongs to (the same options give the same joints).
+          const Ring ring = make_ring(*scene.curve, scene.thickness, scene.material.density * scene.material.gravity, o);
+          std::string text_rows;
+          for (std::size_t j = 0; j < ring.joints.size(); ++j) {
+            const Joint& joint = ring.joints[j];
+            std::string hinge;
+            for (const Hinge& h : st.hinges)
+              if (h.joint == static_cast<int>(j)) hinge = h.face == Face::intrados ? "intrados" : "extrados";
+            row.add(static_cast<std::int64_t>(j)).add(joint.s).add(joint.intrados.x()).add(joint.intrados.y());
+            row.add(joint.extrados.x()).add(joint.extrados.y()).add(st.crossing[j].x()).add(st.crossing[j].y()).add(hinge);
+            text_rows += row.take_to_mark();
+          }
+          emit(text_rows);
+          return answered;
+        }
+        add_scene_columns(row, p, scene.curve.get());
+        add_limit_setup(row, o);
+        row.add(to_string(r.status)).add(r.H_min()).add(r.H_max()).add(r.V).add(r.H_min() / r.V).add(r.H_max() / r.V);
+        row.add(r.thickness_min / L).add(scene.thickness / r.thickness_min);
+        row.add(hinge_text(r.min_state.hinges, L)).add(hinge_text(r.max_state.hinges, L));
+        row.add(r.load_factor()).add(r.load_factor_mechanism).add(hinge_text(r.collapse_state.hinges, L));
+        row.add(r.lp_solves).add(r.message);
+        if (text.repeats > 0) row.add(seconds[seconds.size() / 2]);
+        else row.add(std::string_view{});
+        emit(row.take());
+        return answered;
+      },
+      [&](const SceneParameters& p, const ScenePlan::Built& b) { return invalid_scene_row(columns, p, b); });
+  return all_answered ? kExitOk : kExitNotConverged;
+}
+
 constexpr int kBenchProfileStations = 41;
 
 // Time per solve (median over repeats) and true error against the reference, one row per method,
@@ -1139,6 +1332,9 @@ void add_help_texts(CLI::App& app) {
       {"bench",
        "  ogive bench --eccentricity 0.5 --repeats 11\n"
        "  ogive bench --curve catenary --methods shooting,auto --rtols 1e-6,1e-8,1e-10 --integrators adams,bdf"},
+      {"limit",
+       "  ogive limit --eccentricity 0:1:5 --thickness-ratio 0.15      # thrust range, t_min, hinges\n"
+       "  ogive limit --point-load 2e5 --point-load-at 0.25 --thrust-line collapse"},
       {"draw",
        "  ogive draw --eccentricity 0.5 --output equilateral.svg\n"
        "  ogive draw --eccentricity 0,0.5,1 --support-displacement-ratio 0.0001 --output-dir pictures"},
@@ -1313,6 +1509,13 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   draw->add_option("--output-dir", draw_targets.output_dir,
                    "an existing directory: one SVG per scene, named after the curve and the options that vary");
 
+  SceneOptions limit_scene;
+  LimitText limit_text;
+  CLI::App* limit = app.add_subcommand(
+      "limit", "limit analysis (rigid voussoirs, no tension): H_min, H_max, t_min, collapse load; one row per scene");
+  add_scene_options(*limit, limit_scene);
+  add_limit_options(*limit, limit_text);
+
   add_help_texts(app);
   app.set_version_flag("--version", std::string("ogive ") + OGIVE_VERSION, "print the version and exit");
   // Bare `ogive`: the help, but on stderr with status 2, since stdout is for CSV only and a script that
@@ -1324,6 +1527,8 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
 
   ColumnText thrust_columns, profile_columns, check_columns, curve_columns, bench_columns, draw_columns;
   add_column_options(*draw, draw_columns);
+  ColumnText limit_columns_text;
+  add_column_options(*limit, limit_columns_text);
   add_column_options(*thrust, thrust_columns);
   add_column_options(*profile, profile_columns);
   add_column_options(*check, check_columns);
@@ -1368,6 +1573,13 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
         {thrust, {&thrust_columns, &kThrustColumns}},  {profile, {&profile_columns, &kProfileColumns}},
         {check, {&check_columns, &kCheckColumns}},     {curve, {&curve_columns, &kCurveColumns}},
         {bench, {&bench_columns, &kBenchColumns}},     {draw, {&draw_columns, &kDrawColumns}}};
+    const Columns limit_help = limit_columns(!limit_text.thrust_line.empty(), limit_text.repeats > 0);
+    if (limit->parsed() && limit_columns_text.columns == "help") {
+      RowWriter writer(out);
+      writer.write(limit_help.help());
+      writer.flush();
+      return kExitOk;
+    }
     for (const auto& [cmd, what] : helps)
       if (cmd->parsed() && what.first->columns == "help") {
         RowWriter writer(out);
@@ -1381,6 +1593,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     if (check->parsed()) return run_check(check_scene, *check, check_options_, check_columns, threads, out);
     if (curve->parsed()) return run_curve(curve_scene, *curve, curve_stations, curve_columns, threads, out);
     if (draw->parsed()) return run_draw(draw_scene, *draw, draw_options, draw_targets, draw_columns, out);
+    if (limit->parsed()) return run_limit(limit_scene, *limit, limit_text, limit_columns_text, out);
     if (bench->parsed()) return run_bench(bench_scene, *bench, bench_options, bench_methods, bench_integrators, bench_rtols,
                                             repeats, bench_columns, out);
   } catch (const UsageError& e) {

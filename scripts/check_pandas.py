@@ -23,7 +23,7 @@ except ImportError:
 OGIVE = sys.argv[1] if len(sys.argv) > 1 else "build/ogive"
 BOOLEAN = {"plane_strain", "thrust_in_kern", "thrust_in_section", "within_tolerance"}
 TEXT = {"curve", "method", "integrator", "status", "message", "warning", "reference_method", "reference_status",
-        "chosen_method"}
+        "chosen_method", "file", "joints", "weight", "hinges_min", "hinges_max", "hinges_collapse", "state", "hinge"}
 
 RUNS = [
     (["thrust", "--eccentricity", "0:1:11"], ("eccentricity", 0.3, 1)),
@@ -35,6 +35,8 @@ RUNS = [
     (["check", "--curve", "parabolic", "--rise-ratio", "0.2,0.4"], ("rise_ratio", 0.2, 2)),
     (["curve", "--curve", "elliptical", "--rise-ratio", "0.2:0.4:3", "--stations", "5"], ("rise_ratio", 0.3, 5)),
     (["bench", "--eccentricity", "0.5", "--method", "closed-form,shooting", "--rtol", "1e-6,1e-8", "--repeats", "1"], None),
+    (["limit", "--eccentricity", "0:1:5", "--thickness-ratio", "0.15"], ("eccentricity", 0.25, 1)),
+    (["limit", "--point-load", "2e5", "--thrust-line", "collapse"], None),
 ]
 
 

@@ -1,5 +1,6 @@
 #include "ogive/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -18,6 +19,17 @@ void require_positive(const char* field, double value) {
 }
 
 }  // namespace
+
+double max_thickness(const Curve& curve) {
+  double max_curvature = 0;
+  for (const CircularArc& arc : curve.arcs()) max_curvature = std::max(max_curvature, std::abs(arc.kappa));
+  if (curve.arcs().empty()) {
+    constexpr int kSamples = 512;
+    for (int i = 0; i <= kSamples; ++i)
+      max_curvature = std::max(max_curvature, std::abs(curve.at(curve.half_length() * i / kSamples).kappa));
+  }
+  return 2.0 / max_curvature;
+}
 
 void Scene::validate() const {
   if (!curve) throw std::invalid_argument("curve: a scene needs a generator curve");
@@ -50,17 +62,10 @@ void Scene::validate() const {
       refuse("support_displacement", "must be finite in units of w L^4 / EI", support_displacement);
   }
   // A section deeper than twice the radius of curvature would overlap itself on the intrados.
-  double max_curvature = 0;
-  for (const CircularArc& arc : curve->arcs()) max_curvature = std::max(max_curvature, std::abs(arc.kappa));
-  if (curve->arcs().empty()) {
-    constexpr int kSamples = 512;
-    for (int i = 0; i <= kSamples; ++i)
-      max_curvature = std::max(max_curvature, std::abs(curve->at(curve->half_length() * i / kSamples).kappa));
-  }
-  if (thickness * max_curvature >= 2.0)
+  const double limit = max_thickness(*curve);
+  if (thickness >= limit)
     throw std::invalid_argument(fmt::format(
-        "thickness: must be less than twice the smallest radius of curvature ({} m), got {} m",
-        2.0 / max_curvature, thickness));
+        "thickness: must be less than twice the smallest radius of curvature ({} m), got {} m", limit, thickness));
 }
 
 }  // namespace ogive

@@ -42,4 +42,8 @@ struct Scene {
   void validate() const;
 };
 
+// Twice the smallest radius of curvature of the curve (m; inf for a straight curve): a section this deep
+// or deeper folds over on the intrados. Scene::validate refuses thickness >= max_thickness(*curve).
+double max_thickness(const Curve& curve);
+
 }  // namespace ogive

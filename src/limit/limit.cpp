@@ -1,0 +1,304 @@
+// Limit analysis: the thrust range, the minimum thickness and the collapse load of a ring of voussoirs.
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <Eigen/LU>
+#include <fmt/format.h>
+
+#include "limit/limit_internal.hpp"
+#include "ogive/limit.hpp"
+
+namespace ogive {
+namespace {
+
+using limit_detail::LimitLp;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// The relative width of the bracket on t at which the root-finder stops.
+constexpr double kThicknessTolerance = 1e-10;
+
+// The margin given to a program infeasible for every mu (friction can forbid every thrust line): a
+// negative number for the root-finder, which needs only the sign.
+constexpr double kNoMargin = -1.0;
+
+// The feasibility margin of the arch of the same axis with thickness t (see analyse_limit).
+struct MarginFunction {
+  const Curve& curve;
+  double unit_weight;
+  const LimitOptions& options;
+  double load_factor;
+  int solves = 0;
+  bool failed = false;
+  std::vector<int> basis;  // the last margin's optimal basis: the next thickness starts from it
+
+  double operator()(double t) {
+    const Ring ring = make_ring(curve, t, unit_weight, options);
+    LimitLp lp(ring, options.point_load, options.friction);
+    LimitLp::Answer a = lp.margin(load_factor, basis.empty() ? nullptr : &basis);
+    solves += lp.solves();
+    basis = std::move(a.basis);
+    // No margin at all (friction can forbid every thrust line, whatever mu): as inadmissible as it gets.
+    if (a.outcome == LimitLp::Outcome::infeasible) return kNoMargin;
+    if (a.outcome != LimitLp::Outcome::optimal) failed = true;
+    return a.margin;
+  }
+};
+
+// The smallest thickness with margin >= 0, from a bracket lo < hi with f(lo) < 0 <= f(hi): Illinois
+// (regula falsi that halves the value kept twice at one end, so that both ends move). The margin has a
+// kink at its root (different joints become active on either side), so the feasible end often
+// converges alone: stop when the bracket or the feasible end's last step is below the tolerance.
+// Returns the feasible end.
+double thinnest(MarginFunction& f, double lo, double f_lo, double hi, double f_hi) {
+  int side = 0;
+  for (int it = 0; it < 200 && hi - lo > kThicknessTolerance * hi && !f.failed; ++it) {
+    double c = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+    if (!(c > lo && c < hi)) c = 0.5 * (lo + hi);
+    const double f_c = f(c);
+    if (f_c >= 0) {
+      const double step = hi - c;
+      hi = c;
+      f_hi = f_c;
+      if (side == 1) f_lo *= 0.5;
+      side = 1;
+      if (step <= kThicknessTolerance * hi) break;
+    } else {
+      lo = c;
+      f_lo = f_c;
+      if (side == -1) f_hi *= 0.5;
+      side = -1;
+    }
+  }
+  return hi;
+}
+
+}  // namespace
+
+const char* to_string(LimitStatus s) {
+  switch (s) {
+    case LimitStatus::success: return "success";
+    case LimitStatus::inadmissible: return "inadmissible";
+    case LimitStatus::lp_failure: return "lp_failure";
+  }
+  return "unknown";
+}
+
+ThrustState thrust_state(const Ring& ring, const PointLoad& load, double H, double V_left, double M_left,
+                         double load_factor, double hinge_tolerance) {
+  const limit_detail::LoadsLeftOfJoints left = limit_detail::loads_left_of_joints(ring, load);
+  ThrustState st;
+  st.H = H;
+  st.V_left = V_left;
+  st.load_factor = load.present() ? load_factor : kNaN;
+  const double live = load.present() ? load_factor * load.force : 0.0;
+  st.V_right = ring.total_weight() + live - V_left;
+  st.crossing.reserve(ring.joints.size());
+  for (std::size_t j = 0; j < ring.joints.size(); ++j) {
+    const Joint& joint = ring.joints[j];
+    const double lambda = load.present() ? load_factor : 0.0;
+    // The force of the part left of the joint on the part right of it, and its moment about the origin.
+    const Eigen::Vector2d F(H, V_left - left.dead[j] - lambda * left.live[j]);
+    const double moment = M_left - left.dead_moment[j] - lambda * left.live_moment[j];
+    // Its line meets the joint I + u (E - I) where (I + u d) x F = moment.
+    const Eigen::Vector2d d = joint.extrados - joint.intrados;
+    const double u = (moment - cross(joint.intrados, F)) / cross(d, F);
+    st.crossing.push_back(joint.intrados + u * d);
+    if (u <= hinge_tolerance) st.hinges.push_back({static_cast<int>(j), Face::intrados, joint.intrados});
+    if (u >= 1.0 - hinge_tolerance) st.hinges.push_back({static_cast<int>(j), Face::extrados, joint.extrados});
+  }
+  return st;
+}
+
+namespace {
+
+// The multiplier of one mechanism with hinges h (sorted by joint, distinct joints): NaN unless it has
+// exactly one degree of freedom, the point load does work in it, and it is kinematically admissible
+// (each hinge opens on the face opposite to its own).
+double one_mechanism(const Ring& ring, const PointLoad& load, const std::vector<Hinge>& h) {
+  // Bodies b = 0 .. k-2 between consecutive hinges, each with a rigid velocity (u, v, omega): a point p
+  // moves with (u - omega p_y, v + omega p_x). The parts outside the first and last hinges stay put.
+  const int k = static_cast<int>(h.size()), bodies = k - 1;
+  const double L = ring.span;
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * k, 3 * bodies);
+  for (int i = 0; i < k; ++i) {
+    const Eigen::Vector2d p = h[i].point / L;
+    // Velocity of the body right of hinge i minus that of the body left of it, at the hinge.
+    for (int b : {i - 1, i}) {
+      if (b < 0 || b >= bodies) continue;  // the ground
+      const double sign = b == i ? 1.0 : -1.0;
+      A(2 * i, 3 * b) += sign;
+      A(2 * i, 3 * b + 2) -= sign * p.y();
+      A(2 * i + 1, 3 * b + 1) += sign;
+      A(2 * i + 1, 3 * b + 2) += sign * p.x();
+    }
+  }
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
+  lu.setThreshold(1e-10);
+  Eigen::VectorXd mode = lu.kernel();
+  if (lu.dimensionOfKernel() != 1) return kNaN;
+  auto vertical_velocity = [&](int voussoir, double x) {
+    for (int b = 0; b < bodies; ++b)
+      if (voussoir >= h[b].joint && voussoir < h[b + 1].joint) return mode(3 * b + 1) + mode(3 * b + 2) * x / L;
+    return 0.0;
+  };
+  const int loaded = limit_detail::loaded_voussoir(ring, load);
+  double live_work = -load.force * vertical_velocity(loaded, load.position * L);
+  double dead_work = 0;
+  for (std::size_t v = 0; v < ring.voussoirs.size(); ++v)
+    dead_work -= ring.voussoirs[v].weight * vertical_velocity(static_cast<int>(v), ring.voussoirs[v].centroid.x());
+  if (!(std::abs(live_work) > 1e-12 * std::abs(dead_work))) return kNaN;
+  if (live_work < 0) {  // the sense in which the load does positive work
+    mode = -mode;
+    live_work = -live_work;
+    dead_work = -dead_work;
+  }
+  // A hinge on the intrados opens the extrados: the right part turns clockwise relative to the left one
+  // (omega_right - omega_left < 0); on the extrados, counter-clockwise.
+  const double scale = mode.tail(1).cwiseAbs().maxCoeff() + mode.cwiseAbs().maxCoeff();
+  for (int i = 0; i < k; ++i) {
+    const double right = i < bodies ? mode(3 * i + 2) : 0.0, left = i > 0 ? mode(3 * (i - 1) + 2) : 0.0;
+    const double turn = (right - left) * (h[i].face == Face::intrados ? 1.0 : -1.0);
+    if (turn > 1e-9 * scale) return kNaN;
+  }
+  return -dead_work / live_work;
+}
+
+}  // namespace
+
+double mechanism_load_factor(const Ring& ring, const PointLoad& load, const std::vector<Hinge>& hinges) {
+  if (!load.present() || hinges.size() < 3) return kNaN;
+  std::vector<Hinge> h = hinges;
+  std::sort(h.begin(), h.end(), [](const Hinge& a, const Hinge& b) { return a.joint < b.joint; });
+  for (std::size_t i = 1; i < h.size(); ++i)
+    if (h[i].joint == h[i - 1].joint) return kNaN;
+  if (h.size() <= 4) return one_mechanism(ring, load, h);
+  // More hinges than a one-degree mechanism has (a degenerate optimum: e.g. the thrust line along an
+  // intrados chord touches two adjacent joints): every admissible mechanism of four of them is an upper
+  // bound (the kinematic theorem); the least is the multiplier of these hinges.
+  double best = kNaN;
+  const std::size_t n = h.size();
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a + 1; b < n; ++b)
+      for (std::size_t c = b + 1; c < n; ++c)
+        for (std::size_t d = c + 1; d < n; ++d) {
+          const double m = one_mechanism(ring, load, {h[a], h[b], h[c], h[d]});
+          if (!std::isnan(m) && !(m >= best)) best = m;
+        }
+  return best;
+}
+
+LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
+  scene.validate();
+  std::string why;
+  if (!options.is_valid(&why)) throw std::invalid_argument(why);
+  const Curve& curve = *scene.curve;
+  const double unit_weight = scene.material.density * scene.material.gravity;
+  const Ring ring = make_ring(curve, scene.thickness, unit_weight, options);
+  const PointLoad& load = options.point_load;
+  const double load_factor = load.present() ? 1.0 : 0.0;  // the H range and t_min: under the loads as given
+
+  LimitResult r;
+  r.V = 0.5 * (ring.total_weight() + load.force);
+  LimitLp lp(ring, load, options.friction);
+  auto fail = [&](const char* problem) {
+    r.status = LimitStatus::lp_failure;
+    r.message = fmt::format("the LP of {} stopped without an answer", problem);
+    r.lp_solves += lp.solves();
+    return r;
+  };
+  auto state = [&](const LimitLp::Answer& a) { return thrust_state(ring, load, a.H, a.V, a.M, a.load_factor); };
+
+  LimitLp::Answer margin = lp.margin(load_factor);
+  if (margin.outcome == LimitLp::Outcome::infeasible) margin.margin = kNoMargin;
+  else if (margin.outcome != LimitLp::Outcome::optimal) return fail("the feasibility margin");
+  bool admissible = margin.margin >= 0;
+  bool unbounded_thrust = false;
+  if (admissible) {
+    const LimitLp::Answer lo = lp.extreme_thrust(load_factor, false), hi = lp.extreme_thrust(load_factor, true);
+    if (lo.outcome == LimitLp::Outcome::failure || lo.outcome == LimitLp::Outcome::unbounded)
+      return fail("the minimum thrust");
+    if (hi.outcome == LimitLp::Outcome::failure) return fail("the maximum thrust");
+    // A margin of zero to round-off can still leave the thrust programs infeasible: not admissible.
+    admissible = lo.outcome == LimitLp::Outcome::optimal && hi.outcome != LimitLp::Outcome::infeasible;
+    if (admissible) {
+      r.min_state = state(lo);
+      if (hi.outcome == LimitLp::Outcome::optimal) r.max_state = state(hi);
+      else unbounded_thrust = true;
+    }
+  }
+  if (load.present()) {
+    const LimitLp::Answer c = lp.collapse();
+    if (c.outcome == LimitLp::Outcome::optimal) {
+      r.collapse_state = state(c);
+      r.load_factor_mechanism = mechanism_load_factor(ring, load, r.collapse_state.hinges);
+    } else if (c.outcome == LimitLp::Outcome::failure) {
+      return fail("the collapse load");
+    }
+    // infeasible: the self-weight alone cannot stand; unbounded: the point load cannot make a mechanism.
+  }
+  r.lp_solves += lp.solves();
+
+  // t_min: bracket the root of the margin, then Illinois.
+  MarginFunction f{curve, unit_weight, options, load_factor, 0, false, margin.basis};
+  const double t = scene.thickness;
+  const double t_cap = 0.99 * max_thickness(curve);
+  double lo = t, f_lo = margin.margin, hi = t, f_hi = margin.margin;
+  bool bracketed = false;
+  if (admissible) {
+    for (int i = 0; i < 60 && !f.failed; ++i) {
+      lo = 0.5 * hi;
+      f_lo = f(lo);
+      if (f_lo < 0) {
+        bracketed = true;
+        break;
+      }
+      hi = lo;
+      f_hi = f_lo;
+    }
+  } else if (margin.margin >= 0) {
+    r.thickness_min = t;  // a zero margin whose thrust programs are infeasible: t is t_min to round-off
+  } else {
+    for (int i = 0; i < 60 && !f.failed && hi < t_cap; ++i) {
+      hi = std::min(2.0 * lo, t_cap);
+      f_hi = f(hi);
+      if (f_hi >= 0) {
+        bracketed = true;
+        break;
+      }
+      lo = hi;
+      f_lo = f_hi;
+    }
+  }
+  if (bracketed && !f.failed) r.thickness_min = thinnest(f, lo, f_lo, hi, f_hi);
+  r.lp_solves += f.solves;
+  if (f.failed) {
+    r.status = LimitStatus::lp_failure;
+    r.message = "the LP of the feasibility margin stopped without an answer while searching t_min";
+    return r;
+  }
+  if (!admissible) {
+    r.status = LimitStatus::inadmissible;
+    const char* where = options.friction > 0 ? "inside the arch and its joints' friction cones" : "inside the arch";
+    r.message = std::isnan(r.thickness_min)
+                    ? fmt::format("no thrust line fits {} at any thickness up to {} m", where, t_cap)
+                    : fmt::format("no thrust line fits {}: t < t_min", where);
+    return r;
+  }
+  r.status = LimitStatus::success;
+  if (!bracketed) r.message = fmt::format("t_min below {} m: not searched further", hi);
+  auto note = [&](const std::string& text) { r.message += (r.message.empty() ? "" : "; ") + text; };
+  if (unbounded_thrust) note("no largest thrust: a thrust line of any H fits inside the arch (H_max absent)");
+  if (load.present() && std::isnan(r.load_factor()))
+    note("the point load cannot turn the arch into a mechanism (no finite load factor)");
+  if (!std::isnan(r.load_factor()) && std::isnan(r.load_factor_mechanism))
+    note(options.friction > 0 ? "no rotational mechanism through the collapse hinges: joints slide at collapse"
+                              : "no one-degree rotational mechanism through the collapse hinges");
+  return r;
+}
+
+}  // namespace ogive

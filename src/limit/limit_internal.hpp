@@ -1,0 +1,58 @@
+// Shared inside the limit-analysis module (private header): the loads as seen from each joint, and the
+// linear programs (src/limit/limit_lp.cpp, the only file that includes the LP library).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "ogive/limit.hpp"
+
+namespace ogive::limit_detail {
+
+// The voussoir that carries the point load: the one whose extrados holds x = a L (the first of two at a
+// shared joint). -1 without a point load.
+int loaded_voussoir(const Ring& ring, const PointLoad& load);
+
+// What lies to the left of each joint j (voussoirs 0 .. j-1), for the equilibrium of that part:
+// the self-weight and its moment about the origin (sum of x W), and the point load's share (P or 0)
+// and moment (x_P P or 0). Every vector has one entry per joint.
+struct LoadsLeftOfJoints {
+  std::vector<double> dead, dead_moment, live, live_moment;
+};
+LoadsLeftOfJoints loads_left_of_joints(const Ring& ring, const PointLoad& load);
+
+// The linear programs of one ring and load. Unknowns: the thrust H, the left support's vertical
+// reaction V and moment M about the origin, the load factor lambda and the margin mu. Joint j carries
+// F_j = (H, V - D_j - lambda P_j) with moment m_j = M - MD_j - lambda MP_j about the origin; the
+// resultant crosses the joint between its intrados point I and extrados point E (in compression) iff
+// m_j - I x F_j <= -mu h_j and m_j - E x F_j >= mu h_j, h_j = |E - I| W (W the self-weight).
+class LimitLp {
+ public:
+  LimitLp(const Ring& ring, const PointLoad& load, double friction);
+  ~LimitLp();
+  LimitLp(const LimitLp&) = delete;
+  LimitLp& operator=(const LimitLp&) = delete;
+
+  enum class Outcome { optimal, infeasible, unbounded, failure };
+  struct Answer {
+    Outcome outcome = Outcome::failure;
+    double H = 0, V = 0, M = 0, load_factor = 0, margin = 0;  // SI units; margin dimensionless
+    std::vector<int> basis;  // the optimal basis (which joint inequalities are tight), to warm-start
+  };
+  // The smallest or largest H of an admissible state under self-weight + load_factor * P (mu = 0).
+  Answer extreme_thrust(double load_factor, bool largest);
+  // The largest margin mu under self-weight + load_factor * P: >= 0 iff the arch is admissible.
+  // `warm`: the basis of the margin of a ring with the same joints count (another thickness), to start
+  // from.
+  Answer margin(double load_factor, const std::vector<int>* warm = nullptr);
+  // The largest load factor lambda >= 0 with an admissible state (mu = 0).
+  Answer collapse();
+  int solves() const { return solves_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  int solves_ = 0;
+};
+
+}  // namespace ogive::limit_detail

@@ -1,0 +1,200 @@
+// The linear programs of limit analysis, solved by COIN-OR Clp: the only file that includes the LP library.
+//
+// Why Clp (coinor-libclp-dev) rather than GLPK (libglpk-dev): Clp's licence (EPL-2.0) lets ogive link it
+// without becoming GPL, which GLPK (GPL-3) would impose on every binary; Debian ships its pkg-config
+// file (clp.pc), so CMake finds it without a module of ours; and it is the faster simplex code of the two
+// on repeated small programs.
+//
+// Each question has at most five unknowns but two inequalities per joint (hundreds). Clp's basis has
+// one row per constraint, so the program as written would factorise a basis of hundreds of rows at
+// every step (measured: 0.5-1.6 ms per solve with 201 joints). Its dual, min b.y subject to A^T y = c,
+// y >= 0, has one column per joint inequality and a row per unknown: a basis of at most 5 x 5 (measured:
+// 0.15-0.2 ms per solve, the model's construction included). The unknowns are the dual's row prices,
+// from the optimal basis.
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <ClpSimplex.hpp>
+#include <CoinFinite.hpp>
+
+#include "limit/limit_internal.hpp"
+
+namespace ogive::limit_detail {
+namespace {
+
+enum Column { kH = 0, kV = 1, kM = 2, kLambda = 3, kMu = 4, kUnknowns = 5 };
+
+// Bounds that keep every program bounded (in units of the self-weight W and the span L, far beyond any
+// arch's real values); an optimum on one of them means "no finite answer".
+constexpr double kCap = 1e6;
+
+// Only the margin's sign matters; bounded, it stays finite where the thrust may grow without bound (a
+// flat, thick arch holds a straight thrust line of any H).
+constexpr double kMaxMargin = 1.0;
+
+// Feasibility and optimality tolerances of the scaled programs (coefficients of order one).
+constexpr double kFeasibility = 1e-11;
+
+// One inequality a . z <= b in the scaled unknowns z = (H/W, V/W, M/(W L), lambda, mu).
+struct Inequality {
+  std::array<double, kUnknowns> a;
+  double b;
+};
+
+}  // namespace
+
+struct LimitLp::Impl {
+  std::vector<Inequality> rows;
+  double weight = 1, span = 1;  // the scales: forces in W, lengths in L
+
+  // Maximises (or minimises) unknown `target` with the unknowns in `fixed` (NaN: free) held.
+  Answer optimise(Column target, bool maximise, const std::array<double, kUnknowns>& fixed,
+                  const std::vector<int>* warm = nullptr) const;
+};
+
+LimitLp::LimitLp(const Ring& ring, const PointLoad& load, double friction) : impl_(std::make_unique<Impl>()) {
+  const double W = ring.total_weight(), L = ring.span;
+  impl_->weight = W;
+  impl_->span = L;
+  std::vector<Inequality>& rows = impl_->rows;
+  const LoadsLeftOfJoints left = loads_left_of_joints(ring, load);
+  for (std::size_t j = 0; j < ring.joints.size(); ++j) {
+    const Eigen::Vector2d I = ring.joints[j].intrados / L, E = ring.joints[j].extrados / L;
+    const double D = left.dead[j] / W, MD = left.dead_moment[j] / (W * L);
+    const double P = left.live[j] / W, MP = left.live_moment[j] / (W * L);
+    const double h = (E - I).norm();
+    // Moment of the joint's force about Q: H Qy - V Qx + M + lambda (Qx P - MP) + (Qx D - MD);
+    // <= -mu h about the intrados point, >= mu h about the extrados point.
+    rows.push_back({{I.y(), -I.x(), 1.0, I.x() * P - MP, h}, -(I.x() * D - MD)});
+    rows.push_back({{-E.y(), E.x(), -1.0, -(E.x() * P - MP), h}, E.x() * D - MD});
+    if (friction > 0) {
+      // Normal n (towards the right-hand part) and direction d of the joint; F = (H, V - D - lambda P).
+      const Eigen::Vector2d d = (E - I) / h, n(d.y(), -d.x());
+      for (double sign : {1.0, -1.0}) {  // sign * (F . d) - friction * (F . n) <= 0
+        const Eigen::Vector2d a = sign * d - friction * n;
+        rows.push_back({{a.x(), a.y(), 0.0, -a.y() * P, 0.0}, a.y() * D});
+      }
+    }
+  }
+  // The sign of H and lambda, and the caps.
+  rows.push_back({{-1, 0, 0, 0, 0}, 0.0});
+  rows.push_back({{0, 0, 0, -1, 0}, 0.0});
+  for (int c = 0; c < kUnknowns; ++c)
+    for (double sign : {1.0, -1.0}) {
+      Inequality cap{{0, 0, 0, 0, 0}, c == kMu && sign > 0 ? kMaxMargin : kCap};
+      cap.a[c] = sign;
+      rows.push_back(cap);
+    }
+}
+
+LimitLp::~LimitLp() = default;
+
+LimitLp::Answer LimitLp::Impl::optimise(Column target, bool maximise, const std::array<double, kUnknowns>& fixed,
+                                        const std::vector<int>* warm) const {
+  // The free unknowns become the dual's rows; every inequality with a free coefficient a column.
+  std::vector<int> free;
+  for (int c = 0; c < kUnknowns; ++c)
+    if (std::isnan(fixed[c])) free.push_back(c);
+  const int m = static_cast<int>(free.size());
+  std::vector<CoinBigIndex> start{0};
+  std::vector<int> index;
+  std::vector<double> value, cost;
+  std::vector<int> kept;  // the inequality of each column
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const Inequality& row = rows[r];
+    double b = row.b;
+    for (int c = 0; c < kUnknowns; ++c)
+      if (!std::isnan(fixed[c])) b -= row.a[c] * fixed[c];
+    bool any = false;
+    for (int k = 0; k < m; ++k)
+      if (row.a[free[k]] != 0.0) {
+        index.push_back(k);
+        value.push_back(row.a[free[k]]);
+        any = true;
+      }
+    if (!any) {
+      // A row of held unknowns only: it holds or the program is infeasible.
+      if (b < -1e-12) {
+        Answer infeasible;
+        infeasible.outcome = Outcome::infeasible;
+        return infeasible;
+      }
+      continue;
+    }
+    cost.push_back(b);
+    kept.push_back(static_cast<int>(r));
+    start.push_back(static_cast<CoinBigIndex>(index.size()));
+  }
+  const int columns = static_cast<int>(cost.size());
+  const std::vector<double> column_lower(columns, 0.0), column_upper(columns, COIN_DBL_MAX);
+  std::vector<double> rhs(m, 0.0);  // A^T y = c: c is +-1 on the target
+  for (int k = 0; k < m; ++k)
+    if (free[k] == target) rhs[k] = maximise ? 1.0 : -1.0;
+  ClpSimplex model;
+  model.setLogLevel(0);
+  // The program is scaled already (forces in W, lengths in L: coefficients of order one); Clp's own
+  // scaling made it report "optimal" answers that were infeasible once unscaled (secondary status 3).
+  model.scaling(0);
+  // Clp's dual feasibility tolerance is how far the thrust line may stray outside a joint (in units of
+  // W L): its default 1e-7 let the collapse multiplier exceed the kinematic one by 1e-6.
+  model.setDualTolerance(kFeasibility);
+  model.setPrimalTolerance(kFeasibility);
+  model.loadProblem(columns, m, start.data(), index.data(), value.data(), column_lower.data(), column_upper.data(),
+                    cost.data(), rhs.data(), rhs.data());
+  model.setOptimizationDirection(1.0);
+  if (warm && static_cast<int>(warm->size()) == m) {
+    // Start from the given basic columns (the same inequalities tight as in the previous program),
+    // every other column at its bound of 0, every row out of the basis.
+    model.createStatus();
+    for (int c = 0; c < columns; ++c) model.setColumnStatus(c, ClpSimplex::atLowerBound);
+    for (int k = 0; k < m; ++k) model.setRowStatus(k, ClpSimplex::isFixed);
+    int c = 0;
+    for (int r : *warm) {
+      while (c < columns && kept[c] < r) ++c;
+      if (c < columns && kept[c] == r) model.setColumnStatus(c, ClpSimplex::basic);
+    }
+  }
+  model.dual();
+  Answer a;
+  // The dual infeasible (no y) <=> the primal unbounded, prevented by the caps; the dual unbounded <=>
+  // the primal infeasible.
+  if (model.isProvenDualInfeasible()) {
+    a.outcome = Outcome::infeasible;
+    return a;
+  }
+  if (!model.isProvenOptimal() || model.secondaryStatus() != 0) return a;  // failure
+  std::array<double, kUnknowns> z = fixed;
+  const double* price = model.getRowPrice();
+  for (int k = 0; k < m; ++k) z[free[k]] = price[k];
+  a.H = z[kH] * weight;
+  a.V = z[kV] * weight;
+  a.M = z[kM] * weight * span;
+  a.load_factor = z[kLambda];
+  a.margin = z[kMu];
+  a.outcome = std::abs(z[target]) >= 0.5 * kCap ? Outcome::unbounded : Outcome::optimal;
+  for (int c = 0; c < columns; ++c)
+    if (model.getColumnStatus(c) == ClpSimplex::basic) a.basis.push_back(kept[c]);
+  return a;
+}
+
+LimitLp::Answer LimitLp::extreme_thrust(double load_factor, bool largest) {
+  ++solves_;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return impl_->optimise(kH, largest, {nan, nan, nan, load_factor, 0.0});
+}
+
+LimitLp::Answer LimitLp::margin(double load_factor, const std::vector<int>* warm) {
+  ++solves_;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return impl_->optimise(kMu, true, {nan, nan, nan, load_factor, nan}, warm);
+}
+
+LimitLp::Answer LimitLp::collapse() {
+  ++solves_;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return impl_->optimise(kLambda, true, {nan, nan, nan, nan, 0.0});
+}
+
+}  // namespace ogive::limit_detail

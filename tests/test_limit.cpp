@@ -1,0 +1,400 @@
+// Limit analysis: published anchors, invariants of the static theorem, the ring's geometry, the CLI.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli.hpp"
+#include "ogive/limit.hpp"
+#include "scenes.hpp"
+#include "tolerances.hpp"
+
+using namespace ogive;
+
+namespace {
+
+// A published value given to four decimals holds to half a unit of its last digit.
+constexpr double kFourDecimals = 0.5e-4;
+// Romano & Ochsendorf's ranges as the seed paper quotes them: two-decimal readings off graphic
+// statics, with conventions (joints, weight) the quote does not state (the tolerance).
+constexpr double kQuotedReading = 0.02;
+// The static and kinematic multipliers of one mechanism are the same number computed twice (the
+// issue's tolerance; they agree to round-off).
+constexpr double kVirtualWork = 1e-6;
+// H_min and H_max just above the t_min the root-finder returns (the feasible end of a bracket of
+// relative width 1e-10, or a last step below it): the range has closed to this relative width.
+constexpr double kRangeAtMinimum = 1e-5;
+// The convergence that the default number of joints is chosen for (README's table).
+constexpr double kConverged = 1e-4;
+
+constexpr double kGamma = 2348.0 * 9.81;  // the scenes' unit weight, N/m^3
+
+LimitResult analyse(double eps, double t_over_L, LimitOptions o = {}) { return analyse_limit(paper_scene(eps, t_over_L), o); }
+
+double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
+
+}  // namespace
+
+TEST_CASE("limit: semicircle, radial joints, true weight: t_min / R = 0.1075, intrados hinge 54.5 deg from the crown (Milankovitch 1907)") {
+  const double R = 5.0;
+  const LimitResult r = analyse(0.0, 0.15);
+  REQUIRE(r.status == LimitStatus::success);
+  CHECK(std::abs(r.thickness_min / R - 0.1075) <= kFourDecimals);
+  // At t_min: the five-hinge mechanism; the haunch hinges on the intrados, at the published angle to
+  // within one joint spacing.
+  Scene at_min = paper_scene(0.0);
+  at_min.thickness = r.thickness_min * (1 + 1e-9);  // just above: t_min is known to 1e-10
+  const LimitResult m = analyse_limit(at_min, {});
+  REQUIRE(m.status == LimitStatus::success);
+  const double spacing = 180.0 / (kDefaultJointsCount - 1);
+  int haunches = 0;
+  for (const Hinge& h : m.min_state.hinges) {
+    if (h.face != Face::intrados) continue;
+    const double from_crown = degrees(std::atan2(std::abs(h.point.x() - R), h.point.y()));
+    CHECK(std::abs(from_crown - 54.5) <= spacing);
+    ++haunches;
+  }
+  CHECK(haunches == 2);
+}
+
+TEST_CASE("limit: semicircle, vertical joints: t_min / R = 0.1095 and H / (gamma t R) = 0.6218 at t_min (Makris & Alexakis 2013)") {
+  const double R = 5.0;
+  LimitOptions o;
+  o.joints = JointOrientation::vertical;
+  const LimitResult r = analyse(0.0, 0.15, o);
+  REQUIRE(r.status == LimitStatus::success);
+  CHECK(std::abs(r.thickness_min / R - 0.1095) <= kFourDecimals);
+  // The thrust is published at the published t_min, t/R = 0.1095, where our range is still open by
+  // 1.6e-4 (ours: t_min / R = 0.10946; at it H / (gamma t R) = 0.62174): 0.6218 must lie in it.
+  Scene published = paper_scene(0.0);
+  published.thickness = 0.1095 * R;
+  const LimitResult m = analyse_limit(published, o);
+  REQUIRE(m.status == LimitStatus::success);
+  const double unit = kGamma * published.thickness * R;
+  CHECK(m.H_min() / unit <= 0.6218 + kFourDecimals);
+  CHECK(m.H_max() / unit >= 0.6218 - kFourDecimals);
+  CHECK(m.H_max() / unit - m.H_min() / unit <= 2e-4);
+}
+
+TEST_CASE("limit: at t/L = 0.15 the thrust range is 0.24 .. 0.58 of the half weight for the semicircle, 0.14 .. 0.30 for the equilateral arch (Romano & Ochsendorf 2010)") {
+  const LimitResult semicircle = analyse(0.0, 0.15), equilateral = analyse(0.5, 0.15);
+  REQUIRE(semicircle.status == LimitStatus::success);
+  REQUIRE(equilateral.status == LimitStatus::success);
+  CHECK(std::abs(semicircle.H_min() / semicircle.V - 0.24) <= kQuotedReading);
+  CHECK(std::abs(semicircle.H_max() / semicircle.V - 0.58) <= kQuotedReading);
+  CHECK(std::abs(equilateral.H_min() / equilateral.V - 0.14) <= kQuotedReading);
+  CHECK(std::abs(equilateral.H_max() / equilateral.V - 0.30) <= kQuotedReading);
+  // V is half the weight of the true ring: for the semicircle, gamma pi R t / 2.
+  CHECK(close(semicircle.V, 0.5 * kGamma * std::numbers::pi * 5.0 * 1.5, kExact));
+}
+
+TEST_CASE("limit: H_min <= H_max; H_min falls and H_max rises with thickness; both meet at t_min") {
+  for (double eps : {0.0, 0.25, 0.5, 1.0, 1.5}) {
+    CAPTURE(eps);
+    double last_min = INFINITY, last_max = 0, t_min = 0;
+    for (double t : {0.07, 0.08, 0.10, 0.15, 0.20}) {
+      CAPTURE(t);
+      const LimitResult r = analyse(eps, t);
+      REQUIRE(r.status == LimitStatus::success);
+      CHECK(r.H_min() <= r.H_max());
+      CHECK(r.H_min() / r.V < last_min);
+      CHECK(r.H_max() / r.V > last_max);
+      last_min = r.H_min() / r.V;
+      last_max = r.H_max() / r.V;
+      // t_min does not depend on the thickness it is searched from.
+      if (t_min == 0) t_min = r.thickness_min;
+      CHECK(close(r.thickness_min, t_min, 1e-9));
+    }
+    // t_min is known to 1e-10 (the root-finder's bracket) and its margin is zero to round-off there:
+    // the range is evaluated just above it.
+    Scene at_min = paper_scene(eps);
+    at_min.thickness = t_min * (1 + 1e-9);
+    const LimitResult m = analyse_limit(at_min, {});
+    REQUIRE(m.status == LimitStatus::success);
+    CHECK(close(m.H_min(), m.H_max(), kRangeAtMinimum));
+    // Just below t_min nothing stands, and the row says so with t_min.
+    at_min.thickness = t_min * (1 - 1e-6);
+    const LimitResult below = analyse_limit(at_min, {});
+    CHECK(below.status == LimitStatus::inadmissible);
+    CHECK(std::isnan(below.H_min()));
+    CHECK(close(below.thickness_min, t_min, 1e-9));
+  }
+}
+
+TEST_CASE("limit: the static collapse load factor equals the virtual-work multiplier of its own hinges") {
+  for (double eps : {0.0, 0.5, 1.0})
+    for (double a : {0.1, 0.25, 0.4}) {
+      CAPTURE(eps);
+      CAPTURE(a);
+      LimitOptions o;
+      o.point_load = {5e4, a};
+      const LimitResult r = analyse(eps, 0.12, o);
+      REQUIRE(r.status == LimitStatus::success);
+      // Four hinges, or more at a degenerate optimum (two adjacent joints touched along a face's chord).
+      REQUIRE(r.collapse_state.hinges.size() >= 4);
+      CHECK(r.load_factor() > 1);  // the arch carries the load itself, so it collapses beyond it
+      CHECK(close(r.load_factor(), r.load_factor_mechanism, kVirtualWork));
+      // Another mechanism (hinges moved by a joint) is an upper bound: the kinematic theorem.
+      std::vector<Hinge> moved = r.collapse_state.hinges;
+      const Ring ring = make_ring(*paper_scene(eps).curve, 1.2, kGamma, o);
+      const int j = moved[1].joint + 3;
+      moved[1] = {j, moved[1].face, moved[1].face == Face::intrados ? ring.joints[j].intrados : ring.joints[j].extrados};
+      CHECK(mechanism_load_factor(ring, o.point_load, moved) > r.load_factor());
+    }
+}
+
+TEST_CASE("limit: a mirrored load gives mirrored hinges and the same load factor") {
+  LimitOptions left, right;
+  left.point_load = {1.5e5, 0.3};
+  right.point_load = {1.5e5, 0.7};
+  const LimitResult a = analyse(0.25, 0.12, left), b = analyse(0.25, 0.12, right);
+  REQUIRE(a.status == LimitStatus::success);
+  REQUIRE(b.status == LimitStatus::success);
+  CHECK(close(a.load_factor(), b.load_factor(), 1e-9));
+  CHECK(close(a.H_min(), b.H_min(), 1e-9));
+  CHECK(close(a.H_max(), b.H_max(), 1e-9));
+  REQUIRE(a.collapse_state.hinges.size() == b.collapse_state.hinges.size());
+  const int last = kDefaultJointsCount - 1;
+  const std::size_t n = a.collapse_state.hinges.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Hinge &h = a.collapse_state.hinges[i], &m = b.collapse_state.hinges[n - 1 - i];
+    CHECK(h.joint == last - m.joint);
+    CHECK(h.face == m.face);
+    CHECK(std::abs(h.point.x() - (10.0 - m.point.x())) <= kExact * 10.0);
+  }
+}
+
+TEST_CASE("limit: the numbers converge as the joints are refined; the default is converged to 1e-4") {
+  for (double eps : {0.0, 0.5, 1.5}) {
+    CAPTURE(eps);
+    std::vector<LimitResult> runs;
+    for (int n : {51, 201, kDefaultJointsCount, 4 * (kDefaultJointsCount - 1) + 1}) {
+      LimitOptions o;
+      o.joints_count = n;
+      runs.push_back(analyse(eps, 0.10, o));
+      REQUIRE(runs.back().status == LimitStatus::success);
+    }
+    const LimitResult& fine = runs.back();
+    auto error = [&](const LimitResult& r) {
+      return std::max({relative_difference(r.H_min(), fine.H_min()), relative_difference(r.H_max(), fine.H_max()),
+                       relative_difference(r.thickness_min, fine.thickness_min)});
+    };
+    CHECK(error(runs[1]) <= error(runs[0]));
+    CHECK(error(runs[2]) <= error(runs[1]));
+    CHECK(error(runs[2]) <= kConverged);
+  }
+}
+
+TEST_CASE("limit: the ring's weight and centroids are those of the annulus; the axis weight is rho g t per axis length") {
+  const auto curve = make_pointed(10.0, 0.0);
+  const double R = 5.0, t = 0.8, r_in = R - t / 2, r_out = R + t / 2;
+  LimitOptions o;
+  o.joints_count = 9;  // 45-degree voussoirs: the quadrature must be exact on large pieces too
+  const Ring ring = make_ring(*curve, t, kGamma, o);
+  REQUIRE(ring.voussoirs.size() == 8);
+  CHECK(close(ring.total_weight(), kGamma * std::numbers::pi * R * t, kExact));
+  // An annulus sector of angle 2b has its centroid at 2/3 (r_out^3 - r_in^3) / (r_out^2 - r_in^2) sin(b) / b.
+  const double b = std::numbers::pi / 16;
+  const double radius = 2.0 / 3.0 * (std::pow(r_out, 3) - std::pow(r_in, 3)) / (r_out * r_out - r_in * r_in) * std::sin(b) / b;
+  for (std::size_t k = 0; k < ring.voussoirs.size(); ++k) {
+    const double angle = std::numbers::pi - (2 * k + 1) * b;  // from the centre (L/2, 0), springing at pi
+    CHECK(std::abs(ring.voussoirs[k].centroid.x() - (R + radius * std::cos(angle))) <= kExact * R);
+    CHECK(std::abs(ring.voussoirs[k].centroid.y() - radius * std::sin(angle)) <= kExact * R);
+  }
+  o.weight = WeightModel::axis;
+  const Ring axis = make_ring(*curve, t, kGamma, o);
+  CHECK(close(axis.total_weight(), kGamma * t * 2.0 * curve->half_length(), kExact));
+}
+
+TEST_CASE("limit: the pointed ring weighs what the two annulus segments left of mid-span weigh, whatever the joints") {
+  // Each half is the part of an annulus (centre eps L beyond mid-span, radii R -+ t/2) above the
+  // springing line and before mid-span: half a circular segment of each disc, cut at d = eps L from the
+  // centre, of area r^2 acos(d/r) - d sqrt(r^2 - d^2).
+  const double eps = 0.5, L = 10.0, t = 1.5, R = (0.5 + eps) * L, d = eps * L;
+  auto segment = [&](double r) { return r * r * std::acos(d / r) - d * std::sqrt(r * r - d * d); };
+  const double area = segment(R + t / 2) - segment(R - t / 2);  // both halves
+  for (JointOrientation j : {JointOrientation::radial, JointOrientation::vertical})
+    for (int n : {9, kDefaultJointsCount}) {
+      LimitOptions o;
+      o.joints = j;
+      o.joints_count = n;
+      CHECK(close(make_ring(*make_pointed(L, eps), t, kGamma, o).total_weight(), kGamma * area, kExact));
+    }
+}
+
+TEST_CASE("limit: at a pointed crown the crown joint is vertical and every joint cuts the arch in two") {
+  for (JointOrientation j : {JointOrientation::radial, JointOrientation::vertical}) {
+    LimitOptions o;
+    o.joints = j;
+    const Ring ring = make_ring(*make_pointed(10.0, 0.5), 1.5, kGamma, o);
+    const Joint& crown = ring.joints[ring.joints.size() / 2];
+    CHECK(crown.intrados.x() == 5.0);
+    CHECK(crown.extrados.x() == 5.0);
+    CHECK(crown.extrados.y() > crown.intrados.y());
+    // The left half's joints lie left of mid-span, in order, both ends on the faces' correct sides.
+    for (std::size_t k = 0; k + 1 < ring.joints.size() / 2; ++k) {
+      CHECK(ring.joints[k].intrados.x() < 5.0);
+      CHECK(ring.joints[k].extrados.x() < 5.0);
+      CHECK(ring.joints[k + 1].intrados.x() > ring.joints[k].intrados.x());
+      CHECK(ring.voussoirs[k].weight > 0);
+    }
+  }
+}
+
+TEST_CASE("limit: friction: a generous coefficient changes nothing, a small one forbids the arch") {
+  LimitOptions o;
+  const LimitResult free = analyse(0.0, 0.15, o);
+  o.friction = 10.0;
+  const LimitResult rough = analyse(0.0, 0.15, o);
+  REQUIRE(rough.status == LimitStatus::success);
+  CHECK(close(rough.H_min(), free.H_min(), kExact));
+  CHECK(close(rough.H_max(), free.H_max(), kExact));
+  // The springing bed is horizontal: the support's H/V cannot exceed the friction coefficient, and the
+  // semicircle needs H/V >= 0.235 at t = 0.15 L.
+  o.friction = 0.2;
+  const LimitResult smooth = analyse(0.0, 0.15, o);
+  CHECK(smooth.status == LimitStatus::inadmissible);
+  o.friction = 0.5;
+  const LimitResult between = analyse(0.0, 0.15, o);
+  REQUIRE(between.status == LimitStatus::success);
+  CHECK(close(between.H_min(), free.H_min(), kExact));
+  CHECK(between.H_max() / between.V <= 0.5 * (1 + kExact));
+}
+
+TEST_CASE("limit: misuse throws naming the field") {
+  LimitOptions o;
+  o.joints_count = 4;
+  CHECK_THROWS_WITH_AS(analyse(0.0, 0.1, o), doctest::Contains("joints_count"), std::invalid_argument);
+  o = {};
+  o.point_load = {1e5, 1.2};
+  CHECK_THROWS_WITH_AS(analyse(0.0, 0.1, o), doctest::Contains("point_load_at"), std::invalid_argument);
+  o = {};
+  o.friction = -0.1;
+  CHECK_THROWS_WITH_AS(analyse(0.0, 0.1, o), doctest::Contains("friction"), std::invalid_argument);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The command line.
+
+namespace {
+
+struct Run {
+  int status;
+  std::string out, err;
+};
+
+Run limit_cli(std::vector<std::string> args) {
+  args.insert(args.begin(), "limit");
+  std::ostringstream out, err;
+  const int status = ogive::cli::run_cli(args, out, err);
+  return {status, out.str(), err.str()};
+}
+
+std::vector<std::string> split(const std::string& text, char sep) {
+  std::vector<std::string> out;
+  std::string item;
+  std::istringstream in(text);
+  while (std::getline(in, item, sep)) out.push_back(item);
+  if (!text.empty() && text.back() == sep && sep != '\n') out.push_back("");
+  return out;
+}
+
+std::string field(const std::string& csv, const std::string& name, std::size_t row = 1) {
+  const auto lines = split(csv, '\n');
+  const auto header = split(lines.at(0), ',');
+  const auto it = std::find(header.begin(), header.end(), name);
+  REQUIRE_MESSAGE(it != header.end(), "no column " << name);
+  return split(lines.at(row), ',').at(static_cast<std::size_t>(it - header.begin()));
+}
+
+}  // namespace
+
+TEST_CASE("cli: limit prints one row per scene, inadmissible arches as rows, hinges as x/L:face") {
+  const Run r = limit_cli({"--eccentricity", "0,0.5", "--thickness-ratio", "0.03,0.15"});
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  const auto lines = split(r.out, '\n');
+  REQUIRE(lines.size() == 1 + 4);
+  CHECK(field(r.out, "status", 1) == "inadmissible");
+  CHECK(field(r.out, "H_min", 1).empty());
+  CHECK(!field(r.out, "thickness_min_ratio", 1).empty());
+  CHECK(field(r.out, "status", 3) == "success");
+  // The semicircle's minimum-thrust hinges: haunch intrados, crown extrados, haunch intrados.
+  const auto hinges = split(field(r.out, "hinges_min", 3), ';');
+  REQUIRE(hinges.size() == 3);
+  CHECK(hinges[1] == "0.5:extrados");
+  CHECK(hinges[0].find(":intrados") != std::string::npos);
+  CHECK(close(std::stod(field(r.out, "geometric_safety_factor", 3)),
+              0.15 / std::stod(field(r.out, "thickness_min_ratio", 3)), kExact));
+  CHECK(r.out.find("nan") == std::string::npos);
+  CHECK(r.out.find("inf") == std::string::npos);
+}
+
+TEST_CASE("cli: limit with a point load prints the load factor and its mechanism's; --thrust-line one row per joint") {
+  const Run r = limit_cli({"--point-load", "2e5", "--point-load-at", "0.25", "--thickness-ratio", "0.12"});
+  REQUIRE(r.status == 0);
+  const double lf = std::stod(field(r.out, "load_factor")), mech = std::stod(field(r.out, "load_factor_mechanism"));
+  CHECK(close(lf, mech, kVirtualWork));
+  CHECK(split(field(r.out, "hinges_collapse"), ';').size() == 4);
+
+  const Run lines = limit_cli({"--thrust-line", "collapse", "--point-load", "2e5", "--point-load-at", "0.25",
+                               "--thickness-ratio", "0.12", "--joints-count", "41"});
+  REQUIRE(lines.status == 0);
+  REQUIRE(split(lines.out, '\n').size() == 1 + 41);
+  int hinges = 0;
+  for (std::size_t j = 1; j <= 41; ++j) {
+    // Every crossing lies on its joint, between intrados and extrados.
+    const double ix = std::stod(field(lines.out, "intrados_x", j)), iy = std::stod(field(lines.out, "intrados_y", j));
+    const double ex = std::stod(field(lines.out, "extrados_x", j)), ey = std::stod(field(lines.out, "extrados_y", j));
+    const double tx = std::stod(field(lines.out, "thrust_x", j)), ty = std::stod(field(lines.out, "thrust_y", j));
+    const double length = std::hypot(ex - ix, ey - iy);
+    const double u = ((tx - ix) * (ex - ix) + (ty - iy) * (ey - iy)) / (length * length);
+    CHECK(std::abs((tx - ix) * (ey - iy) - (ty - iy) * (ex - ix)) <= 1e-9 * length * 10.0);
+    CHECK(u >= -1e-9);
+    CHECK(u <= 1 + 1e-9);
+    hinges += !field(lines.out, "hinge", j).empty();
+  }
+  CHECK(hinges == 4);
+
+  // A state that does not exist (the arch cannot stand): one row that says so, without numbers.
+  const Run none = limit_cli({"--thrust-line", "max", "--thickness-ratio", "0.03", "--joints-count", "41"});
+  REQUIRE(none.status == 0);
+  REQUIRE(split(none.out, '\n').size() == 2);
+  CHECK(field(none.out, "status") == "inadmissible");
+  CHECK(field(none.out, "thrust_x").empty());
+}
+
+TEST_CASE("cli: limit refuses bad input with one line and exit 2") {
+  const std::vector<std::vector<std::string>> cases = {
+      {"--friction", "0"},
+      {"--friction", "-0.3"},
+      {"--joints-count", "3"},
+      {"--joints-count", "200"},
+      {"--joints-count", "x"},
+      {"--joints", "diagonal"},
+      {"--weight", "lumped"},
+      {"--point-load", "0"},
+      {"--point-load", "-1e5"},
+      {"--point-load", "1e5", "--point-load-at", "1.5"},
+      {"--point-load", "1e5", "--point-load-at", "-0.1"},
+      {"--point-load-at", "0.3"},
+      {"--thrust-line", "collapse"},
+      {"--thrust-line", "middle"},
+      {"--support-displacement-ratio", "0.0001"},
+      {"--thickness-ratio", "1.2"},
+      {"--repeats", "-1"},
+  };
+  for (const auto& args : cases) {
+    std::string joined;
+    for (const auto& a : args) joined += a + " ";
+    CAPTURE(joined);
+    const Run r = limit_cli(args);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(split(r.err, '\n').size() == 1);
+    CHECK(r.err.rfind("ogive: ", 0) == 0);
+  }
+}
