@@ -51,7 +51,7 @@ half_blocks() {
     {
       key = ""; for (i = 1; i <= nk; i++) key = key (i > 1 ? ", " : "") k[i] " " $(col[k[i]])
       if (key != last) { flush(); print key > keyfile; last = key }
-      s[n] = $(col["s"]); e[n] = $(col["e"]) == "" ? "NaN" : $(col["e"]); n++
+      s[n] = $(col["s"]); e[n] = $(col["thrust_eccentricity"]) == "" ? "NaN" : $(col["thrust_eccentricity"]); n++
     }
     END { flush() }'
 }
@@ -78,25 +78,25 @@ plot for [i=0:$((n - 1))] '$tmp/$name.dat' index i using 1:2 with linespoints lw
 GP
 }
 
-"$ogive" thrust --youngs-modulus 1e8,1e9,1e10,1e11,1e12 --poisson-ratio 0:0.5:6 | blocks poisson_ratio H_over_V youngs_modulus > "$tmp/figure-7.dat"
+"$ogive" thrust --youngs-modulus 1e8,1e9,1e10,1e11,1e12 --poisson-ratio 0:0.5:6 --all-columns | blocks poisson_ratio H_over_V youngs_modulus > "$tmp/figure-7.dat"
 plot figure-7 "Figure 7: H/V of the semicircle (t = 0.08 L) against nu, for E = 1e8 .. 1e12 Pa (the lines coincide)" \
   "Poisson's ratio nu" "H/V" "set yrange [0.39:0.40]"
 rm "$tmp/keys"
-"$ogive" thrust --eccentricity 0:1:11 | blocks eccentricity H_over_V thickness_ratio > "$tmp/figure-8.dat"
+"$ogive" thrust --eccentricity 0:1:11 --all-columns | blocks eccentricity H_over_V thickness_ratio > "$tmp/figure-8.dat"
 plot figure-8 "Figure 8: H/V against eccentricity, t = 0.08 L, fixed supports" "eccentricity (0 semicircle, 0.5 equilateral)" "H/V" "set yrange [0:*]"
 rm "$tmp/keys"
-"$ogive" thrust --thickness-ratio 0.06,0.08,0.10,0.15,0.20 --eccentricity 0:1:11 | blocks eccentricity H_over_V thickness_ratio > "$tmp/figure-9.dat"
+"$ogive" thrust --thickness-ratio 0.06,0.08,0.10,0.15,0.20 --eccentricity 0:1:11 --all-columns | blocks eccentricity H_over_V thickness_ratio > "$tmp/figure-9.dat"
 plot figure-9 "Figure 9: H/V against eccentricity and thickness, fixed supports" "eccentricity" "H/V" "set yrange [0:*]"
 rm "$tmp/keys"
-"$ogive" thrust --eccentricity 0,0.25,0.5,0.75,1 --support-displacement-ratio 0:0.0003:7 | blocks support_displacement_ratio H_over_V eccentricity \
+"$ogive" thrust --eccentricity 0,0.25,0.5,0.75,1 --support-displacement-ratio 0:0.0003:7 --all-columns | blocks support_displacement_ratio H_over_V eccentricity \
   | awk 'NF == 2 { $1 = $1 * 100 } { print }' > "$tmp/figure-10.dat"
 plot figure-10 "Figure 10: H/V against the outward support displacement d, t = 0.08 L" "d/L (%)" "H/V" "set xzeroaxis lw 2"
 rm "$tmp/keys"
-"$ogive" profile --thickness-ratio 0.08,0.20 --eccentricity 0,0.5,1 --stations 101 | half_blocks thickness_ratio eccentricity > "$tmp/figure-11.dat"
+"$ogive" profile --thickness-ratio 0.08,0.20 --eccentricity 0,0.5,1 --stations 101 --all-columns | half_blocks thickness_ratio eccentricity > "$tmp/figure-11.dat"
 plot figure-11 "Figure 11: eccentricity e of the compression, springing (0) to crown (1), fixed supports" "s / S (arc length over the half arch)" "e (% of the kern, t/6)" \
   "set yrange [-600:600]; set ytics 100; set arrow from 0,100 to 1,100 nohead dt 2 lc rgb 'black'; set arrow from 0,-100 to 1,-100 nohead dt 2 lc rgb 'black'"
 rm "$tmp/keys"
-"$ogive" profile --support-displacement-ratio 0,0.0001,0.0002,0.0003 --stations 101 | half_blocks support_displacement_ratio > "$tmp/figure-12.dat"
+"$ogive" profile --support-displacement-ratio 0,0.0001,0.0002,0.0003 --stations 101 --all-columns | half_blocks support_displacement_ratio > "$tmp/figure-12.dat"
 plot figure-12 "Figure 12: e along the semicircle, t = 0.08 L, outward support displacement d" "s / S (arc length over the half arch)" "e (% of the kern, t/6)" \
   "set yrange [-1000:4000]; set arrow from 0,100 to 1,100 nohead dt 2 lc rgb 'black'; set arrow from 0,-100 to 1,-100 nohead dt 2 lc rgb 'black'"
 ls "$out"
