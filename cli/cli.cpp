@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iostream>
 #include <condition_variable>
 #include <exception>
 #include <map>
@@ -133,7 +134,8 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
   for (const CurveFamily& f : kFamilies) names += (names.empty() ? "" : ", ") + f.name;
   cmd.add_option("--curve", o.curve, "generator curve: " + names)->capture_default_str();
   cmd.add_option("--curve-file", o.curve_file,
-                 "with --curve points: CSV file with header x,y and the axis points in m, springing (y = 0) to crown");
+                 "with --curve points: CSV file with header x,y and the axis points in m, springing (y = 0) to crown; "
+                 "- reads it from standard input");
   for (Axis& a : o.axes)
     cmd.add_option(a.flag, a.text,
                    fmt::format("{}; {}; a value, a list a,b,c or a range start:stop:count{}", kAxisMeaning.at(a.flag),
@@ -181,7 +183,8 @@ class ScenePlan {
     if (family->file) {
       if (o.curve_file.empty()) throw UsageError("--curve-file: --curve points needs a file of axis points");
       try {
-        o.points = read_points_curve(o.curve_file);
+        // "-": the points come on standard input (a survey piped from another program).
+        o.points = o.curve_file == "-" ? parse_points_curve(std::cin, "<stdin>") : read_points_curve(o.curve_file);
       } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
       }
@@ -404,6 +407,31 @@ struct ColumnText {
   bool given() const { return option && option->count() > 0; }
 };
 
+// " (did you mean 'x'?)" for the candidate closest to a misspelt name (edit distance at most 2), or "".
+std::string did_you_mean(const std::string& name, const std::vector<std::string>& candidates) {
+  if (name.size() > 100) return "";
+  std::size_t best = std::string::npos, best_distance = 3;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const std::string& c = candidates[i];
+    std::vector<std::size_t> row(c.size() + 1);
+    for (std::size_t j = 0; j <= c.size(); ++j) row[j] = j;
+    for (std::size_t a = 1; a <= name.size(); ++a) {
+      std::size_t diagonal = row[0];
+      row[0] = a;
+      for (std::size_t j = 1; j <= c.size(); ++j) {
+        const std::size_t up = row[j];
+        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (name[a - 1] == c[j - 1] ? 0 : 1)});
+        diagonal = up;
+      }
+    }
+    if (row[c.size()] < best_distance) {
+      best_distance = row[c.size()];
+      best = i;
+    }
+  }
+  return best == std::string::npos ? "" : " (did you mean '" + candidates[best] + "'?)";
+}
+
 // A command's columns in their full order, and which of them are printed: by default the scene number,
 // the inputs that vary in the sweep and the command's results; `--columns a,b` chooses (in the full
 // order), `--all-columns` prints everything.
@@ -465,29 +493,7 @@ class Columns {
   }
 
  private:
-  // " (did you mean 'x'?)" for the column closest to a misspelt name, by edit distance.
-  std::string suggestion(const std::string& name) const {
-    std::size_t best = std::string::npos, best_distance = 3;
-    for (std::size_t i = 0; i < all_.size(); ++i) {
-      const std::string& c = all_[i];
-      std::vector<std::size_t> row(c.size() + 1);
-      for (std::size_t j = 0; j <= c.size(); ++j) row[j] = j;
-      for (std::size_t a = 1; a <= name.size() && name.size() < 100; ++a) {
-        std::size_t diagonal = row[0];
-        row[0] = a;
-        for (std::size_t j = 1; j <= c.size(); ++j) {
-          const std::size_t up = row[j];
-          row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (name[a - 1] == c[j - 1] ? 0 : 1)});
-          diagonal = up;
-        }
-      }
-      if (name.size() < 100 && row[c.size()] < best_distance) {
-        best_distance = row[c.size()];
-        best = i;
-      }
-    }
-    return best == std::string::npos ? "" : " (did you mean '" + all_[best] + "'?)";
-  }
+  std::string suggestion(const std::string& name) const { return did_you_mean(name, all_); }
   std::vector<std::string> all_, defaults_;
   std::vector<bool> keep_;
 };
@@ -1558,7 +1564,21 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   } catch (const CLI::ParseError& e) {
     std::string what = e.what();
     std::replace(what.begin(), what.end(), '\n', ' ');
-    err << "ogive: " << what << "\n";
+    // An option nobody knows: suggest the closest option of the subcommand (or subcommand name).
+    std::vector<std::string> names;
+    CLI::App* where = &app;
+    for (CLI::App* sub : app.get_subcommands({}))
+      if (sub->parsed()) where = sub;
+    for (const CLI::Option* opt : where->get_options())
+      for (const std::string& n : opt->get_lnames()) names.push_back("--" + n);
+    if (where == &app)
+      for (CLI::App* sub : app.get_subcommands({})) names.push_back(sub->get_name());
+    std::string hint;
+    for (const std::string& word : args)
+      if (hint.empty() && std::find(names.begin(), names.end(), word.substr(0, word.find('='))) == names.end() &&
+          (word.rfind("--", 0) == 0 || where == &app))
+        hint = did_you_mean(word.substr(0, word.find('=')), names);
+    err << "ogive: " << what << hint << "\n";
     return kExitUsage;
   }
   try {

@@ -3,7 +3,10 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <fstream>
+#include <iostream>
 #include <map>
+#include <sstream>
 #include <set>
 #include <string>
 #include <vector>
@@ -175,4 +178,25 @@ TEST_CASE("csv: profile prints each section's intrados and extrados points - t a
     // Inside the kern (|e| <= 100 %): the thrust point lies between the faces, within t/6 of the axis.
     CHECK(std::hypot(at("thrust_x") - at("x"), at("thrust_y") - at("y")) <= t / 6 * (1 + 1e-12));
   }
+}
+
+TEST_CASE("help that teaches: a misspelt option or subcommand gets a suggestion - a points file on standard input") {
+  const Run r = run_command({"thrust", "--eccentricty", "0.5"});
+  CHECK(r.status == 2);
+  CHECK(r.out.empty());
+  CHECK(r.err.find("did you mean '--eccentricity'?") != std::string::npos);
+  CHECK(lines(r.err).size() == 1);
+  CHECK(run_command({"thrus"}).err.find("did you mean 'thrust'?") != std::string::npos);
+  // --curve-file - reads the points from standard input: the same rows as the file.
+  const std::string path = OGIVE_DATA_DIR "/curves/semicircle-24.csv";
+  std::ifstream file(path);
+  std::stringstream text;
+  text << file.rdbuf();
+  std::istringstream piped(text.str());
+  std::streambuf* saved = std::cin.rdbuf(piped.rdbuf());
+  const Run from_stdin = run_command({"thrust", "--curve", "points", "--curve-file", "-"});
+  std::cin.rdbuf(saved);
+  const Run from_file = run_command({"thrust", "--curve", "points", "--curve-file", path});
+  CHECK(from_stdin.status == 0);
+  CHECK(from_stdin.out == from_file.out);
 }
