@@ -16,7 +16,8 @@ done
 for f in libogive.a ogiveConfig.cmake ogiveConfigVersion.cmake ogiveTargets.cmake; do
   [[ -n $(find "$prefix" -name "$f") ]] || { echo "check-install: $f was not installed" >&2; exit 1; }
 done
-if grep -nE 'sundials|cvode|nvector|N_Vector|SUNContext|CLI/|CLI::' "$prefix/include/ogive/"*.hpp; then
+# SUNDIALS' and CLI11's headers and types (not the words: a comment may name CVODE's tolerances).
+if grep -nE '#include *[<"](sundials|cvode|nvector|sunlinsol|sunmatrix|sunnonlinsol|CLI)/|\b(N_Vector|SUNContext|SUNMatrix|SUNLinearSolver|sunrealtype|sunindextype)\b|CLI::' "$prefix/include/ogive/"*.hpp; then
   echo "check-install: a public header exposes SUNDIALS or CLI11 (above)" >&2
   exit 1
 fi
