@@ -19,6 +19,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -1360,7 +1361,29 @@ constexpr std::size_t kMaxDrawings = 1000;
 struct DrawTargets {
   std::string output;      // --output FILE: exactly one scene
   std::string output_dir;  // --output-dir DIR: one file per scene, named by draw_file_name
+  bool limit = false;      // --limit: the limit analysis' minimum and maximum thrust lines too
 };
+
+// The minimum and maximum thrust states of the limit analysis (default options: radial joints, the
+// voussoirs' own weight) as lines to draw, with their hinges; none where the arch cannot stand.
+std::vector<ExtraThrustLine> limit_lines(const Scene& scene) {
+  const LimitResult r = analyse_limit(scene, LimitOptions{});
+  std::vector<ExtraThrustLine> lines;
+  for (const auto& [state, id, name, colour] :
+       {std::tuple{&r.min_state, "thrust-line-min", "minimum", "#1e8449"},
+        std::tuple{&r.max_state, "thrust-line-max", "maximum", "#7d3c98"}}) {
+    if (!state->found()) continue;
+    ExtraThrustLine line;
+    line.id = id;
+    line.colour = colour;
+    line.label = fmt::format("{} thrust (limit analysis, rigid voussoirs): H/V = {:.4g}, {} hinges", name,
+                             state->H / r.V, state->hinges.size());
+    for (const Eigen::Vector2d& c : state->crossing) line.points.push_back({c.x(), c.y()});
+    for (const Hinge& h : state->hinges) line.hinges.push_back({h.point.x(), h.point.y()});
+    lines.push_back(std::move(line));
+  }
+  return lines;
+}
 
 // The drawing's caption: the curve, its shape parameters, span, t/L and d/L, as the options name them.
 std::string draw_title(const SceneParameters& p) {
@@ -1438,6 +1461,7 @@ int run_draw(SceneOptions& so, const CLI::App& cmd, Options o, const DrawTargets
         const Solution sol = solve(scene, o);
         DrawingOptions drawing;
         drawing.title = draw_title(p);
+        if (to.limit) drawing.extra_lines = limit_lines(scene);
         const std::string& path = files[p.scene - 1];
         std::ofstream file(path, std::ios::trunc);
         file << arch_svg(scene, sol, drawing);
@@ -1512,6 +1536,9 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
       ->check(kCount)
       ->capture_default_str();
   draw->add_option("--output", draw_targets.output, "the SVG file of the one scene (refused for a sweep)");
+  draw->add_flag("--limit", draw_targets.limit,
+                 "also draw the limit analysis' minimum and maximum thrust lines with their hinges (ogive limit's "
+                 "defaults: radial joints, the voussoirs' weight)");
   draw->add_option("--output-dir", draw_targets.output_dir,
                    "an existing directory: one SVG per scene, named after the curve and the options that vary");
 

@@ -3,7 +3,8 @@
 #
 #   bash scripts/figures.sh [OGIVE]        # OGIVE defaults to build/ogive
 #
-# docs/figures/semicircle.png, equilateral.png: `ogive draw` (SVG) rendered by rsvg-convert;
+# docs/figures/semicircle.png, equilateral.png (and -limit, with --limit): `ogive draw` (SVG) rendered
+# by rsvg-convert;
 # docs/figures/figure-7.png .. figure-12.png: the paper's Figures 7-12 from the calls of the README's
 # table "The paper's figures, one call each", drawn by gnuplot (pngcairo terminal, which gnuplot-nox has).
 # Needs gnuplot-nox and librsvg2-bin: bash scripts/install-deps.sh --charts.
@@ -23,7 +24,12 @@ trap 'rm -rf "$tmp"' EXIT
 "$ogive" draw --curve semicircular --output "$tmp/semicircle.svg" >/dev/null
 "$ogive" draw --eccentricity 0.5 --output "$tmp/equilateral.svg" >/dev/null
 "$ogive" draw --curve semicircular --support-displacement-ratio 0.0001 --output "$tmp/semicircle-spreading.svg" >/dev/null
-for f in semicircle equilateral semicircle-spreading; do rsvg-convert --width 800 "$tmp/$f.svg" -o "$out/$f.png"; done
+# With the limit analysis' minimum and maximum thrust lines (t = 0.10 L).
+"$ogive" draw --curve semicircular --thickness-ratio 0.1 --limit --output "$tmp/semicircle-limit.svg" >/dev/null
+"$ogive" draw --eccentricity 0.5 --thickness-ratio 0.1 --limit --output "$tmp/equilateral-limit.svg" >/dev/null
+for f in semicircle equilateral semicircle-spreading semicircle-limit equilateral-limit; do
+  rsvg-convert --width 800 "$tmp/$f.svg" -o "$out/$f.png"
+done
 
 # blocks X Y KEY... < CSV: the columns X and Y (named as in the header) as gnuplot data, one data set
 # (sets separated by two blank lines) per value of the KEY columns, in order of first appearance; each

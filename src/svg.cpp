@@ -253,6 +253,27 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
     body += "/></clipPath>\n";
     path(body, "thrust-line", thrust, (thrust_style + " clip-path=\"url(#near-the-arch)\"").c_str());
   }
+  // Further lines of thrust (limit states): dashed, their hinges circled.
+  for (const ExtraThrustLine& extra : options.extra_lines) {
+    std::vector<PlanePoint> points;
+    for (PlanePoint p : extra.points) points.push_back(drawn_at(p.x, p.y));
+    if (!points.empty())
+      path(body, extra.id.c_str(), {points},
+           fmt::format("fill=\"none\" stroke=\"{}\" stroke-width=\"{}\" stroke-dasharray=\"{},{}\"", extra.colour,
+                       1.2 * stroke, 4 * stroke, 2 * stroke)
+               .c_str());
+    body += fmt::format("<g id=\"{}-hinges\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\">\n", extra.id, extra.colour,
+                        stroke);
+    for (PlanePoint h : extra.hinges) {
+      const PlanePoint c = drawn_at(h.x, h.y);
+      body += "<circle";
+      attribute(body, "cx", c.x);
+      attribute(body, "cy", -c.y);
+      attribute(body, "r", 0.6 * font);
+      body += "/>\n";
+    }
+    body += "</g>\n";
+  }
   body += supports;
 
   // Support movement: each springing moves horizontally by d, outwards for d > 0.
@@ -288,7 +309,7 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
   }
 
   // Title: the caption, then the reactions (or why there are none), then a legend.
-  const double title_y = drawn.y1 + 4.2 * font;
+  const double title_y = drawn.y1 + (4.2 + 1.3 * static_cast<double>(options.extra_lines.size())) * font;
   std::string result;
   if (std::isfinite(solution.H_over_V))
     result = fmt::format("H/V = {:.6g}, H = {:.4g} kN/m, V = {:.4g} kN/m ({}, {})", solution.H_over_V, solution.H / 1000,
@@ -305,6 +326,14 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
   line(title, {box.x0 + 14 * font, legend_y + 0.3 * font}, {box.x0 + 16 * font, legend_y + 0.3 * font}, axis_style);
   text(title, {box.x0 + 16.5 * font, legend_y}, 0.8 * font, "start",
        fmt::format("axis; section t = {:g} m; clamped springings", scene.thickness));
+  for (std::size_t k = 0; k < options.extra_lines.size(); ++k) {
+    const ExtraThrustLine& extra = options.extra_lines[k];
+    const double y = legend_y - 1.3 * font * static_cast<double>(k + 1);
+    line(title, {box.x0, y + 0.3 * font}, {box.x0 + 2 * font, y + 0.3 * font},
+         fmt::format("stroke=\"{}\" stroke-width=\"{}\" stroke-dasharray=\"{},{}\"", extra.colour, 1.2 * stroke,
+                     4 * stroke, 2 * stroke));
+    text(title, {box.x0 + 2.5 * font, y}, 0.8 * font, "start", extra.label);
+  }
   title += "</g>\n";
 
   // The view: everything drawn, the title's width (about 40 font sizes) and a margin.

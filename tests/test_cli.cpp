@@ -311,6 +311,39 @@ TEST_CASE("draw: the SVG is well-formed and its thrust line is the profile's, po
   }
 }
 
+TEST_CASE("draw --limit: the minimum and maximum thrust lines are ogive limit's, joint by joint - hinges circled") {
+  TempDir dir("ogive_test_draw_limit");
+  const std::vector<std::string> scene = {"--eccentricity", "0.5", "--thickness-ratio", "0.1"};
+  std::vector<std::string> draw = {"draw", "--limit", "--output", dir / "limit.svg"};
+  draw.insert(draw.end(), scene.begin(), scene.end());
+  const Run drawn = run_command(draw);
+  REQUIRE(drawn.status == 0);
+  CHECK(xmllint_accepts(dir / "limit.svg"));
+  const std::string svg = read_text(dir / "limit.svg");
+  for (const char* state : {"min", "max"}) {
+    std::vector<std::string> limit = {"limit", "--thrust-line", state};
+    limit.insert(limit.end(), scene.begin(), scene.end());
+    const Run joints = run_command(limit);
+    REQUIRE(joints.status == 0);
+    const auto runs = svg_path_points(svg, std::string("thrust-line-") + state);
+    REQUIRE(runs.size() == 1);
+    REQUIRE(runs[0].size() + 1 == lines(joints.out).size());
+    std::size_t hinges = 0;
+    for (std::size_t k = 0; k < runs[0].size(); ++k) {
+      CHECK(std::abs(runs[0][k].first - std::stod(column(joints.out, "thrust_x", k + 1))) <= ogive::kExact * 10);
+      CHECK(std::abs(runs[0][k].second - std::stod(column(joints.out, "thrust_y", k + 1))) <= ogive::kExact * 10);
+      hinges += column(joints.out, "hinge", k + 1).empty() ? 0 : 1;
+    }
+    const std::size_t group = svg.find(std::string("id=\"thrust-line-") + state + "-hinges\"");
+    REQUIRE(group != std::string::npos);
+    std::size_t circles = 0;
+    for (std::size_t at = svg.find("<circle", group); at < svg.find("</g>", group); at = svg.find("<circle", at + 1))
+      ++circles;
+    CHECK(circles == hinges);
+    CHECK(hinges >= 3);  // a mechanism's worth
+  }
+}
+
 TEST_CASE("draw: the faces lie at t/2 from the axis - the semicircle's on circles of radius (L +- t)/2") {
   TempDir dir("ogive_test_draw_faces");
   REQUIRE(run_command({"draw", "--curve", "semicircular", "--thickness-ratio", "0.1", "--output", dir / "s.svg"}).status == 0);

@@ -13,6 +13,8 @@
 //               left half (equal steps of arc length) and mirrored onto the right; at a pointed crown
 //               each face ends at the vertical crown joint x = L/2 (cut there, or carried to it along
 //               the crown's tangent)
+//   #thrust-line-min, #thrust-line-max, ... (DrawingOptions::extra_lines) further lines of thrust, dashed,
+//               with their hinges as circles in #thrust-line-min-hinges, ...
 //   #thrust-line  the elastic line of thrust: the solution's profile points (thrust_x, thrust_y) in
 //               order, one per station; a station with no thrust point (N = 0) or one farther than
 //               kFarFromArch spans from the arch starts a new subpath and is not drawn
@@ -26,6 +28,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "ogive/scene.hpp"
 #include "ogive/solve.hpp"
@@ -41,8 +44,20 @@ inline constexpr double kFarFromArch = 10.0;
 // fonts of a tenth of a unit and nothing at all when one unit is a million pixels.
 double drawing_unit(double span);
 
+// A further line of thrust drawn beside the elastic one (the limit analysis' minimum and maximum thrust
+// states): its points in m (x from the left springing, y up), in order, and its hinges (points on a
+// face), each marked with a circle. Drawn as <path id="ID"> and <g id="ID-hinges">.
+struct ExtraThrustLine {
+  std::string id;                  // element id, e.g. "thrust-line-min"; letters, digits and '-'
+  std::string label;               // legend text
+  std::string colour = "#1e8449";  // SVG colour
+  std::vector<PlanePoint> points;  // m
+  std::vector<PlanePoint> hinges;  // m
+};
+
 struct DrawingOptions {
   std::string title;      // caption, e.g. the scene's parameters; one line, plain text (escaped here)
+  std::vector<ExtraThrustLine> extra_lines;  // drawn after the elastic line, each with a legend line
   int samples = 101;      // points of the intrados, extrados and axis over the half arch, in [2, 100000]
   double width_px = 960;  // width of the rendered picture, px, in [16, 100000]; the height follows
 
