@@ -445,7 +445,8 @@ class Columns {
   const std::vector<std::string>& all() const { return all_; }
 
   // The user's --columns and --all-columns.
-  void select(const ColumnText& ct, const std::vector<std::string>& varying_inputs) {
+  void select(const ColumnText& ct, const std::vector<std::string>& varying_inputs,
+              const std::vector<std::string>& varying_solver = {}) {
     const std::string& text = ct.columns;
     if (ct.given() && ct.all_columns) throw UsageError("--columns: give either --columns or --all-columns");
     keep_.assign(all_.size(), ct.all_columns);
@@ -455,6 +456,7 @@ class Columns {
       wanted = defaults_;
       wanted.push_back("scene");
       wanted.insert(wanted.end(), varying_inputs.begin(), varying_inputs.end());
+      wanted.insert(wanted.end(), varying_solver.begin(), varying_solver.end());
     } else {
       for (std::size_t pos = 0; pos <= text.size();) {
         const std::size_t comma = std::min(text.find(',', pos), text.size());
@@ -548,6 +550,7 @@ const std::map<std::string, Integrator> kIntegrators = {{"adams", Integrator::ad
 struct SolverText {
   std::string method = "auto";
   std::string integrator = "adams";
+  std::string rtol = "1e-8";  // a value, a list or a range, like a scene option
   bool no_verify = false;
   bool ignore_breakpoints = false;
 };
@@ -575,15 +578,17 @@ void add_solver_options(CLI::App& cmd, Options& o, SolverText& text, bool with_m
                         bool with_integrator = true, bool with_rtol = true) {
   if (with_method)
     cmd.add_option("--method", text.method, "closed-form (circular arcs only), shooting, multiple-shooting or auto (the closed form where it "
-                   "applies, else shooting with 1, 2, 4 .. 64 segments until the error estimate meets --rtol)")->capture_default_str();
+                   "applies, else shooting with 1, 2, 4 .. 64 segments until the error estimate meets --rtol); a "
+                   "list a,b gives a row for each")->capture_default_str();
   if (with_integrator)
-    cmd.add_option("--integrator", text.integrator, "CVODE's method: adams or bdf (the closed form uses none)")->capture_default_str();
+    cmd.add_option("--integrator", text.integrator, "CVODE's method: adams or bdf (the closed form uses none); a list "
+                   "a,b gives a row for each")->capture_default_str();
   if (with_rtol)
-    cmd.add_option("--rtol", o.rtol,
+    cmd.add_option("--rtol", text.rtol,
                  "relative error asked of every printed number; must lie in [1e-14, 0.1]; status success "
                  "guarantees it. CVODE itself runs at rtol/10 (adams) or rtol/1000 (bdf), and a verifying solve "
-                 "at rtol/16")
-      ->check(kFiniteNumber)->capture_default_str();
+                 "at rtol/16. A value, a list a,b,c or a range start:stop:count: a row for each")
+      ->capture_default_str();
   cmd.add_option("--atol", o.atol,
                  "CVODE's absolute tolerance on the scaled state; must be >= 0 (0: 1e-6 of CVODE's rtol); the "
                  "verifying solve uses the smaller of atol and that default, /16")
@@ -607,8 +612,6 @@ Enum lookup(const std::map<std::string, Enum>& names, const std::string& text, c
 }
 
 void apply_solver_text(Options& o, const SolverText& text) {
-  o.method = lookup(kMethods, text.method, "--method");
-  o.integrator = lookup(kIntegrators, text.integrator, "--integrator");
   o.verify = !text.no_verify;
   o.restart_at_breakpoints = !text.ignore_breakpoints;
 }
@@ -616,6 +619,51 @@ void apply_solver_text(Options& o, const SolverText& text) {
 void check_options(const Options& o) {
   std::string why;
   if (!o.is_valid(&why)) throw UsageError(as_option_message(why));
+}
+
+// Comma-separated names ("a,b"): each one, empty ones included (the lookup refuses them).
+std::vector<std::string> split_names(const std::string& text) {
+  std::vector<std::string> names;
+  for (std::size_t pos = 0; pos <= text.size();) {
+    const std::size_t comma = std::min(text.find(',', pos), text.size());
+    names.push_back(text.substr(pos, comma - pos));
+    pos = comma + 1;
+  }
+  return names;
+}
+
+// The solver options of a command: --method, --integrator and --rtol take lists (and --rtol ranges),
+// like the scene options; each combination is a row of its own, after the scene's (rtol fastest).
+struct SolverSweep {
+  std::vector<Options> combinations;
+  std::vector<std::string> varying;  // the columns among method, integrator and rtol that take several values
+};
+
+SolverSweep solver_sweep(Options base, const SolverText& text, bool with_method = true) {
+  apply_solver_text(base, text);
+  std::vector<Method> methods;
+  for (const std::string& name : with_method ? split_names(text.method) : std::vector<std::string>{"auto"})
+    methods.push_back(lookup(kMethods, name, "--method"));
+  std::vector<Integrator> integrators;
+  for (const std::string& name : split_names(text.integrator)) integrators.push_back(lookup(kIntegrators, name, "--integrator"));
+  const std::vector<double> rtols = parse_values(text.rtol, "--rtol");
+  SolverSweep sweep;
+  for (Method m : methods)
+    for (Integrator i : integrators)
+      for (double rtol : rtols) {
+        Options o = base;
+        o.method = m;
+        o.integrator = i;
+        o.rtol = rtol;
+        check_options(o);
+        sweep.combinations.push_back(o);
+      }
+  if (sweep.combinations.size() > kMaxValues)
+    throw UsageError(fmt::format("--rtol: the solver options give more than {} combinations", kMaxValues));
+  if (methods.size() > 1) sweep.varying.push_back("method");
+  if (integrators.size() > 1) sweep.varying.push_back("integrator");
+  if (rtols.size() > 1) sweep.varying.push_back("rtol");
+  return sweep;
 }
 
 // The status of a row whose options are each valid but make no scene together (Scene::validate or the
@@ -811,20 +859,24 @@ const Columns kThrustColumns(
 // Stations at which a verified solve checks the profile when the thrust line is summarised.
 constexpr int kSummaryStations = 65;
 
-int run_thrust(SceneOptions& so, const CLI::App& cmd, Options o, const ColumnText& ct, int threads, std::ostream& out) {
-  check_options(o);
+int run_thrust(SceneOptions& so, const CLI::App& cmd, SolverSweep sweep, const ColumnText& ct, int threads,
+               std::ostream& out) {
   const ScenePlan plan(so, cmd);
   Columns columns = kThrustColumns;
-  columns.select(ct, plan.varying_inputs());
+  columns.select(ct, plan.varying_inputs(), sweep.varying);
   const bool summary = columns.selected("max_thrust_eccentricity") || columns.selected("max_thrust_eccentricity_at") ||
                        columns.selected("thrust_in_kern") || columns.selected("thrust_in_section");
   // The summary prints eccentricities: their accuracy must be part of the error estimate.
-  if (summary) o.stations = kSummaryStations;
+  if (summary)
+    for (Options& o : sweep.combinations) o.stations = kSummaryStations;
   RowWriter writer(out);
   writer.write(columns.header());
   const bool all_ok = for_each_scene(
       plan, writer, threads,
       [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
+        bool ok = true;
+        std::string text;
+        for (const Options& o : sweep.combinations) {
         CsvRow row(columns.keep());
         const Solution sol = solve(scene, o);
         const ThrustLineSummary line = summary ? summarize_thrust_line(sol) : ThrustLineSummary{};
@@ -837,8 +889,11 @@ int run_thrust(SceneOptions& so, const CLI::App& cmd, Options o, const ColumnTex
         const Diagnostics& d = sol.diagnostics;
         row.add(d.steps).add(d.rhs_evaluations).add(d.segments).add(d.condition_estimate).add(d.error_estimate);
         row.add(d.boundary_residual).add(d.equilibrium_residual).add(sol.message);
-        emit(row.take());
-        return sol.ok();
+        text += row.take();
+        ok = ok && sol.ok();
+        }
+        emit(text);
+        return ok;
       },
       [&](const SceneParameters& p, const ScenePlan::Built& b) { return invalid_scene_row(columns, p, b); });
   return all_ok ? kExitOk : kExitNotConverged;
@@ -857,63 +912,70 @@ std::string_view section_warning(const ArchState& st) {
 }
 
 const Columns kProfileColumns(
-    {"method", "status", "H_over_V", "error_estimate", "message", "s", "x", "y", "theta", "intrados_x", "intrados_y",
+    {"method", "integrator", "rtol", "status", "H_over_V", "error_estimate", "message", "s", "x", "y", "theta",
+     "intrados_x", "intrados_y",
      "extrados_x", "extrados_y", "Ux", "Uy", "psi", "N", "shear_force", "M", "thrust_eccentricity", "thrust_x",
      "thrust_y", "warning"},
     {"status", "message", "s", "x", "y", "theta", "intrados_x", "intrados_y", "extrados_x", "extrados_y", "Ux", "Uy",
      "psi", "N", "shear_force", "M", "thrust_eccentricity", "thrust_x", "thrust_y", "warning"});
 constexpr int kProfilePiece = 4096;  // stations sampled and written at a time
 
-int run_profile(SceneOptions& so, const CLI::App& cmd, Options o, const ColumnText& ct, int threads,
-                std::ostream& out) {
-  check_stations(o.stations);
-  check_options(o);
+int run_profile(SceneOptions& so, const CLI::App& cmd, SolverSweep sweep, int stations, const ColumnText& ct,
+                int threads, std::ostream& out) {
+  check_stations(stations);
   const ScenePlan plan(so, cmd);
-  check_rows(plan.size(), o.stations);
+  check_rows(plan.size() * sweep.combinations.size(), stations);
   Columns columns = kProfileColumns;
-  columns.select(ct, plan.varying_inputs());
-  const int stations = o.stations;
+  columns.select(ct, plan.varying_inputs(), sweep.varying);
   // The solve verifies the profile at kVerificationStations at most; longer profiles are sampled
   // piece by piece from the verified field below, so that memory does not grow with the stations.
-  o.stations = std::min(stations, kVerificationStations);
+  for (Options& o : sweep.combinations) o.stations = std::min(stations, kVerificationStations);
   // A scene's rows wait in the reorder window while other threads work: beyond one piece of stations
   // per scene, scenes are solved one after another instead, to keep memory bounded.
-  if (stations > kProfilePiece) threads = 1;
+  if (stations * sweep.combinations.size() > static_cast<std::size_t>(kProfilePiece)) threads = 1;
   RowWriter writer(out);
   writer.write(columns.header());
   const bool all_ok = for_each_scene(
       plan, writer, threads,
       [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
-        const Solution sol = solve(scene, o);
-        if (!sol.field) {  // unsolved: one row that says so, no numbers
-          emit(sparse_row(columns, p, scene.curve.get(),
-                          {{"method", to_string(sol.method)}, {"status", to_string(sol.status)}, {"message", sol.message}}));
-          return false;
-        }
-        // The scene's fields are formatted once, then each station's after them.
-        CsvRow row(columns.keep());
-        add_scene_columns(row, p, scene.curve.get());
-        row.add(to_string(sol.method)).add(to_string(sol.status)).add(sol.H_over_V).add(sol.diagnostics.error_estimate);
-        row.add(sol.message);
-        row.mark();
-        for (int first = 0; first < stations; first += kProfilePiece) {
-          const int count = std::min(kProfilePiece, stations - first);
-          const std::vector<ArchState> piece =
-              stations == o.stations ? std::vector<ArchState>(sol.profile.begin() + first, sol.profile.begin() + first + count)
-                                     : sample_stations(sol, stations, first, count);
-          std::string text;
-          for (const ArchState& st : piece) {
-            // The section's two ends, so that a plot shows the thrust line against the masonry.
-            const SectionFaces faces = section_faces(CurvePoint{st.x, st.y, st.theta, 0.0}, scene.thickness);
-            row.add(st.s).add(st.x).add(st.y).add(st.theta);
-            row.add(faces.intrados.x).add(faces.intrados.y).add(faces.extrados.x).add(faces.extrados.y);
-            row.add(st.Ux).add(st.Uy).add(st.psi);
-            row.add(st.N).add(st.V).add(st.M).add(st.e).add(st.thrust_x).add(st.thrust_y).add(section_warning(st));
-            text += row.take_to_mark();
+        bool ok = true;
+        for (const Options& o : sweep.combinations) {
+          const Solution sol = solve(scene, o);
+          const std::string integrator = sol.method != Method::closed_form ? to_string(o.integrator) : "";
+          if (!sol.field) {  // unsolved: one row that says so, no numbers
+            emit(sparse_row(columns, p, scene.curve.get(),
+                            {{"method", to_string(sol.method)}, {"integrator", integrator},
+                             {"rtol", fmt::format("{}", o.rtol)}, {"status", to_string(sol.status)},
+                             {"message", sol.message}}));
+            ok = false;
+            continue;
           }
-          emit(text);
+          ok = ok && sol.ok();
+          // The scene's fields are formatted once, then each station's after them.
+          CsvRow row(columns.keep());
+          add_scene_columns(row, p, scene.curve.get());
+          row.add(to_string(sol.method)).add(integrator).add(o.rtol).add(to_string(sol.status)).add(sol.H_over_V);
+          row.add(sol.diagnostics.error_estimate).add(sol.message);
+          row.mark();
+          for (int first = 0; first < stations; first += kProfilePiece) {
+            const int count = std::min(kProfilePiece, stations - first);
+            const std::vector<ArchState> piece =
+                stations == o.stations ? std::vector<ArchState>(sol.profile.begin() + first, sol.profile.begin() + first + count)
+                                       : sample_stations(sol, stations, first, count);
+            std::string text;
+            for (const ArchState& st : piece) {
+              // The section's two ends, so that a plot shows the thrust line against the masonry.
+              const SectionFaces faces = section_faces(CurvePoint{st.x, st.y, st.theta, 0.0}, scene.thickness);
+              row.add(st.s).add(st.x).add(st.y).add(st.theta);
+              row.add(faces.intrados.x).add(faces.intrados.y).add(faces.extrados.x).add(faces.extrados.y);
+              row.add(st.Ux).add(st.Uy).add(st.psi);
+              row.add(st.N).add(st.V).add(st.M).add(st.e).add(st.thrust_x).add(st.thrust_y).add(section_warning(st));
+              text += row.take_to_mark();
+            }
+            emit(text);
+          }
         }
-        return sol.ok();
+        return ok;
       },
       [&](const SceneParameters& p, const ScenePlan::Built& b) { return invalid_scene_row(columns, p, b); });
   return all_ok ? kExitOk : kExitNotConverged;
@@ -960,9 +1022,8 @@ const Columns kCheckColumns(
 // Every applicable method on every scene, against the reference. A row is within tolerance when the
 // method says success and its difference from the reference is within rtol plus the reference's own
 // error (a flagged reference is not the method's failure: its status and error are printed).
-int run_check(SceneOptions& so, const CLI::App& cmd, const Options& base, const ColumnText& ct, int threads,
+int run_check(SceneOptions& so, const CLI::App& cmd, const SolverSweep& sweep, const ColumnText& ct, int threads,
               std::ostream& out) {
-  check_options(base);
   const ScenePlan plan(so, cmd);
   Columns columns = kCheckColumns;
   columns.select(ct, plan.varying_inputs());
@@ -972,13 +1033,14 @@ int run_check(SceneOptions& so, const CLI::App& cmd, const Options& base, const 
       plan, writer, threads,
       [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
         CsvRow row(columns.keep());
+        bool ok = true;
+        std::string text;
+        for (const Options& base : sweep.combinations) {
         const Solution reference = reference_solution(scene, base);
         const std::string reference_method = reference.method == Method::closed_form
                                                  ? "closed-form"
                                                  : fmt::format("multiple-shooting rtol {}", reference_rtol(base));
         const double ref_error = reference_error(reference);
-        bool ok = true;
-        std::string text;
         for (Method m : {Method::closed_form, Method::shooting, Method::multiple_shooting}) {
           if (m == Method::closed_form && scene.curve->arcs().empty()) continue;  // not applicable
           Options o = base;
@@ -996,6 +1058,7 @@ int run_check(SceneOptions& so, const CLI::App& cmd, const Options& base, const 
           else row.add(std::string_view{});
           row.add(sol.message);
           text += row.take();
+        }
         }
         emit(text);
         return ok;
@@ -1609,11 +1672,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     return kExitUsage;
   }
   try {
-    apply_solver_text(thrust_options, thrust_text);
-    apply_solver_text(profile_options, profile_text);
-    apply_solver_text(check_options_, check_text);
     apply_solver_text(bench_options, bench_text);
-    apply_solver_text(draw_options, draw_text);
     if (threads < 1 || threads > 256) throw UsageError(fmt::format("--threads: must lie in [1, 256], got {}", threads));
     // --columns help: the command's columns with units and meanings, nothing solved.
     const std::pair<CLI::App*, std::pair<const ColumnText*, const Columns*>> helps[] = {
@@ -1634,12 +1693,20 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
         writer.flush();
         return kExitOk;
       }
-    if (thrust->parsed()) return run_thrust(thrust_scene, *thrust, thrust_options, thrust_columns, threads, out);
+    if (thrust->parsed())
+      return run_thrust(thrust_scene, *thrust, solver_sweep(thrust_options, thrust_text), thrust_columns, threads, out);
     if (profile->parsed())
-      return run_profile(profile_scene, *profile, profile_options, profile_columns, threads, out);
-    if (check->parsed()) return run_check(check_scene, *check, check_options_, check_columns, threads, out);
+      return run_profile(profile_scene, *profile, solver_sweep(profile_options, profile_text), profile_options.stations,
+                         profile_columns, threads, out);
+    if (check->parsed())
+      return run_check(check_scene, *check, solver_sweep(check_options_, check_text, false), check_columns, threads, out);
     if (curve->parsed()) return run_curve(curve_scene, *curve, curve_stations, curve_columns, threads, out);
-    if (draw->parsed()) return run_draw(draw_scene, *draw, draw_options, draw_targets, draw_columns, out);
+    if (draw->parsed()) {
+      const SolverSweep sweep = solver_sweep(draw_options, draw_text);
+      if (sweep.combinations.size() != 1)
+        throw UsageError("--rtol: draw takes one method, integrator and rtol (a picture per scene)");
+      return run_draw(draw_scene, *draw, sweep.combinations.front(), draw_targets, draw_columns, out);
+    }
     if (limit->parsed()) return run_limit(limit_scene, *limit, limit_text, limit_columns_text, out);
     if (bench->parsed()) return run_bench(bench_scene, *bench, bench_options, bench_methods, bench_integrators, bench_rtols,
                                             repeats, bench_columns, out);

@@ -200,3 +200,27 @@ TEST_CASE("help that teaches: a misspelt option or subcommand gets a suggestion 
   CHECK(from_stdin.status == 0);
   CHECK(from_stdin.out == from_file.out);
 }
+
+TEST_CASE("csv: --method, --integrator and --rtol take lists (and --rtol ranges) like every scene option") {
+  const Run r = run_command({"thrust", "--curve", "catenary", "--eccentricity", "0", "--rtol", "1e-6,1e-8",
+                             "--integrator", "adams,bdf"});
+  CHECK(r.status == 2);  // --eccentricity does not apply to the catenary
+  const Run lists = run_command({"thrust", "--curve", "catenary", "--rise-ratio", "0.4,0.5", "--rtol", "1e-6,1e-8",
+                                 "--integrator", "adams,bdf"});
+  REQUIRE(lists.status == 0);
+  REQUIRE(lines(lists.out).size() == 1 + 2 * 4);
+  // The solver's options vary fastest, after the scene's; they are printed because they vary.
+  CHECK(column(lists.out, "rise_ratio", 4) == "0.4");
+  CHECK(column(lists.out, "integrator", 3) == "bdf");
+  CHECK(column(lists.out, "rtol", 2) == "1e-08");
+  CHECK(column(lists.out, "scene", 5) == "2");
+  for (std::size_t row = 1; row <= 8; ++row) CHECK(column(lists.out, "status", row) == "success");
+  const Run profile = run_command({"profile", "--rtol", "1e-6:1e-4:3", "--stations", "5", "--method", "shooting"});
+  REQUIRE(profile.status == 0);
+  CHECK(lines(profile.out).size() == 1 + 3 * 5);
+  CHECK(column(profile.out, "rtol", 6) == "5.05e-05");
+  check_refused({"thrust", "--rtol", "1e-6,0"});
+  check_refused({"thrust", "--rtol", "1e-6,"});
+  check_refused({"thrust", "--method", "shooting,"});
+  check_refused({"draw", "--rtol", "1e-6,1e-8", "--output", "x.svg"});
+}
