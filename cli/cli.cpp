@@ -573,18 +573,15 @@ std::string number_problem(const std::string& text, bool count) {
 const CLI::Validator kFiniteNumber([](std::string& text) { return number_problem(text, false); }, "NUMBER");
 const CLI::Validator kCount([](std::string& text) { return number_problem(text, true); }, "COUNT");
 
-// bench binds --method, --integrator and --rtol itself, as lists.
-void add_solver_options(CLI::App& cmd, Options& o, SolverText& text, bool with_method = true,
-                        bool with_integrator = true, bool with_rtol = true) {
+// check chooses its methods itself (every one); bench also answers to the plural spellings it had.
+void add_solver_options(CLI::App& cmd, Options& o, SolverText& text, bool with_method = true, bool plurals = false) {
   if (with_method)
-    cmd.add_option("--method", text.method, "closed-form (circular arcs only), shooting, multiple-shooting or auto (the closed form where it "
+    cmd.add_option(plurals ? "--method,--methods" : "--method", text.method, "closed-form (circular arcs only), shooting, multiple-shooting or auto (the closed form where it "
                    "applies, else shooting with 1, 2, 4 .. 64 segments until the error estimate meets --rtol); a "
                    "list a,b gives a row for each")->capture_default_str();
-  if (with_integrator)
-    cmd.add_option("--integrator", text.integrator, "CVODE's method: adams or bdf (the closed form uses none); a list "
+  cmd.add_option(plurals ? "--integrator,--integrators" : "--integrator", text.integrator, "CVODE's method: adams or bdf (the closed form uses none); a list "
                    "a,b gives a row for each")->capture_default_str();
-  if (with_rtol)
-    cmd.add_option("--rtol", text.rtol,
+  cmd.add_option(plurals ? "--rtol,--rtols" : "--rtol", text.rtol,
                  "relative error asked of every printed number; must lie in [1e-14, 0.1]; status success "
                  "guarantees it. CVODE itself runs at rtol/10 (adams) or rtol/1000 (bdf), and a verifying solve "
                  "at rtol/16. A value, a list a,b,c or a range start:stop:count: a row for each")
@@ -1290,32 +1287,18 @@ const Columns kBenchColumns(
      "error_profile", "error_estimate", "reference_error", "median_seconds", "steps", "rhs_evaluations",
      "condition_estimate", "message"});
 
-int run_bench(SceneOptions& so, const CLI::App& cmd, const Options& base, const std::string& methods_text,
-              const std::string& integrators_text, const std::string& rtols_text, int repeats, const ColumnText& ct,
+int run_bench(SceneOptions& so, const CLI::App& cmd, const SolverSweep& sweep, int repeats, const ColumnText& ct,
               std::ostream& out) {
-  check_options(base);
   if (repeats < 1 || repeats > 100000) throw UsageError(fmt::format("--repeats: must lie in [1, 100000], got {}", repeats));
-  auto split = [](const std::string& text) {
-    std::vector<std::string> names;
-    for (std::size_t pos = 0; pos <= text.size();) {
-      const std::size_t comma = std::min(text.find(',', pos), text.size());
-      names.push_back(text.substr(pos, comma - pos));
-      pos = comma + 1;
-    }
-    return names;
-  };
-  std::vector<Method> methods;
-  for (const std::string& name : split(methods_text)) methods.push_back(lookup(kMethods, name, "--method"));
-  std::vector<Integrator> integrators;
-  for (const std::string& name : split(integrators_text))
-    integrators.push_back(lookup(kIntegrators, name, "--integrator"));
-  const std::vector<double> rtols = parse_values(rtols_text, "--rtol");
-  for (double r : rtols)
-    if (!(r >= 1e-14 && r <= 0.1)) throw UsageError(fmt::format("--rtol: must lie in [1e-14, 0.1], got {}", r));
+  const Options& first = sweep.combinations.front();
   const ScenePlan plan(so, cmd);
-  if (plan.size() * methods.size() * integrators.size() * rtols.size() > kMaxValues)
-    throw UsageError(fmt::format("--rtol: {} scenes x {} methods x {} integrators x {} tolerances exceed {} rows",
-                                 plan.size(), methods.size(), integrators.size(), rtols.size(), kMaxValues));
+  if (plan.size() * sweep.combinations.size() > kMaxValues)
+    throw UsageError(fmt::format("--rtol: {} scenes x {} solver combinations exceed {} rows", plan.size(),
+                                 sweep.combinations.size(), kMaxValues));
+  // The reference is tighter than the tightest rtol benchmarked.
+  Options ref_options = first;
+  for (const Options& o : sweep.combinations) ref_options.rtol = std::min(ref_options.rtol, o.rtol);
+  ref_options.stations = kBenchProfileStations;
   Columns columns = kBenchColumns;
   columns.select(ct, plan.varying_inputs());
   RowWriter writer(out);
@@ -1324,22 +1307,18 @@ int run_bench(SceneOptions& so, const CLI::App& cmd, const Options& base, const 
       plan, writer, 1,  // one thread: the timings are the point
       [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
         CsvRow row(columns.keep());
-        Options ref_options = base;
-        ref_options.stations = kBenchProfileStations;
         const Solution reference = reference_solution(scene, ref_options);
         const bool circular = !scene.curve->arcs().empty();
-        for (Method m : methods) {
+        for (const Options& o : sweep.combinations) {
+          const Method m = o.method;
+          const double rtol = o.rtol;
           if (m == Method::closed_form && !circular) continue;  // not applicable
-          // The closed form has neither integrator nor tolerance; auto on a circular arc is the closed form.
+          // The closed form has neither integrator nor tolerance; auto on a circular arc is the closed form:
+          // one row, not one per integrator and rtol.
           const bool exact = m == Method::closed_form || (m == Method::automatic && circular);
-          for (Integrator integrator : integrators) {
-            if (exact && integrator != integrators.front()) continue;
-            for (double rtol : rtols) {
-              if (exact && rtol != rtols.front()) continue;
-              Options o = base;
-              o.method = m;
-              o.integrator = integrator;
-              o.rtol = rtol;
+          if (exact && (o.integrator != first.integrator || o.rtol != first.rtol)) continue;
+          {
+            {
               std::vector<double> seconds;
               Solution sol;
               for (int r = 0; r < repeats; ++r) {
@@ -1574,16 +1553,12 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
 
   CLI::App* bench = app.add_subcommand("bench", "median time per solve and true error, per method and rtol");
   add_scene_options(*bench, bench_scene);
-  add_solver_options(*bench, bench_options, bench_text, false, false, false);
-  std::string bench_methods = "closed-form,shooting,multiple-shooting", bench_rtols = "1e-6,1e-8,1e-10";
-  std::string bench_integrators = "adams";
+  // The same options as every other command's, with a benchmark's defaults (and the plural spellings
+  // that older scripts used).
+  bench_text.method = "closed-form,shooting,multiple-shooting";
+  bench_text.rtol = "1e-6,1e-8,1e-10";
+  add_solver_options(*bench, bench_options, bench_text, true, true);
   int repeats = 21;
-  // The same names as every other command's; lists here (the plural spellings are kept for old scripts).
-  bench->add_option("--method,--methods", bench_methods, "methods, comma-separated: closed-form, shooting, multiple-shooting, auto")->capture_default_str();
-  bench->add_option("--integrator,--integrators", bench_integrators, "CVODE's methods, comma-separated: adams, bdf")
-      ->capture_default_str();
-  bench->add_option("--rtol,--rtols", bench_rtols, "tolerances: value, list or range, each in [1e-14, 0.1]")
-      ->capture_default_str();
   bench->add_option("--repeats", repeats, "solves per row, the median time is printed; must lie in [1, 100000]")->check(kCount)->capture_default_str();
 
   SceneOptions draw_scene;
@@ -1672,7 +1647,6 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     return kExitUsage;
   }
   try {
-    apply_solver_text(bench_options, bench_text);
     if (threads < 1 || threads > 256) throw UsageError(fmt::format("--threads: must lie in [1, 256], got {}", threads));
     // --columns help: the command's columns with units and meanings, nothing solved.
     const std::pair<CLI::App*, std::pair<const ColumnText*, const Columns*>> helps[] = {
@@ -1708,8 +1682,8 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
       return run_draw(draw_scene, *draw, sweep.combinations.front(), draw_targets, draw_columns, out);
     }
     if (limit->parsed()) return run_limit(limit_scene, *limit, limit_text, limit_columns_text, out);
-    if (bench->parsed()) return run_bench(bench_scene, *bench, bench_options, bench_methods, bench_integrators, bench_rtols,
-                                            repeats, bench_columns, out);
+    if (bench->parsed())
+      return run_bench(bench_scene, *bench, solver_sweep(bench_options, bench_text), repeats, bench_columns, out);
   } catch (const UsageError& e) {
     err << "ogive: " << e.what() << "\n";
     return kExitUsage;
