@@ -10,17 +10,13 @@
 
 #include <fmt/format.h>
 
+#include "gauss_legendre.hpp"
+
 namespace ogive {
 namespace {
 
 // sin(z)/z, accurate near 0 where the quotient would cancel.
 double sinc(double z) { return std::abs(z) < 1e-4 ? 1.0 - z * z / 6.0 : std::sin(z) / z; }
-
-// Gauss-Legendre nodes and weights on [-1, 1], 8 points.
-constexpr std::array<double, 4> kGaussNodes = {0.1834346424956498, 0.5255324099163290,
-                                               0.7966664774136267, 0.9602898564975363};
-constexpr std::array<double, 4> kGaussWeights = {0.3626837833783620, 0.3137066458778873,
-                                                 0.2223810344533745, 0.1012285362903763};
 
 }  // namespace
 
@@ -40,6 +36,19 @@ CurvePoint Curve::at_whole_arch(double s) const {
   return s <= S ? at(s) : mirror(at(2.0 * S - s), span());
 }
 
+double Curve::max_curvature() const {
+  constexpr int kSamples = 512;
+  double largest = 0;
+  for (int i = 0; i <= kSamples; ++i) largest = std::max(largest, std::abs(at(half_length() * i / kSamples).kappa));
+  return largest;
+}
+
+double PiecewiseCircularCurve::max_curvature() const {
+  double largest = 0;
+  for (const CircularArc& arc : arcs_) largest = std::max(largest, std::abs(arc.kappa));
+  return largest;
+}
+
 double Curve::first_moment_x() const {
   // Composite 8-point Gauss-Legendre between breakpoints: the integrand is smooth on each piece.
   std::vector<double> knots{0.0};
@@ -51,10 +60,7 @@ double Curve::first_moment_x() const {
     const double h = (knots[k + 1] - knots[k]) / kPanelsPerPiece;
     for (int p = 0; p < kPanelsPerPiece; ++p) {
       const double mid = knots[k] + (p + 0.5) * h;
-      for (std::size_t i = 0; i < kGaussNodes.size(); ++i) {
-        const double dx = 0.5 * h * kGaussNodes[i];
-        sum += 0.5 * h * kGaussWeights[i] * (at(mid - dx).x + at(mid + dx).x);
-      }
+      sum += gauss_legendre_integral<8>([&](double s) { return at(s).x; }, mid - 0.5 * h, mid + 0.5 * h);
     }
   }
   return sum;

@@ -10,6 +10,8 @@
 
 #include <fmt/format.h>
 
+#include "gauss_legendre.hpp"
+
 namespace ogive {
 namespace {
 
@@ -39,62 +41,8 @@ void check_smooth_rise(double rise_ratio, const char* family) {
 
 double radians(double degrees) { return degrees * (kPi / 180.0); }
 
-// ---------------------------------------------------------------------------------------------------
-// Gauss-Legendre rule on [-1, 1], computed once to full precision by Newton on the Legendre polynomial.
-
+// The arc length's rule: 16-point Gauss-Legendre per panel.
 constexpr int kGaussOrder = 16;
-
-struct GaussRule {
-  std::array<double, kGaussOrder> node{}, weight{};
-};
-
-const GaussRule& gauss_rule() {
-  static const GaussRule rule = [] {
-    GaussRule r;
-    const int n = kGaussOrder;
-    for (int i = 0; i < n / 2; ++i) {
-      double x = std::cos(kPi * (i + 0.75) / (n + 0.5));
-      double dp = 0;
-      for (int it = 0; it < 100; ++it) {
-        double p0 = 1, p1 = x;  // P_0, P_1
-        for (int k = 2; k <= n; ++k) {
-          const double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
-          p0 = p1;
-          p1 = p2;
-        }
-        dp = n * (x * p1 - p0) / (x * x - 1);  // P_n'(x)
-        const double dx = p1 / dp;
-        x -= dx;
-        if (std::abs(dx) <= 1e-17) break;
-      }
-      // Recompute P_n' at the converged node for the weight.
-      double p0 = 1, p1 = x;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (x * p1 - p0) / (x * x - 1);
-      const double w = 2 / ((1 - x * x) * dp * dp);
-      r.node[i] = -x;
-      r.weight[i] = w;
-      r.node[n - 1 - i] = x;
-      r.weight[n - 1 - i] = w;
-    }
-    return r;
-  }();
-  return rule;
-}
-
-// Integral of f over [a, b] by the 16-point rule.
-template <class F>
-double gauss(F&& f, double a, double b) {
-  const GaussRule& g = gauss_rule();
-  const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
-  double sum = 0;
-  for (int i = 0; i < kGaussOrder; ++i) sum += g.weight[i] * f(mid + half * g.node[i]);
-  return half * sum;
-}
 
 // ---------------------------------------------------------------------------------------------------
 // Piecewise-circular constructions.
@@ -198,6 +146,9 @@ class ParabolicCurve final : public Curve {
     return {half_ - u, 0.5 * c_ * (half_ - u) * (half_ + u), std::atan(cu), -c_ / (q * std::sqrt(q))};
   }
 
+  // |kappa| = c / (1 + c^2 u^2)^{3/2} is largest at the crown.
+  double max_curvature() const override { return c_; }
+
   // Integral of x ds = U S - ((1 + c^2 U^2)^{3/2} - 1) / (3 c^2), the bracket by expm1/log1p.
   double first_moment_x() const override {
     const double w = c_ * half_ * c_ * half_;
@@ -284,6 +235,8 @@ class CatenaryCurve final : public Curve {
 
   // Integral of x ds = int_0^U (U - u) cosh(u / a) du = a^2 (cosh(U / a) - 1) = a h.
   double first_moment_x() const override { return a_ * rise_; }
+  // |kappa| = 1 / (a (1 + (sigma / a)^2)) is largest at the crown.
+  double max_curvature() const override { return 1.0 / a_; }
 
  private:
   double span_, half_, rise_, a_, length_;
@@ -300,7 +253,7 @@ double ParametricCurve::speed(double t, std::size_t piece) const {
 }
 
 double ParametricCurve::integral_of_speed(double t0, double t1, std::size_t piece) const {
-  return gauss([&](double t) { return speed(t, piece); }, t0, t1);
+  return gauss_legendre_integral<kGaussOrder>([&](double t) { return speed(t, piece); }, t0, t1);
 }
 
 void ParametricCurve::build_arc_length(const std::vector<double>& knots, int initial_panels) {
@@ -312,6 +265,11 @@ void ParametricCurve::build_arc_length(const std::vector<double>& knots, int ini
   s_.assign(1, 0.0);
   piece_.clear();
   first_moment_ = 0;
+  max_curvature_ = 0;
+  const auto curvature = [](const Jet& j) {
+    const double v2 = j.dx * j.dx + j.dy * j.dy;
+    return std::abs(j.dx * j.ddy - j.dy * j.ddx) / (v2 * std::sqrt(v2));
+  };
   struct Panel {
     double a, b, integral;
     int depth;
@@ -349,12 +307,14 @@ void ParametricCurve::build_arc_length(const std::vector<double>& knots, int ini
         t_.push_back(panel.b);
         s_.push_back(s_.back() + panel.integral);
         piece_.push_back(k);
-        first_moment_ += gauss(
+        first_moment_ += gauss_legendre_integral<kGaussOrder>(
             [&](double t) {
               const Jet j = jet(t, k);
+              max_curvature_ = std::max(max_curvature_, curvature(j));
               return j.x * std::sqrt(j.dx * j.dx + j.dy * j.dy);
             },
             panel.a, panel.b);
+        max_curvature_ = std::max({max_curvature_, curvature(jet(panel.a, k)), curvature(jet(panel.b, k))});
       } else {
         stack.push_back({mid, panel.b, right, panel.depth + 1});
         stack.push_back({panel.a, mid, left, panel.depth + 1});

@@ -50,13 +50,9 @@ void Scene::validate() const {
       refuse("support_displacement", "must be finite in units of w L^4 / EI", support_displacement);
   }
   // A section deeper than twice the radius of curvature would overlap itself on the intrados.
-  double max_curvature = 0;
-  for (const CircularArc& arc : curve->arcs()) max_curvature = std::max(max_curvature, std::abs(arc.kappa));
-  if (curve->arcs().empty()) {
-    constexpr int kSamples = 512;
-    for (int i = 0; i <= kSamples; ++i)
-      max_curvature = std::max(max_curvature, std::abs(curve->at(curve->half_length() * i / kSamples).kappa));
-  }
+  // The curve knows its largest curvature (exactly or cached at construction): validating a scene does
+  // not evaluate the curve again (it used to sample 513 points, 20-67 % of a raw CVODE solve).
+  const double max_curvature = curve->max_curvature();
   if (thickness * max_curvature >= 2.0)
     throw std::invalid_argument(fmt::format(
         "thickness: must be less than twice the smallest radius of curvature ({} m), got {} m",

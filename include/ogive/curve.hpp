@@ -56,6 +56,9 @@ class Curve {
   CurvePoint at_whole_arch(double s) const;
   // Integral of x(s) ds over the half arch (m^2): the weight's moment about the springing per unit w.
   virtual double first_moment_x() const;
+  // The largest |kappa| over the half arch (1/m). The families know it exactly or cached it at
+  // construction; this default samples 513 points of at(s) on every call.
+  virtual double max_curvature() const;
 };
 
 // A curve made of circular arcs that join with a continuous position (tangent jumps are allowed only at
@@ -70,6 +73,7 @@ class PiecewiseCircularCurve final : public Curve {
   std::vector<double> breakpoints() const override;
   std::span<const CircularArc> arcs() const override { return arcs_; }
   double first_moment_x() const override;
+  double max_curvature() const override;
 
  private:
   std::string family_;

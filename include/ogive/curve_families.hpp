@@ -104,6 +104,8 @@ class ParametricCurve : public Curve {
   double half_length() const override { return s_.back(); }
   CurvePoint at(double s) const override;
   double first_moment_x() const override { return first_moment_; }
+  // The largest |kappa| at the arc-length panels' ends and Gauss nodes, found while tabulating.
+  double max_curvature() const override { return max_curvature_; }
   // The parameter t at arc length s (exact table values at the panel ends, so at(0) and at(S) are the
   // curve's end points exactly).
   double parameter_at(double s) const;
@@ -135,6 +137,7 @@ class ParametricCurve : public Curve {
   std::vector<double> s_;           // arc length at the panel ends
   std::vector<std::size_t> piece_;  // the knot interval of each panel, size P
   double first_moment_ = 0;
+  double max_curvature_ = 0;
 };
 
 // ---------------------------------------------------------------------------------------------------
