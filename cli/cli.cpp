@@ -242,6 +242,7 @@ void add_scene_columns(CsvRow& row, const SceneParameters& p, const Scene& scene
 const std::map<std::string, Method> kMethods = {{"closed-form", Method::closed_form},
                                                 {"shooting", Method::shooting},
                                                 {"multiple-shooting", Method::multiple_shooting},
+                                                {"quadrature", Method::quadrature},
                                                 {"auto", Method::automatic}};
 const std::map<std::string, Integrator> kIntegrators = {{"adams", Integrator::adams}, {"bdf", Integrator::bdf}};
 
@@ -275,7 +276,7 @@ const CLI::Validator kCount([](std::string& text) { return number_problem(text, 
 void add_solver_options(CLI::App& cmd, Options& o, SolverText& text, bool with_method = true,
                         bool with_integrator = true) {
   if (with_method)
-    cmd.add_option("--method", text.method, "closed-form, shooting, multiple-shooting or auto")->capture_default_str();
+    cmd.add_option("--method", text.method, "closed-form, quadrature, shooting, multiple-shooting or auto")->capture_default_str();
   if (with_integrator)
     cmd.add_option("--integrator", text.integrator, "CVODE's method: adams or bdf")->capture_default_str();
   cmd.add_option("--rtol", o.rtol, "accuracy asked of the result, 1e-14 .. 0.1")->check(kFiniteNumber)->capture_default_str();
@@ -315,7 +316,7 @@ const char* kSolutionHeader =
     "error_estimate,boundary_residual,equilibrium_residual";
 
 void add_solution_columns(CsvRow& row, const Solution& sol, const Options& o) {
-  const bool numeric = sol.method != Method::closed_form;
+  const bool numeric = sol.method != Method::closed_form && sol.method != Method::quadrature;  // no integrator
   row.add(to_string(sol.method)).add(numeric ? to_string(o.integrator) : "none").add(o.rtol);
   row.add(to_string(sol.status)).add(sol.H).add(sol.V).add(sol.H_over_V);
   const Diagnostics& d = sol.diagnostics;

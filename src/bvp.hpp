@@ -26,4 +26,8 @@ void judge_conditioning(Solution& sol, double rtol);
 void finish_solution(Solution& sol, const BvpSolution& bvp, std::shared_ptr<const StateField> field,
                      double rtol);
 
+// The larger of the relative differences of H and of the profiles (when both carry one): the error
+// estimate of a solution a against a tighter one b. NaN when either has no field.
+double solution_difference(const Solution& a, const Solution& b);
+
 }  // namespace ogive

@@ -9,6 +9,7 @@
 
 #include "bvp.hpp"
 #include "ogive/closed_form.hpp"
+#include "ogive/quadrature.hpp"
 #include "ogive/shooting.hpp"
 
 namespace ogive {
@@ -19,6 +20,7 @@ const char* to_string(Method m) {
     case Method::shooting: return "shooting";
     case Method::multiple_shooting: return "multiple-shooting";
     case Method::automatic: return "auto";
+    case Method::quadrature: return "quadrature";
   }
   return "?";
 }
@@ -139,14 +141,6 @@ void add_work(Diagnostics& to, const Diagnostics& from) {
   to.jacobian_evaluations += from.jacobian_evaluations;
 }
 
-// The larger of the relative differences of H and of the profiles (when both carry one).
-double solution_difference(const Solution& a, const Solution& b) {
-  if (!a.field || !b.field) return std::numeric_limits<double>::quiet_NaN();
-  const double H = std::abs(a.H - b.H) / std::abs(b.H);
-  if (b.profile.empty()) return H;
-  return std::max(H, profile_difference(a.profile, b.profile, b.model->scene().thickness));
-}
-
 Solution solve_once(const std::shared_ptr<const ArchModel>& model, const Options& options, Method method,
                     int segments) {
   Solution sol = method == Method::closed_form ? solve_closed_form(model, options)
@@ -181,6 +175,13 @@ Solution solve_verified(const std::shared_ptr<const ArchModel>& model, const Opt
 }
 
 }  // namespace
+
+double solution_difference(const Solution& a, const Solution& b) {
+  if (!a.field || !b.field) return std::numeric_limits<double>::quiet_NaN();
+  const double H = std::abs(a.H - b.H) / std::abs(b.H);
+  if (b.profile.empty()) return H;
+  return std::max(H, profile_difference(a.profile, b.profile, b.model->scene().thickness));
+}
 
 double profile_difference(const std::vector<ArchState>& profile, const std::vector<ArchState>& reference,
                           double thickness) {
@@ -222,10 +223,19 @@ Solution solve(const Scene& scene, const Options& options) {
       if (options.verify) return solve_verified(model, options, options.method, segments);
       return solve_once(model, options, options.method, segments);
     }
+    case Method::quadrature: return solve_quadrature(model, options);
     case Method::automatic: break;
   }
   // The smallest model that meets rtol. The closed form is exact to round-off where it applies.
   if (!scene.curve->arcs().empty()) return solve_once(model, options, Method::closed_form, 0);
+  // On smooth curves (and between a survey's points) the quadrature method, as fast as the closed form,
+  // with its own error estimate; where that does not meet rtol, CVODE shooting below. (Conditioning is
+  // the boundary-value system's, the same for every method: CVODE would not cure it.)
+  {
+    Solution quadrature = solve_quadrature(model, options);
+    if (quadrature.status != Status::tolerance_not_met && quadrature.status != Status::not_applicable)
+      return quadrature;
+  }
   // Otherwise shooting with 1, 2, 4, ... segments (breakpoints add more) until the error estimate meets
   // rtol: more segments shorten the spans over which integration errors grow and cancel. A singular or
   // ill-conditioned system is not cured by more segments (the condition grows with them): stop there.

@@ -21,8 +21,11 @@ enum class Method {
   closed_form,        // matrix exponential arc by arc; piecewise-circular curves only
   shooting,           // CVODE, one shooting segment over the half arch
   multiple_shooting,  // CVODE, Options::segments segments joined by continuity
-  automatic,          // the smallest model that meets rtol: the closed form where it applies, else
-                      // shooting with 1, 2, 4, ... 64 segments until the error estimate meets rtol
+  automatic,          // the smallest model that meets rtol: the closed form where it applies, else the
+                      // quadrature method where its estimate meets rtol, else shooting with 1, 2, 4, ...
+                      // 64 segments until the error estimate meets rtol
+  quadrature,         // the force method: nested Chebyshev integrals per panel, its own error estimate
+                      // (include/ogive/quadrature.hpp); any curve
 };
 enum class Integrator { adams, bdf };
 
@@ -64,7 +67,7 @@ struct Options {
 // Plain numbers describing how the solution was found.
 struct Diagnostics {
   std::int64_t steps = 0;                // CVODE steps over all spans (0 for the closed form)
-  std::int64_t rhs_evaluations = 0;      // right-hand-side evaluations (CVODE)
+  std::int64_t rhs_evaluations = 0;      // right-hand-side evaluations (CVODE); angle evaluations (quadrature)
   std::int64_t error_test_failures = 0;  // CVODE local error test failures
   std::int64_t jacobian_evaluations = 0; // CVODE Jacobian evaluations (BDF)
   int segments = 0;                      // shooting segments used (arcs for the closed form)
@@ -74,6 +77,7 @@ struct Diagnostics {
   // A-posteriori relative error of the printed numbers (CVODE methods with Options::verify, and always
   // under Method::automatic): the difference between a solve at rtol and one at rtol / 16, of H
   // relative to |H| and, with a profile, profile_difference. The solution returned is the tighter one.
+  // The quadrature method's: the same difference between its last two degrees (quadrature.hpp).
   // NaN when not estimated (the closed form needs none).
   double error_estimate = std::numeric_limits<double>::quiet_NaN();
 };
