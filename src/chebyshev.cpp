@@ -50,6 +50,7 @@ ChebyshevRule build_rule(int N) {
   }
   for (int k = 1; k <= N + 1; ++k) B.row(0) -= (k % 2 == 0 ? 1.0L : -1.0L) * B.row(k);
   r.integration = (T * B * C).cast<double>();
+  r.to_coefficients = C.cast<double>();
   return r;
 }
 
@@ -67,6 +68,16 @@ const ChebyshevRule& chebyshev_rule(int degree) {
   static std::unique_ptr<const ChebyshevRule> rules[kLevels];
   std::call_once(once[level], [&] { rules[level] = std::make_unique<const ChebyshevRule>(build_rule(degree)); });
   return *rules[level];
+}
+
+double chebyshev_series(const double* a, int degree, double x) {
+  double b1 = 0, b2 = 0;
+  for (int k = degree; k >= 1; --k) {
+    const double b0 = a[k] + 2 * x * b1 - b2;
+    b2 = b1;
+    b1 = b0;
+  }
+  return a[0] + x * b1 - b2;
 }
 
 Eigen::VectorXd chebyshev_interpolate(const ChebyshevRule& rule, const Eigen::Ref<const Eigen::MatrixXd>& values,

@@ -18,6 +18,8 @@ struct ChebyshevRule {
   // for polynomials of degree N, spectrally accurate for analytic f.
   Eigen::MatrixXd integration;
   Eigen::VectorXd barycentric_weight;  // (-1)^i, halved at both ends
+  // (to_coefficients * f)_k = a_k: the interpolant is sum_k a_k T_k(x) (discrete cosine transform).
+  Eigen::MatrixXd to_coefficients;
 };
 
 // The degrees the quadrature method uses: 8, 16, ..., kMaxChebyshevDegree.
@@ -30,6 +32,9 @@ const ChebyshevRule& chebyshev_rule(int degree);
 
 // Values at x in [-1, 1] of the polynomials taking the rows of `values` (rows x (degree + 1)) at the
 // rule's nodes: the barycentric formula (stable; exact at the nodes).
+// sum_k a[k] T_k(x), k = 0 .. degree, by Clenshaw's recurrence (no division: the fast way to evaluate one
+// tabulated function many times).
+double chebyshev_series(const double* a, int degree, double x);
 Eigen::VectorXd chebyshev_interpolate(const ChebyshevRule& rule, const Eigen::Ref<const Eigen::MatrixXd>& values,
                                       double x);
 

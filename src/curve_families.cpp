@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "chebyshev.hpp"
 #include "gauss_legendre.hpp"
 
 namespace ogive {
@@ -321,6 +322,24 @@ void ParametricCurve::build_arc_length(const std::vector<double>& knots, int ini
       }
     }
   }
+  build_arc_table();
+}
+
+void ParametricCurve::build_arc_table() {
+  const ChebyshevRule& rule = chebyshev_rule(kArcTableDegree);
+  const std::size_t panels = piece_.size(), n = kArcTableDegree + 1;
+  arc_table_.assign(panels * n, 0.0);
+  arc_table_ok_.assign(panels, false);
+  Eigen::VectorXd speeds(n);
+  for (std::size_t k = 0; k < panels; ++k) {
+    const double mid = 0.5 * (t_[k] + t_[k + 1]), h = 0.5 * (t_[k + 1] - t_[k]);
+    for (std::size_t i = 0; i < n; ++i) speeds[i] = speed(mid + h * rule.node[i], piece_[k]);
+    const Eigen::VectorXd s = h * (rule.integration * speeds);
+    const double length = s_[k + 1] - s_[k];
+    arc_table_ok_[k] = std::abs(s[n - 1] - length) <= 1e-14 * length;
+    const Eigen::VectorXd a = rule.to_coefficients * s;
+    std::copy(a.data(), a.data() + n, arc_table_.begin() + k * n);
+  }
 }
 
 std::pair<double, std::size_t> ParametricCurve::locate(double s) const {
@@ -335,8 +354,12 @@ std::pair<double, std::size_t> ParametricCurve::locate(double s) const {
   double lo = t_[k], hi = t_[k + 1];
   double t = lo + (hi - lo) * ((s - s_[k]) / (s_[k + 1] - s_[k]));
   const double tolerance = 1e-15 * (t_.back() - t_.front());
+  const bool tabulated = bracketed && arc_table_ok_[k];
+  const double* table = arc_table_.data() + k * (kArcTableDegree + 1);
+  const double mid = 0.5 * (t_[k] + t_[k + 1]), inverse_h = 2 / (t_[k + 1] - t_[k]);
   for (int it = 0; it < 100; ++it) {
-    const double f = s_[k] + integral_of_speed(t_[k], t, piece) - s;
+    const double f = s_[k] - s + (tabulated ? chebyshev_series(table, kArcTableDegree, (t - mid) * inverse_h)
+                                            : integral_of_speed(t_[k], t, piece));
     if (f == 0) break;
     if (bracketed) (f > 0 ? hi : lo) = t;
     double next = t - f / speed(t, piece);

@@ -93,7 +93,8 @@ double catenary_parameter(double span, double rise_ratio);
 // inside each piece and have a non-vanishing speed), then calls build_arc_length from its constructor.
 // The arc length is tabulated on panels (adaptive 16-point Gauss-Legendre, never crossing a knot, each
 // panel's integral agreeing with its two halves' sum to 4e-15 relative); at(s) finds t by safeguarded
-// Newton on s(t), which is accurate to round-off.
+// Newton on s(t), which is accurate to round-off: s(t) is a Chebyshev table per panel (checked against
+// the Gauss integral to 1e-14 at construction), or the Gauss integral itself where the table disagrees.
 class ParametricCurve : public Curve {
  public:
   struct Jet {
@@ -136,6 +137,14 @@ class ParametricCurve : public Curve {
   std::vector<double> t_;           // panel ends, size P + 1
   std::vector<double> s_;           // arc length at the panel ends
   std::vector<std::size_t> piece_;  // the knot interval of each panel, size P
+  // Per panel, the Chebyshev coefficients (degree kArcTableDegree, in t mapped to [-1, 1]) of
+  // s(t) - s(panel start), so that at(s) inverts a polynomial (one jet per Newton step) instead of a
+  // 16-point Gauss integral per step; not ok for a panel where the table's end disagrees with the Gauss
+  // integral by more than 1e-14 (that panel keeps the Gauss inversion).
+  static constexpr int kArcTableDegree = 16;
+  std::vector<double> arc_table_;
+  std::vector<bool> arc_table_ok_;
+  void build_arc_table();
   double first_moment_ = 0;
   double max_curvature_ = 0;
 };
