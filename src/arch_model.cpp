@@ -24,7 +24,7 @@ ArchModel::ArchModel(Scene scene) : scene_(std::move(scene)) {
   d_ = scene_.support_displacement / scales_.displacement;
 }
 
-double ArchModel::theta(double s) const { return scene_.curve->at(s * scales_.length).theta; }
+double ArchModel::theta(double s) const { return scene_.curve->angle(s * scales_.length); }
 
 std::vector<double> ArchModel::breakpoints() const {
   std::vector<double> out = scene_.curve->breakpoints();

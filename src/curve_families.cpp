@@ -234,6 +234,9 @@ class CatenaryCurve final : public Curve {
     return {half_ - u, s == length_ ? rise_ : y, std::atan(r), -1.0 / (a_ * (1 + r * r))};
   }
 
+  // tan theta = sigma / a: no hyperbolic function needed.
+  double angle(double s) const override { return std::atan((length_ - s) / a_); }
+
   // Integral of x ds = int_0^U (U - u) cosh(u / a) du = a^2 (cosh(U / a) - 1) = a h.
   double first_moment_x() const override { return a_ * rise_; }
   // |kappa| = 1 / (a (1 + (sigma / a)^2)) is largest at the crown.

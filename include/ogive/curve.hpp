@@ -46,6 +46,9 @@ class Curve {
   virtual double span() const = 0;         // L, m
   virtual double half_length() const = 0;  // S, m
   virtual CurvePoint at(double s) const = 0;
+  // at(s).theta alone: what the integrators and the quadrature ask for at every node or right-hand
+  // side. Families override it where the angle is cheaper than the point (same value to round-off).
+  virtual double angle(double s) const { return at(s).theta; }
   // Interior arc lengths where the curvature or its derivative jumps: integrators restart there.
   virtual std::vector<double> breakpoints() const { return {}; }
   // Non-empty exactly when the curve is piecewise circular; then the closed form applies arc by arc.
