@@ -81,12 +81,21 @@ PiecewiseCircularCurve::PiecewiseCircularCurve(std::string family, double span,
   }
 }
 
-CurvePoint PiecewiseCircularCurve::at(double s) const {
-  // The last arc whose start is <= s; s outside [0, S] extrapolates the end arcs.
+const CircularArc& PiecewiseCircularCurve::arc_at(double s) const {
+  // s outside [0, S] extrapolates the end arcs.
   auto it = std::upper_bound(arcs_.begin(), arcs_.end(), s,
                              [](double v, const CircularArc& a) { return v < a.s_start; });
-  const CircularArc& arc = it == arcs_.begin() ? arcs_.front() : *std::prev(it);
+  return it == arcs_.begin() ? arcs_.front() : *std::prev(it);
+}
+
+CurvePoint PiecewiseCircularCurve::at(double s) const {
+  const CircularArc& arc = arc_at(s);
   return point_on_arc(arc, s - arc.s_start);
+}
+
+double PiecewiseCircularCurve::angle(double s) const {
+  const CircularArc& arc = arc_at(s);
+  return arc.theta_start + arc.kappa * (s - arc.s_start);  // as point_on_arc
 }
 
 std::vector<double> PiecewiseCircularCurve::breakpoints() const {

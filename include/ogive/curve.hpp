@@ -73,6 +73,7 @@ class PiecewiseCircularCurve final : public Curve {
   double span() const override { return span_; }
   double half_length() const override { return half_length_; }
   CurvePoint at(double s) const override;
+  double angle(double s) const override;
   std::vector<double> breakpoints() const override;
   std::span<const CircularArc> arcs() const override { return arcs_; }
   double first_moment_x() const override;
@@ -83,6 +84,7 @@ class PiecewiseCircularCurve final : public Curve {
   double span_;
   double half_length_;
   std::vector<CircularArc> arcs_;
+  const CircularArc& arc_at(double s) const;  // the last arc whose start is <= s (the first before it)
 };
 
 // The mirror image about x = span/2 of a left-half point, its tangent pointing on towards the right
