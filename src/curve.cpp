@@ -36,6 +36,14 @@ CurvePoint Curve::at_whole_arch(double s) const {
   return s <= S ? at(s) : mirror(at(2.0 * S - s), span());
 }
 
+ParameterPoint Curve::at_parameter(double) const {
+  throw std::logic_error("Curve::at_parameter: the " + family() + " curve has no parameter of its own");
+}
+
+double Curve::parameter_at(double) const {
+  throw std::logic_error("Curve::parameter_at: the " + family() + " curve has no parameter of its own");
+}
+
 double Curve::max_curvature() const {
   constexpr int kSamples = 512;
   double largest = 0;

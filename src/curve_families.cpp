@@ -150,6 +150,17 @@ class ParabolicCurve final : public Curve {
   // |kappa| = c / (1 + c^2 u^2)^{3/2} is largest at the crown.
   double max_curvature() const override { return c_; }
 
+  // The parameter is x (0 at the springing, L/2 at the crown): s = S - sigma(L/2 - x), tan theta = c u.
+  std::vector<double> parameter_knots() const override { return {0.0, half_}; }
+  ParameterPoint at_parameter(double x) const override {
+    const double u = half_ - x;
+    const double cu = c_ * u;
+    return {x == 0 ? 0.0 : length_ - sigma(u), std::atan(cu), std::sqrt(1 + cu * cu)};
+  }
+  double parameter_at(double s) const override {
+    return s == 0 ? 0.0 : s == length_ ? half_ : half_ - distance_from_crown(length_ - s);
+  }
+
   // Integral of x ds = U S - ((1 + c^2 U^2)^{3/2} - 1) / (3 c^2), the bracket by expm1/log1p.
   double first_moment_x() const override {
     const double w = c_ * half_ * c_ * half_;
@@ -265,6 +276,7 @@ void ParametricCurve::build_arc_length(const std::vector<double>& knots, int ini
   constexpr double kPanelTolerance = 4e-15;  // relative, per panel
   constexpr int kMaxDepth = 60;
   const double range = knots.back() - knots.front();
+  knots_ = knots;
   t_.assign(1, knots.front());
   s_.assign(1, 0.0);
   piece_.clear();
@@ -375,6 +387,26 @@ std::pair<double, std::size_t> ParametricCurve::locate(double s) const {
 }
 
 double ParametricCurve::parameter_at(double s) const { return locate(s).first; }
+
+ParameterPoint ParametricCurve::at_parameter(double t) const {
+  // The arc-length panel holding t (the end panels take t outside the knots), then its table or its
+  // Gauss integral from the panel's start: the same s(t) that at(s) inverts.
+  const std::size_t panels = piece_.size();
+  std::size_t k = static_cast<std::size_t>(std::upper_bound(t_.begin(), t_.end(), t) - t_.begin());
+  k = k == 0 ? 0 : std::min(k - 1, panels - 1);
+  const std::size_t piece = piece_[k];
+  double s = s_[k];
+  if (t == t_[k + 1]) {
+    s = s_[k + 1];
+  } else if (t != t_[k]) {
+    const double mid = 0.5 * (t_[k] + t_[k + 1]), inverse_h = 2 / (t_[k + 1] - t_[k]);
+    s += arc_table_ok_[k] ? chebyshev_series(arc_table_.data() + k * (kArcTableDegree + 1), kArcTableDegree,
+                                             (t - mid) * inverse_h)
+                          : integral_of_speed(t_[k], t, piece);
+  }
+  const Jet j = jet(t, piece);
+  return {s, std::atan2(j.dy, j.dx), std::sqrt(j.dx * j.dx + j.dy * j.dy)};
+}
 
 double ParametricCurve::arc_length_at_knot(double t) const {
   const auto it = std::lower_bound(t_.begin(), t_.end(), t);

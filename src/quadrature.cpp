@@ -22,9 +22,16 @@ constexpr std::array<int, 3> kUnknowns = {kFx, kFy, kM};
 using Columns = Eigen::Matrix<double, kStateSize, kColumns>;
 using NodeColumns = Eigen::Matrix<double, Eigen::Dynamic, kColumns>;  // one component at every node
 
+// A panel of the half arch and its nodes x_i in [-1, 1]. The nodes are Chebyshev points either in the
+// arc length s or, where the curve has a parameter t of its own in which s is explicit (the parabola, the
+// ellipse, the surveys' splines: Curve::parameter_knots), in t: no inversion of s(t) at any node.
+// Integrals in s become integrals in x with the Jacobian ds/dx.
 struct Panel {
-  double a = 0, b = 0;        // scaled arc lengths
-  std::vector<double> theta, cos, sin;  // the angle and its cosine and sine at the current degree's nodes
+  double a = 0, b = 0;    // scaled arc lengths at the ends
+  double pa = 0, pb = 0;  // the nodes' variable at the ends: scaled s, or t
+  bool in_parameter = false;
+  // At the current degree's nodes: the angle, its cosine and sine, s - a (scaled) and ds/dx (scaled).
+  std::vector<double> theta, cos, sin, ds, jacobian;
 };
 
 // The states at every node of every panel (kStateSize x (degree + 1) per panel).
@@ -32,31 +39,44 @@ using NodeStates = std::vector<Eigen::MatrixXd>;
 
 class QuadratureField final : public StateField {
  public:
-  QuadratureField(std::vector<double> starts, double end, int degree, NodeStates states)
-      : starts_(std::move(starts)), end_(end), rule_(chebyshev_rule(degree)), states_(std::move(states)) {}
+  QuadratureField(std::shared_ptr<const ArchModel> model, const std::vector<Panel>& panels, int degree,
+                  NodeStates states)
+      : model_(std::move(model)), rule_(chebyshev_rule(degree)), states_(std::move(states)) {
+    for (const Panel& p : panels) ends_.push_back({p.a, p.b, p.pa, p.pb, p.in_parameter});
+  }
   void sample(std::span<const double> s, std::span<StateVector> out) const override {
+    const double L = model_->scales().length;
     for (std::size_t i = 0; i < s.size(); ++i) {
-      const std::size_t k =
-          std::max<std::ptrdiff_t>(std::upper_bound(starts_.begin(), starts_.end(), s[i]) - starts_.begin() - 1, 0);
-      const double a = starts_[k], b = k + 1 < starts_.size() ? starts_[k + 1] : end_;
-      const double x = std::clamp((2 * s[i] - a - b) / (b - a), -1.0, 1.0);
+      const auto after =
+          std::upper_bound(ends_.begin(), ends_.end(), s[i], [](double v, const Ends& e) { return v < e.a; });
+      const std::size_t k = after == ends_.begin() ? 0 : static_cast<std::size_t>(after - ends_.begin()) - 1;
+      const Ends& e = ends_[k];
+      const double p =
+          e.in_parameter ? model_->scene().curve->parameter_at(std::clamp(s[i], e.a, e.b) * L) : s[i];
+      const double x = std::clamp((2 * p - e.pa - e.pb) / (e.pb - e.pa), -1.0, 1.0);
       out[i] = chebyshev_interpolate(rule_, states_[k], x);
     }
   }
 
  private:
-  std::vector<double> starts_;
-  double end_;
+  struct Ends {
+    double a, b, pa, pb;
+    bool in_parameter;
+  };
+  std::shared_ptr<const ArchModel> model_;
+  std::vector<Ends> ends_;
   const ChebyshevRule& rule_;
   NodeStates states_;
 };
 
-// h Q X column by column: for these sizes (9 to 257 nodes, 3 columns) a matrix-vector product per
-// column, vectorised along Q's columns, beats both a blocked GEMM (packing) and a lazy product (strided).
+// The cumulative integral in s of every column of X from the panel's start, at every node: Q (ds/dx X),
+// column by column: for these sizes (9 to 257 nodes, 3 columns) a matrix-vector product per column,
+// vectorised along Q's columns, beats both a blocked GEMM (packing) and a lazy product (strided).
 template <class Matrix>
-Matrix cumulative(const Eigen::MatrixXd& Q, double h, const Matrix& X) {
+Matrix cumulative(const Eigen::MatrixXd& Q, const Eigen::Ref<const Eigen::VectorXd>& jacobian, const Matrix& X) {
   Matrix out(X.rows(), X.cols());
-  for (Eigen::Index j = 0; j < X.cols(); ++j) out.col(j).noalias() = h * (Q * X.col(j));
+  for (Eigen::Index j = 0; j < X.cols(); ++j)
+    out.col(j).noalias() = Q * (jacobian.array() * X.col(j).array()).matrix();
   return out;
 }
 
@@ -74,17 +94,16 @@ struct PanelColumns {
 PanelColumns integrate_panel(const ArchModel& model, const Panel& panel, const ChebyshevRule& rule,
                              const Columns& Y) {
   const int n = rule.degree + 1;
-  const double h = 0.5 * (panel.b - panel.a);
-  const Eigen::MatrixXd& Q = rule.integration;  // times h: the cumulative integral from the panel's start
-  const Eigen::Map<const Eigen::ArrayXd> c(panel.cos.data(), n), sn(panel.sin.data(), n);
-  const Eigen::ArrayXd ds = h * (rule.node.array() + 1.0);  // s - a at the nodes
+  const Eigen::MatrixXd& Q = rule.integration;
+  const Eigen::Map<const Eigen::ArrayXd> c(panel.cos.data(), n), sn(panel.sin.data(), n), ds(panel.ds.data(), n);
+  const Eigen::Map<const Eigen::VectorXd> J(panel.jacobian.data(), n);
   Eigen::Matrix<double, 1, kColumns> load = Eigen::Matrix<double, 1, kColumns>::Zero();
   load[kLoad] = 1.0;
   const auto ones = Eigen::VectorXd::Ones(n);
   Eigen::Matrix<double, Eigen::Dynamic, 3> basis(n, 3);
   basis << sn.matrix(), c.matrix(), (c * ds).matrix();
-  const Eigen::Matrix<double, Eigen::Dynamic, 3> once = cumulative(Q, h, basis);
-  const Eigen::Matrix<double, Eigen::Dynamic, 3> twice = cumulative(Q, h, once);
+  const Eigen::Matrix<double, Eigen::Dynamic, 3> once = cumulative(Q, J, basis);
+  const Eigen::Matrix<double, Eigen::Dynamic, 3> twice = cumulative(Q, J, once);
   Eigen::Matrix<double, 3, kColumns> weights;  // M' = basis * weights, column by column
   weights << Y.row(kFx), -Y.row(kFy), -load;
   PanelColumns out;
@@ -100,7 +119,7 @@ PanelColumns integrate_panel(const ArchModel& model, const Panel& panel, const C
   node[kUy] = ((N.colwise() * sn) * model.a_N() + rotation.colwise() * c).matrix();
   for (int k : {kFx, kFy, kM, kPsi}) out.end.row(k) = node[k].row(n - 1);
   // The last row of the integration matrix is the Clenshaw-Curtis rule over the whole panel.
-  for (int k : {kUx, kUy}) out.end.row(k) = Y.row(k) + h * (Q.row(n - 1) * node[k]);
+  for (int k : {kUx, kUy}) out.end.row(k) = Y.row(k) + Q.row(n - 1) * (J.asDiagonal() * node[k]);
   return out;
 }
 
@@ -149,54 +168,63 @@ Solution make_solution(const std::shared_ptr<const ArchModel>& model, const std:
                        const Level& level, const Options& options) {
   const ChebyshevRule& rule = chebyshev_rule(level.degree);
   NodeStates states;
-  std::vector<double> starts;
   StateVector y_start = level.springing * level.y0;
   for (std::size_t k = 0; k < panels.size(); ++k) {
     const auto& node = level.columns[k].node;
     Eigen::MatrixXd panel_states(kStateSize, level.degree + 1);
     for (int i : {kFx, kFy, kM, kPsi}) panel_states.row(i) = (node[i] * level.y0).transpose();
-    const double h = 0.5 * (panels[k].b - panels[k].a);
-    for (int i : {kUx, kUy})
-      panel_states.row(i) = (y_start[i] + h * (rule.integration * (node[i] * level.y0)).array()).transpose();
+    const Eigen::Map<const Eigen::VectorXd> J(panels[k].jacobian.data(), level.degree + 1);
+    for (int i : {kUx, kUy}) {
+      const Eigen::VectorXd integrand = node[i] * level.y0;
+      panel_states.row(i) = (y_start[i] + cumulative(rule.integration, J, integrand).array()).transpose();
+    }
     y_start = level.columns[k].end * level.y0;
     states.push_back(std::move(panel_states));
-    starts.push_back(panels[k].a);
   }
   Solution sol;
   sol.method = Method::quadrature;
   sol.model = model;
   sol.diagnostics.segments = static_cast<int>(panels.size());
   finish_solution(sol, level.bvp,
-                  std::make_shared<QuadratureField>(std::move(starts), model->half_length(), level.degree,
-                                                    std::move(states)),
+                  std::make_shared<QuadratureField>(model, panels, level.degree, std::move(states)),
                   options.rtol);
   if (sol.field && options.stations > 0) sample_profile(sol, options.stations);
   return sol;
 }
 
-// Angles (with their cosines and sines) at the nodes of degree `degree`, keeping those of degree / 2:
-// the even-numbered nodes.
-std::int64_t sample_angles(const ArchModel& model, Panel& panel, int degree) {
+// The angle (with its cosine and sine), s - a and ds/dx at the nodes of degree `degree`, keeping those
+// of degree / 2 (the even-numbered nodes).
+std::int64_t sample_nodes(const ArchModel& model, Panel& panel, int degree) {
   const ChebyshevRule& rule = chebyshev_rule(degree);
-  const std::vector<double> theta = std::move(panel.theta), c = std::move(panel.cos), sn = std::move(panel.sin);
-  panel.theta.assign(degree + 1, 0.0);
-  panel.cos.assign(degree + 1, 0.0);
-  panel.sin.assign(degree + 1, 0.0);
-  const double mid = 0.5 * (panel.a + panel.b), h = 0.5 * (panel.b - panel.a);
+  const Panel coarse = panel;
+  for (auto* v : {&panel.theta, &panel.cos, &panel.sin, &panel.ds, &panel.jacobian}) v->assign(degree + 1, 0.0);
+  const double L = model.scales().length;
+  const double mid = 0.5 * (panel.pa + panel.pb), h = 0.5 * (panel.pb - panel.pa);
   std::int64_t evaluations = 0;
   for (int i = 0; i <= degree; ++i) {
-    if (!theta.empty() && i % 2 == 0) {
-      panel.theta[i] = theta[i / 2];
-      panel.cos[i] = c[i / 2];
-      panel.sin[i] = sn[i / 2];
-    } else {
-      // The ends exactly, so that neighbouring panels meet at the same arc length.
-      const double s = i == 0 ? panel.a : i == degree ? panel.b : mid + h * rule.node[i];
-      panel.theta[i] = model.theta(s);
-      panel.cos[i] = std::cos(panel.theta[i]);
-      panel.sin[i] = std::sin(panel.theta[i]);
-      ++evaluations;
+    if (!coarse.theta.empty() && i % 2 == 0) {
+      panel.theta[i] = coarse.theta[i / 2];
+      panel.cos[i] = coarse.cos[i / 2];
+      panel.sin[i] = coarse.sin[i / 2];
+      panel.ds[i] = coarse.ds[i / 2];
+      panel.jacobian[i] = coarse.jacobian[i / 2];
+      continue;
     }
+    // The ends exactly, so that neighbouring panels meet at the same point.
+    const double p = i == 0 ? panel.pa : i == degree ? panel.pb : mid + h * rule.node[i];
+    if (panel.in_parameter) {
+      const ParameterPoint q = model.scene().curve->at_parameter(p);
+      panel.theta[i] = q.theta;
+      panel.ds[i] = i == 0 ? 0.0 : i == degree ? panel.b - panel.a : q.s / L - panel.a;
+      panel.jacobian[i] = h * q.speed / L;
+    } else {
+      panel.theta[i] = model.theta(p);
+      panel.ds[i] = p - panel.a;
+      panel.jacobian[i] = h;
+    }
+    panel.cos[i] = std::cos(panel.theta[i]);
+    panel.sin[i] = std::sin(panel.theta[i]);
+    ++evaluations;
   }
   return evaluations;
 }
@@ -218,12 +246,23 @@ Solution solve_quadrature(std::shared_ptr<const ArchModel> model, const Options&
     return sol;
   }
   knots.push_back(model->half_length());
+  // The curve's own parameter where it has one that matches its breakpoints.
+  const std::vector<double> parameter = model->scene().curve->parameter_knots();
+  const bool in_parameter = parameter.size() == knots.size();
   std::vector<Panel> panels;
-  for (std::size_t k = 0; k + 1 < knots.size(); ++k) panels.push_back({knots[k], knots[k + 1], {}, {}, {}});
+  for (std::size_t k = 0; k + 1 < knots.size(); ++k) {
+    Panel p;
+    p.a = knots[k];
+    p.b = knots[k + 1];
+    p.in_parameter = in_parameter;
+    p.pa = in_parameter ? parameter[k] : p.a;
+    p.pb = in_parameter ? parameter[k + 1] : p.b;
+    panels.push_back(std::move(p));
+  }
 
   std::int64_t evaluations = 0;
   int degree = kMinChebyshevDegree;
-  for (Panel& p : panels) evaluations += sample_angles(*model, p, degree);
+  for (Panel& p : panels) evaluations += sample_nodes(*model, p, degree);
   // Without stations, a degree that is not returned needs no field: only its H (its Fx at the springing).
   const bool profiles = options.stations > 0;
   Level coarse = solve_level(*model, panels, degree);
@@ -232,7 +271,7 @@ Solution solve_quadrature(std::shared_ptr<const ArchModel> model, const Options&
   double estimate = std::numeric_limits<double>::quiet_NaN();
   while (true) {
     degree *= 2;
-    for (Panel& p : panels) evaluations += sample_angles(*model, p, degree);
+    for (Panel& p : panels) evaluations += sample_nodes(*model, p, degree);
     Level fine = solve_level(*model, panels, degree);
     const double condition = 1.0 / fine.bvp.rcond;
     // H = -Fx at the springing times the force scale: its relative difference is that of y0[Fx].

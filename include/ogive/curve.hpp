@@ -31,6 +31,13 @@ struct CurvePoint {
   double kappa = 0;  // 1/m
 };
 
+// A point of the half arch given by a curve's own parameter t (see Curve::parameter_knots).
+struct ParameterPoint {
+  double s = 0;      // m, arc length at t
+  double theta = 0;  // rad
+  double speed = 0;  // ds/dt (> 0)
+};
+
 // A circular arc (or a straight piece when kappa == 0) of a piecewise-circular curve.
 struct CircularArc {
   double s_start = 0;  // m, arc length at the arc's start
@@ -59,6 +66,14 @@ class Curve {
   CurvePoint at_whole_arch(double s) const;
   // Integral of x(s) ds over the half arch (m^2): the weight's moment about the springing per unit w.
   virtual double first_moment_x() const;
+  // A parameter of the curve's own, t, increasing from the springing to the crown, in which arc length and
+  // angle are explicit (no inversion of s(t)): the quadrature method places its nodes in t then. The
+  // knots are t at the springing, at every breakpoint (in order) and at the crown; empty (the default)
+  // when the curve has no such parameter. at_parameter(t) for t within the knots; parameter_at(s) is its
+  // inverse. Both throw std::logic_error on a curve without a parameter.
+  virtual std::vector<double> parameter_knots() const { return {}; }
+  virtual ParameterPoint at_parameter(double t) const;
+  virtual double parameter_at(double s) const;
   // The largest |kappa| over the half arch (1/m). The families know it exactly or cached it at
   // construction; this default samples 513 points of at(s) on every call.
   virtual double max_curvature() const;

@@ -109,7 +109,10 @@ class ParametricCurve : public Curve {
   double max_curvature() const override { return max_curvature_; }
   // The parameter t at arc length s (exact table values at the panel ends, so at(0) and at(S) are the
   // curve's end points exactly).
-  double parameter_at(double s) const;
+  double parameter_at(double s) const override;
+  // The knots given to build_arc_length, and the arc length, angle and speed at t without inversion.
+  std::vector<double> parameter_knots() const override { return knots_; }
+  ParameterPoint at_parameter(double t) const override;
 
  protected:
   // piece: the index of the knot interval that contains t (t may lie slightly outside it when
@@ -134,6 +137,7 @@ class ParametricCurve : public Curve {
   std::pair<double, std::size_t> locate(double s) const;  // t and its piece
   double speed(double t, std::size_t piece) const;
   double integral_of_speed(double t0, double t1, std::size_t piece) const;
+  std::vector<double> knots_;       // as given to build_arc_length
   std::vector<double> t_;           // panel ends, size P + 1
   std::vector<double> s_;           // arc length at the panel ends
   std::vector<std::size_t> piece_;  // the knot interval of each panel, size P
