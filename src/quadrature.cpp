@@ -74,9 +74,9 @@ class QuadratureField final : public StateField {
 // vectorised along Q's columns, beats both a blocked GEMM (packing) and a lazy product (strided).
 template <class Matrix>
 Matrix cumulative(const Eigen::MatrixXd& Q, const Eigen::Ref<const Eigen::VectorXd>& jacobian, const Matrix& X) {
+  const Matrix scaled = jacobian.asDiagonal() * X;
   Matrix out(X.rows(), X.cols());
-  for (Eigen::Index j = 0; j < X.cols(); ++j)
-    out.col(j).noalias() = Q * (jacobian.array() * X.col(j).array()).matrix();
+  for (Eigen::Index j = 0; j < X.cols(); ++j) out.col(j).noalias() = Q * scaled.col(j);
   return out;
 }
 
@@ -95,28 +95,40 @@ PanelColumns integrate_panel(const ArchModel& model, const Panel& panel, const C
                              const Columns& Y) {
   const int n = rule.degree + 1;
   const Eigen::MatrixXd& Q = rule.integration;
-  const Eigen::Map<const Eigen::ArrayXd> c(panel.cos.data(), n), sn(panel.sin.data(), n), ds(panel.ds.data(), n);
+  const double* c = panel.cos.data();
+  const double* sn = panel.sin.data();
+  const double* ds = panel.ds.data();
   const Eigen::Map<const Eigen::VectorXd> J(panel.jacobian.data(), n);
-  Eigen::Matrix<double, 1, kColumns> load = Eigen::Matrix<double, 1, kColumns>::Zero();
-  load[kLoad] = 1.0;
-  const auto ones = Eigen::VectorXd::Ones(n);
   Eigen::Matrix<double, Eigen::Dynamic, 3> basis(n, 3);
-  basis << sn.matrix(), c.matrix(), (c * ds).matrix();
+  for (int i = 0; i < n; ++i) basis.row(i) << sn[i], c[i], c[i] * ds[i];
   const Eigen::Matrix<double, Eigen::Dynamic, 3> once = cumulative(Q, J, basis);
   const Eigen::Matrix<double, Eigen::Dynamic, 3> twice = cumulative(Q, J, once);
-  Eigen::Matrix<double, 3, kColumns> weights;  // M' = basis * weights, column by column
-  weights << Y.row(kFx), -Y.row(kFy), -load;
+  // M' = basis * weights, column by column (the load column's Fy grows with s - a).
+  Eigen::Matrix<double, 3, kColumns> weights;
+  weights << Y.row(kFx), -Y.row(kFy), Eigen::Matrix<double, 1, kColumns>::Unit(kLoad) * -1.0;
   PanelColumns out;
   auto& node = out.node;
-  node[kFx] = ones * Y.row(kFx);
-  node[kFy] = ones * Y.row(kFy) + ds.matrix() * load;
-  node[kM] = ones * Y.row(kM) + once * weights;
-  node[kPsi] = ones * Y.row(kPsi) + ds.matrix() * Y.row(kM) + twice * weights;
-  const Eigen::ArrayXXd N = (node[kFx].array().colwise() * c) + (node[kFy].array().colwise() * sn);
-  const Eigen::ArrayXXd rotation =
-      model.a_V() * ((node[kFy].array().colwise() * c) - (node[kFx].array().colwise() * sn)) + node[kPsi].array();
-  node[kUx] = ((N.colwise() * c) * model.a_N() - rotation.colwise() * sn).matrix();
-  node[kUy] = ((N.colwise() * sn) * model.a_N() + rotation.colwise() * c).matrix();
+  for (auto& m : node) m.resize(n, kColumns);
+  const double a_N = model.a_N(), a_V = model.a_V();
+  // Node by node, column by column: no temporaries.
+  for (int j = 0; j < kColumns; ++j) {
+    const double Fx = Y(kFx, j), Fy0 = Y(kFy, j), M0 = Y(kM, j), psi0 = Y(kPsi, j);
+    const double load = j == kLoad ? 1.0 : 0.0;
+    const double w0 = weights(0, j), w1 = weights(1, j), w2 = weights(2, j);
+    for (int i = 0; i < n; ++i) {
+      const double Fy = Fy0 + load * ds[i];
+      const double M = M0 + once(i, 0) * w0 + once(i, 1) * w1 + once(i, 2) * w2;
+      const double psi = psi0 + ds[i] * M0 + twice(i, 0) * w0 + twice(i, 1) * w1 + twice(i, 2) * w2;
+      const double N = c[i] * Fx + sn[i] * Fy;
+      const double rotation = a_V * (c[i] * Fy - sn[i] * Fx) + psi;
+      node[kFx](i, j) = Fx;
+      node[kFy](i, j) = Fy;
+      node[kM](i, j) = M;
+      node[kPsi](i, j) = psi;
+      node[kUx](i, j) = a_N * N * c[i] - rotation * sn[i];
+      node[kUy](i, j) = a_N * N * sn[i] + rotation * c[i];
+    }
+  }
   for (int k : {kFx, kFy, kM, kPsi}) out.end.row(k) = node[k].row(n - 1);
   // The last row of the integration matrix is the Clenshaw-Curtis rule over the whole panel.
   for (int k : {kUx, kUy}) out.end.row(k) = Y.row(k) + Q.row(n - 1) * (J.asDiagonal() * node[k]);
@@ -196,7 +208,12 @@ Solution make_solution(const std::shared_ptr<const ArchModel>& model, const std:
 // of degree / 2 (the even-numbered nodes).
 std::int64_t sample_nodes(const ArchModel& model, Panel& panel, int degree) {
   const ChebyshevRule& rule = chebyshev_rule(degree);
-  const Panel coarse = panel;
+  Panel coarse;
+  std::swap(coarse.theta, panel.theta);
+  std::swap(coarse.cos, panel.cos);
+  std::swap(coarse.sin, panel.sin);
+  std::swap(coarse.ds, panel.ds);
+  std::swap(coarse.jacobian, panel.jacobian);
   for (auto* v : {&panel.theta, &panel.cos, &panel.sin, &panel.ds, &panel.jacobian}) v->assign(degree + 1, 0.0);
   const double L = model.scales().length;
   const double mid = 0.5 * (panel.pa + panel.pb), h = 0.5 * (panel.pb - panel.pa);
