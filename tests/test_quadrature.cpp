@@ -215,3 +215,55 @@ TEST_CASE("quadrature: misuse and what does not apply") {
   CHECK(solve(scene_of(make_catenary(10.0, 0.5)), o).ok());
   CHECK(std::string(to_string(Method::quadrature)) == "quadrature");
 }
+
+TEST_CASE("curves: a parameter of their own agrees with the arc length (parabola, ellipse, surveys)") {
+  const std::vector<std::shared_ptr<const Curve>> curves = {
+      make_parabolic(10.0, 0.5), make_parabolic(10.0, 1.5), make_elliptical(10.0, 0.3), make_elliptical(10.0, 1.2),
+      read_points_curve(OGIVE_DATA_DIR "/curves/catenary-survey.csv")};
+  for (const auto& curve : curves) {
+    const std::vector<double> knots = curve->parameter_knots();
+    REQUIRE(knots.size() == curve->breakpoints().size() + 2);
+    CAPTURE(curve->family());
+    // The knots are the springing, the breakpoints and the crown.
+    CHECK(curve->at_parameter(knots.front()).s == 0.0);
+    CHECK(close(curve->at_parameter(knots.back()).s, curve->half_length(), kExact));
+    for (std::size_t k = 1; k + 1 < knots.size(); ++k)
+      CHECK(close(curve->at_parameter(knots[k]).s, curve->breakpoints()[k - 1], kExact));
+    for (std::size_t k = 0; k + 1 < knots.size(); ++k)
+      for (double f : {0.1, 0.37, 0.5, 0.93}) {
+        const double t = knots[k] + f * (knots[k + 1] - knots[k]);
+        const ParameterPoint p = curve->at_parameter(t);
+        // The same point as at(s): the angle, and t back from s.
+        CHECK(std::abs(p.theta - curve->at(p.s).theta) <= kExact);
+        CHECK(std::abs(curve->parameter_at(p.s) - t) <= kExact * (knots.back() - knots.front()));
+        // ds/dt against a central difference of s(t) (step 1e-5 of the piece: error ~ 1e-10 of s'').
+        const double h = 1e-5 * (knots[k + 1] - knots[k]);
+        const double difference = (curve->at_parameter(t + h).s - curve->at_parameter(t - h).s) / (2 * h);
+        CHECK(close(p.speed, difference, 1e-8));
+      }
+  }
+  // Curves whose arc length is their parameter have none of their own.
+  for (const auto& curve : {make_catenary(10.0, 0.5), make_pointed(10.0, 0.5)}) {
+    CHECK(curve->parameter_knots().empty());
+    CHECK_THROWS_AS(curve->at_parameter(0.0), std::logic_error);
+    CHECK_THROWS_AS(curve->parameter_at(0.0), std::logic_error);
+  }
+}
+
+TEST_CASE("curves: the largest curvature they know agrees with sampling the curve (Scene::validate's rule)") {
+  const std::vector<std::shared_ptr<const Curve>> curves = {
+      make_pointed(10.0, 0.5),     make_four_centred(10.0, 0.42), make_catenary(10.0, 0.5),
+      make_parabolic(10.0, 1.5),   make_elliptical(10.0, 0.3),    make_elliptical(10.0, 1.2),
+      read_points_curve(OGIVE_DATA_DIR "/curves/catenary-survey.csv")};
+  for (const auto& curve : curves) {
+    double sampled = 0;
+    constexpr int kSamples = 4096;
+    for (int i = 0; i <= kSamples; ++i)
+      sampled = std::max(sampled, std::abs(curve->at(curve->half_length() * i / kSamples).kappa));
+    CAPTURE(curve->family());
+    // Never smaller than what any sample shows (to round-off), and no more than sampling between the
+    // samples can miss (the curvature varies smoothly between breakpoints).
+    CHECK(curve->max_curvature() >= sampled * (1 - kExact));
+    CHECK(curve->max_curvature() <= sampled * (1 + 1e-3));
+  }
+}
