@@ -350,10 +350,14 @@ void ParametricCurve::build_arc_table() {
     const double mid = 0.5 * (t_[k] + t_[k + 1]), h = 0.5 * (t_[k + 1] - t_[k]);
     for (std::size_t i = 0; i < n; ++i) speeds[i] = speed(mid + h * rule.node[i], piece_[k]);
     const Eigen::VectorXd s = h * (rule.integration * speeds);
-    const double length = s_[k + 1] - s_[k];
-    arc_table_ok_[k] = std::abs(s[n - 1] - length) <= 1e-14 * length;
     const Eigen::VectorXd a = rule.to_coefficients * s;
     std::copy(a.data(), a.data() + n, arc_table_.begin() + k * n);
+    // The table must reproduce the Gauss integral (what the tabulation accepted) to round-off, at the
+    // panel's end and between the nodes (a quarter of the way).
+    const double length = s_[k + 1] - s_[k];
+    const double quarter = integral_of_speed(t_[k], t_[k] + 0.5 * h, piece_[k]);
+    arc_table_ok_[k] = std::abs(s[n - 1] - length) <= kArcTableTolerance * length &&
+                       std::abs(chebyshev_series(a.data(), kArcTableDegree, -0.5) - quarter) <= kArcTableTolerance * length;
   }
 }
 

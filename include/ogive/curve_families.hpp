@@ -94,7 +94,8 @@ double catenary_parameter(double span, double rise_ratio);
 // The arc length is tabulated on panels (adaptive 16-point Gauss-Legendre, never crossing a knot, each
 // panel's integral agreeing with its two halves' sum to 4e-15 relative); at(s) finds t by safeguarded
 // Newton on s(t), which is accurate to round-off: s(t) is a Chebyshev table per panel (checked against
-// the Gauss integral to 1e-14 at construction), or the Gauss integral itself where the table disagrees.
+// the Gauss integral to 2e-15 of the panel at construction), or the Gauss integral itself where the
+// table disagrees.
 class ParametricCurve : public Curve {
  public:
   struct Jet {
@@ -143,9 +144,10 @@ class ParametricCurve : public Curve {
   std::vector<std::size_t> piece_;  // the knot interval of each panel, size P
   // Per panel, the Chebyshev coefficients (degree kArcTableDegree, in t mapped to [-1, 1]) of
   // s(t) - s(panel start), so that at(s) inverts a polynomial (one jet per Newton step) instead of a
-  // 16-point Gauss integral per step; not ok for a panel where the table's end disagrees with the Gauss
-  // integral by more than 1e-14 (that panel keeps the Gauss inversion).
+  // 16-point Gauss integral per step; not ok for a panel where the table disagrees with the Gauss
+  // integral by more than kArcTableTolerance (that panel keeps the Gauss inversion).
   static constexpr int kArcTableDegree = 16;
+  static constexpr double kArcTableTolerance = 2e-15;  // relative to the panel's length
   std::vector<double> arc_table_;
   std::vector<bool> arc_table_ok_;
   void build_arc_table();
