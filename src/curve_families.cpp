@@ -155,7 +155,8 @@ class ParabolicCurve final : public Curve {
   ParameterPoint at_parameter(double x) const override {
     const double u = half_ - x;
     const double cu = c_ * u;
-    return {x == 0 ? 0.0 : length_ - sigma(u), std::atan(cu), std::sqrt(1 + cu * cu)};
+    const double speed = std::sqrt(1 + cu * cu);
+    return {x == 0 ? 0.0 : length_ - sigma(u), speed, 1 / speed, cu / speed};
   }
   double parameter_at(double s) const override {
     return s == 0 ? 0.0 : s == length_ ? half_ : half_ - distance_from_crown(length_ - s);
@@ -409,7 +410,8 @@ ParameterPoint ParametricCurve::at_parameter(double t) const {
                           : integral_of_speed(t_[k], t, piece);
   }
   const Jet j = jet(t, piece);
-  return {s, std::atan2(j.dy, j.dx), std::sqrt(j.dx * j.dx + j.dy * j.dy)};
+  const double speed = std::sqrt(j.dx * j.dx + j.dy * j.dy);
+  return {s, speed, j.dx / speed, j.dy / speed};
 }
 
 double ParametricCurve::arc_length_at_knot(double t) const {

@@ -30,8 +30,8 @@ struct Panel {
   double a = 0, b = 0;    // scaled arc lengths at the ends
   double pa = 0, pb = 0;  // the nodes' variable at the ends: scaled s, or t
   bool in_parameter = false;
-  // At the current degree's nodes: the angle, its cosine and sine, s - a (scaled) and ds/dx (scaled).
-  std::vector<double> theta, cos, sin, ds, jacobian;
+  // At the current degree's nodes: cos theta, sin theta, s - a (scaled) and ds/dx (scaled).
+  std::vector<double> cos, sin, ds, jacobian;
 };
 
 // The states at every node of every panel (kStateSize x (degree + 1) per panel).
@@ -204,23 +204,21 @@ Solution make_solution(const std::shared_ptr<const ArchModel>& model, const std:
   return sol;
 }
 
-// The angle (with its cosine and sine), s - a and ds/dx at the nodes of degree `degree`, keeping those
-// of degree / 2 (the even-numbered nodes).
+// cos theta, sin theta, s - a and ds/dx at the nodes of degree `degree`, keeping those of degree / 2
+// (the even-numbered nodes).
 std::int64_t sample_nodes(const ArchModel& model, Panel& panel, int degree) {
   const ChebyshevRule& rule = chebyshev_rule(degree);
   Panel coarse;
-  std::swap(coarse.theta, panel.theta);
   std::swap(coarse.cos, panel.cos);
   std::swap(coarse.sin, panel.sin);
   std::swap(coarse.ds, panel.ds);
   std::swap(coarse.jacobian, panel.jacobian);
-  for (auto* v : {&panel.theta, &panel.cos, &panel.sin, &panel.ds, &panel.jacobian}) v->assign(degree + 1, 0.0);
+  for (auto* v : {&panel.cos, &panel.sin, &panel.ds, &panel.jacobian}) v->assign(degree + 1, 0.0);
   const double L = model.scales().length;
   const double mid = 0.5 * (panel.pa + panel.pb), h = 0.5 * (panel.pb - panel.pa);
   std::int64_t evaluations = 0;
   for (int i = 0; i <= degree; ++i) {
-    if (!coarse.theta.empty() && i % 2 == 0) {
-      panel.theta[i] = coarse.theta[i / 2];
+    if (!coarse.cos.empty() && i % 2 == 0) {
       panel.cos[i] = coarse.cos[i / 2];
       panel.sin[i] = coarse.sin[i / 2];
       panel.ds[i] = coarse.ds[i / 2];
@@ -231,16 +229,17 @@ std::int64_t sample_nodes(const ArchModel& model, Panel& panel, int degree) {
     const double p = i == 0 ? panel.pa : i == degree ? panel.pb : mid + h * rule.node[i];
     if (panel.in_parameter) {
       const ParameterPoint q = model.scene().curve->at_parameter(p);
-      panel.theta[i] = q.theta;
+      panel.cos[i] = q.cos;
+      panel.sin[i] = q.sin;
       panel.ds[i] = i == 0 ? 0.0 : i == degree ? panel.b - panel.a : q.s / L - panel.a;
       panel.jacobian[i] = h * q.speed / L;
     } else {
-      panel.theta[i] = model.theta(p);
+      const double theta = model.theta(p);
+      panel.cos[i] = std::cos(theta);
+      panel.sin[i] = std::sin(theta);
       panel.ds[i] = p - panel.a;
       panel.jacobian[i] = h;
     }
-    panel.cos[i] = std::cos(panel.theta[i]);
-    panel.sin[i] = std::sin(panel.theta[i]);
     ++evaluations;
   }
   return evaluations;

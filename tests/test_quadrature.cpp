@@ -233,8 +233,9 @@ TEST_CASE("curves: a parameter of their own agrees with the arc length (parabola
       for (double f : {0.1, 0.37, 0.5, 0.93}) {
         const double t = knots[k] + f * (knots[k + 1] - knots[k]);
         const ParameterPoint p = curve->at_parameter(t);
-        // The same point as at(s): the angle, and t back from s.
-        CHECK(std::abs(p.theta - curve->at(p.s).theta) <= kExact);
+        // The same point as at(s): the unit tangent, and t back from s.
+        CHECK(std::abs(p.cos * p.cos + p.sin * p.sin - 1) <= kExact);
+        CHECK(std::abs(std::atan2(p.sin, p.cos) - curve->at(p.s).theta) <= kExact);
         CHECK(std::abs(curve->parameter_at(p.s) - t) <= kExact * (knots.back() - knots.front()));
         // ds/dt against a central difference of s(t) (step 1e-5 of the piece: error ~ 1e-10 of s'').
         const double h = 1e-5 * (knots[k + 1] - knots[k]);

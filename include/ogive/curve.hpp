@@ -33,9 +33,9 @@ struct CurvePoint {
 
 // A point of the half arch given by a curve's own parameter t (see Curve::parameter_knots).
 struct ParameterPoint {
-  double s = 0;      // m, arc length at t
-  double theta = 0;  // rad
-  double speed = 0;  // ds/dt (> 0)
+  double s = 0;                  // m, arc length at t
+  double speed = 0;              // ds/dt (> 0)
+  double cos = 1, sin = 0;       // the unit tangent: cos theta, sin theta (no trigonometric call needed)
 };
 
 // A circular arc (or a straight piece when kappa == 0) of a piecewise-circular curve.
