@@ -20,7 +20,6 @@ constexpr int kColumns = 4;
 constexpr int kLoad = 3;
 constexpr std::array<int, 3> kUnknowns = {kFx, kFy, kM};
 using Columns = Eigen::Matrix<double, kStateSize, kColumns>;
-using NodeColumns = Eigen::Matrix<double, Eigen::Dynamic, kColumns>;  // one component at every node
 
 // A panel of the half arch and its nodes x_i in [-1, 1]. The nodes are Chebyshev points either in the
 // arc length s or, where the curve has a parameter t of its own in which s is explicit (the parabola, the
@@ -30,9 +29,10 @@ struct Panel {
   double a = 0, b = 0;    // scaled arc lengths at the ends
   double pa = 0, pb = 0;  // the nodes' variable at the ends: scaled s, or t
   bool in_parameter = false;
-  // At the current degree's nodes: cos theta, sin theta, s - a (scaled) and ds/dx (scaled).
-  std::vector<double> cos, sin, ds, jacobian;
+  // At the current degree's nodes (rows): cos theta, sin theta, s - a (scaled) and ds/dx (scaled).
+  Eigen::Matrix<double, Eigen::Dynamic, 4> nodes;
 };
+enum NodeColumn : int { kCos = 0, kSin = 1, kDs = 2, kJacobian = 3 };
 
 // The states at every node of every panel (kStateSize x (degree + 1) per panel).
 using NodeStates = std::vector<Eigen::MatrixXd>;
@@ -69,22 +69,26 @@ class QuadratureField final : public StateField {
   NodeStates states_;
 };
 
-// The cumulative integral in s of every column of X from the panel's start, at every node: Q (ds/dx X),
-// column by column: for these sizes (9 to 257 nodes, 3 columns) a matrix-vector product per column,
-// vectorised along Q's columns, beats both a blocked GEMM (packing) and a lazy product (strided).
-template <class Matrix>
-Matrix cumulative(const Eigen::MatrixXd& Q, const Eigen::Ref<const Eigen::VectorXd>& jacobian, const Matrix& X) {
-  const Matrix scaled = jacobian.asDiagonal() * X;
-  Matrix out(X.rows(), X.cols());
+// The cumulative integral in s of every column of X from the panel's start, at every node, into out:
+// Q (ds/dx X), column by column: for these sizes (9 to 257 nodes, 1 to 3 columns) a matrix-vector product
+// per column, vectorised along Q's columns, beats both a blocked GEMM (packing) and a lazy product
+// (strided). `scaled` is the caller's work space (the same shape as X).
+template <class In, class Work, class Out>
+void cumulative(const Eigen::MatrixXd& Q, const Eigen::Ref<const Eigen::VectorXd>& jacobian, const In& X,
+                Work& scaled, Out&& out) {
+  scaled.noalias() = jacobian.asDiagonal() * X;
   for (Eigen::Index j = 0; j < X.cols(); ++j) out.col(j).noalias() = Q * scaled.col(j);
-  return out;
 }
 
 // The columns on one panel: Fx, Fy, M and psi at every node; for Ux and Uy only their integrands at the
 // nodes (the values at the nodes are needed only for the solved state: two integrals, not eight).
 struct PanelColumns {
-  std::array<NodeColumns, kStateSize> node;  // node[kUx], node[kUy]: d/ds of Ux, Uy
-  Columns end;                               // the columns at the panel's end
+  // Component k of the columns at every node is node.middleCols<kColumns>(k * kColumns); for kUx and kUy
+  // it is their derivative d/ds. One allocation per panel.
+  Eigen::Matrix<double, Eigen::Dynamic, kStateSize * kColumns> node;
+  Columns end;  // the columns at the panel's end
+  auto component(int k) { return node.middleCols<kColumns>(k * kColumns); }
+  auto component(int k) const { return node.middleCols<kColumns>(k * kColumns); }
 };
 
 // The force method's nested integrals from the columns Y at the panel's start, in the order each needs
@@ -95,20 +99,21 @@ PanelColumns integrate_panel(const ArchModel& model, const Panel& panel, const C
                              const Columns& Y) {
   const int n = rule.degree + 1;
   const Eigen::MatrixXd& Q = rule.integration;
-  const double* c = panel.cos.data();
-  const double* sn = panel.sin.data();
-  const double* ds = panel.ds.data();
-  const Eigen::Map<const Eigen::VectorXd> J(panel.jacobian.data(), n);
-  Eigen::Matrix<double, Eigen::Dynamic, 3> basis(n, 3);
-  for (int i = 0; i < n; ++i) basis.row(i) << sn[i], c[i], c[i] * ds[i];
-  const Eigen::Matrix<double, Eigen::Dynamic, 3> once = cumulative(Q, J, basis);
-  const Eigen::Matrix<double, Eigen::Dynamic, 3> twice = cumulative(Q, J, once);
+  const auto c = panel.nodes.col(kCos), sn = panel.nodes.col(kSin), ds = panel.nodes.col(kDs);
+  const auto J = panel.nodes.col(kJacobian);
+  // basis | once | twice: the three functions, their integrals and their integrals' integrals.
+  Eigen::Matrix<double, Eigen::Dynamic, 9> work(n, 9);
+  work.col(0) = sn;
+  work.col(1) = c;
+  work.col(2) = c.cwiseProduct(ds);
+  Eigen::Matrix<double, Eigen::Dynamic, 3> scaled(n, 3);
+  cumulative(Q, J, work.leftCols<3>(), scaled, work.middleCols<3>(3));
+  cumulative(Q, J, work.middleCols<3>(3), scaled, work.rightCols<3>());
   // M' = basis * weights, column by column (the load column's Fy grows with s - a).
   Eigen::Matrix<double, 3, kColumns> weights;
   weights << Y.row(kFx), -Y.row(kFy), Eigen::Matrix<double, 1, kColumns>::Unit(kLoad) * -1.0;
   PanelColumns out;
-  auto& node = out.node;
-  for (auto& m : node) m.resize(n, kColumns);
+  out.node.resize(n, kStateSize * kColumns);
   const double a_N = model.a_N(), a_V = model.a_V();
   // Node by node, column by column: no temporaries.
   for (int j = 0; j < kColumns; ++j) {
@@ -117,21 +122,22 @@ PanelColumns integrate_panel(const ArchModel& model, const Panel& panel, const C
     const double w0 = weights(0, j), w1 = weights(1, j), w2 = weights(2, j);
     for (int i = 0; i < n; ++i) {
       const double Fy = Fy0 + load * ds[i];
-      const double M = M0 + once(i, 0) * w0 + once(i, 1) * w1 + once(i, 2) * w2;
-      const double psi = psi0 + ds[i] * M0 + twice(i, 0) * w0 + twice(i, 1) * w1 + twice(i, 2) * w2;
+      const double M = M0 + work(i, 3) * w0 + work(i, 4) * w1 + work(i, 5) * w2;
+      const double psi = psi0 + ds[i] * M0 + work(i, 6) * w0 + work(i, 7) * w1 + work(i, 8) * w2;
       const double N = c[i] * Fx + sn[i] * Fy;
       const double rotation = a_V * (c[i] * Fy - sn[i] * Fx) + psi;
-      node[kFx](i, j) = Fx;
-      node[kFy](i, j) = Fy;
-      node[kM](i, j) = M;
-      node[kPsi](i, j) = psi;
-      node[kUx](i, j) = a_N * N * c[i] - rotation * sn[i];
-      node[kUy](i, j) = a_N * N * sn[i] + rotation * c[i];
+      out.node(i, kFx * kColumns + j) = Fx;
+      out.node(i, kFy * kColumns + j) = Fy;
+      out.node(i, kM * kColumns + j) = M;
+      out.node(i, kPsi * kColumns + j) = psi;
+      out.node(i, kUx * kColumns + j) = a_N * N * c[i] - rotation * sn[i];
+      out.node(i, kUy * kColumns + j) = a_N * N * sn[i] + rotation * c[i];
     }
   }
-  for (int k : {kFx, kFy, kM, kPsi}) out.end.row(k) = node[k].row(n - 1);
+  for (int k : {kFx, kFy, kM, kPsi}) out.end.row(k) = out.component(k).row(n - 1);
   // The last row of the integration matrix is the Clenshaw-Curtis rule over the whole panel.
-  for (int k : {kUx, kUy}) out.end.row(k) = Y.row(k) + Q.row(n - 1) * (J.asDiagonal() * node[k]);
+  for (int k : {kUx, kUy})
+    out.end.row(k) = Y.row(k) + Q.row(n - 1) * (J.asDiagonal() * out.component(k));
   return out;
 }
 
@@ -179,18 +185,21 @@ Level solve_level(const ArchModel& model, const std::vector<Panel>& panels, int 
 Solution make_solution(const std::shared_ptr<const ArchModel>& model, const std::vector<Panel>& panels,
                        const Level& level, const Options& options) {
   const ChebyshevRule& rule = chebyshev_rule(level.degree);
+  const int n = level.degree + 1;
   NodeStates states;
+  states.reserve(panels.size());
   StateVector y_start = level.springing * level.y0;
+  Eigen::Matrix<double, Eigen::Dynamic, 2> integrand(n, 2), scaled(n, 2), integral(n, 2);
   for (std::size_t k = 0; k < panels.size(); ++k) {
-    const auto& node = level.columns[k].node;
-    Eigen::MatrixXd panel_states(kStateSize, level.degree + 1);
-    for (int i : {kFx, kFy, kM, kPsi}) panel_states.row(i) = (node[i] * level.y0).transpose();
-    const Eigen::Map<const Eigen::VectorXd> J(panels[k].jacobian.data(), level.degree + 1);
-    for (int i : {kUx, kUy}) {
-      const Eigen::VectorXd integrand = node[i] * level.y0;
-      panel_states.row(i) = (y_start[i] + cumulative(rule.integration, J, integrand).array()).transpose();
-    }
-    y_start = level.columns[k].end * level.y0;
+    const PanelColumns& columns = level.columns[k];
+    Eigen::MatrixXd panel_states(kStateSize, n);
+    for (int i : {kFx, kFy, kM, kPsi}) panel_states.row(i) = (columns.component(i) * level.y0).transpose();
+    integrand.col(0) = columns.component(kUx) * level.y0;
+    integrand.col(1) = columns.component(kUy) * level.y0;
+    cumulative(rule.integration, panels[k].nodes.col(kJacobian), integrand, scaled, integral);
+    panel_states.row(kUx) = (y_start[kUx] + integral.col(0).array()).transpose();
+    panel_states.row(kUy) = (y_start[kUy] + integral.col(1).array()).transpose();
+    y_start = columns.end * level.y0;
     states.push_back(std::move(panel_states));
   }
   Solution sol;
@@ -208,37 +217,26 @@ Solution make_solution(const std::shared_ptr<const ArchModel>& model, const std:
 // (the even-numbered nodes).
 std::int64_t sample_nodes(const ArchModel& model, Panel& panel, int degree) {
   const ChebyshevRule& rule = chebyshev_rule(degree);
-  Panel coarse;
-  std::swap(coarse.cos, panel.cos);
-  std::swap(coarse.sin, panel.sin);
-  std::swap(coarse.ds, panel.ds);
-  std::swap(coarse.jacobian, panel.jacobian);
-  for (auto* v : {&panel.cos, &panel.sin, &panel.ds, &panel.jacobian}) v->assign(degree + 1, 0.0);
+  Eigen::Matrix<double, Eigen::Dynamic, 4> coarse(degree + 1, 4);
+  coarse.swap(panel.nodes);  // panel.nodes: degree + 1 rows now; coarse: the previous degree's, if any
+  const bool refining = coarse.rows() == degree / 2 + 1;
   const double L = model.scales().length;
   const double mid = 0.5 * (panel.pa + panel.pb), h = 0.5 * (panel.pb - panel.pa);
   std::int64_t evaluations = 0;
   for (int i = 0; i <= degree; ++i) {
-    if (!coarse.cos.empty() && i % 2 == 0) {
-      panel.cos[i] = coarse.cos[i / 2];
-      panel.sin[i] = coarse.sin[i / 2];
-      panel.ds[i] = coarse.ds[i / 2];
-      panel.jacobian[i] = coarse.jacobian[i / 2];
+    if (refining && i % 2 == 0) {
+      panel.nodes.row(i) = coarse.row(i / 2);
       continue;
     }
     // The ends exactly, so that neighbouring panels meet at the same point.
     const double p = i == 0 ? panel.pa : i == degree ? panel.pb : mid + h * rule.node[i];
     if (panel.in_parameter) {
       const ParameterPoint q = model.scene().curve->at_parameter(p);
-      panel.cos[i] = q.cos;
-      panel.sin[i] = q.sin;
-      panel.ds[i] = i == 0 ? 0.0 : i == degree ? panel.b - panel.a : q.s / L - panel.a;
-      panel.jacobian[i] = h * q.speed / L;
+      panel.nodes.row(i) << q.cos, q.sin, i == 0 ? 0.0 : i == degree ? panel.b - panel.a : q.s / L - panel.a,
+          h * q.speed / L;
     } else {
       const double theta = model.theta(p);
-      panel.cos[i] = std::cos(theta);
-      panel.sin[i] = std::sin(theta);
-      panel.ds[i] = p - panel.a;
-      panel.jacobian[i] = h;
+      panel.nodes.row(i) << std::cos(theta), std::sin(theta), p - panel.a, h;
     }
     ++evaluations;
   }
