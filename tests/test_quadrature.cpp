@@ -5,10 +5,12 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "chebyshev.hpp"
+#include "cli.hpp"
 #include "gauss_legendre.hpp"
 #include "ogive/curve_families.hpp"
 #include "ogive/quadrature.hpp"
@@ -267,4 +269,23 @@ TEST_CASE("curves: the largest curvature they know agrees with sampling the curv
     CHECK(curve->max_curvature() >= sampled * (1 - kExact));
     CHECK(curve->max_curvature() <= sampled * (1 + 1e-3));
   }
+}
+
+TEST_CASE("quadrature: --method quadrature in the CLI, no integrator, its estimate, not_applicable said") {
+  std::ostringstream out, err;
+  REQUIRE(cli::run_cli({"thrust", "--curve", "catenary", "--rise-ratio", "0.5", "--method", "quadrature"}, out, err) ==
+          0);
+  const std::string csv = out.str();
+  const std::string header = csv.substr(0, csv.find('\n'));
+  const std::string row = csv.substr(csv.find('\n') + 1);
+  CHECK(header.find(",method,integrator,rtol,status,") != std::string::npos);
+  CHECK(row.find(",quadrature,none,1e-08,success,") != std::string::npos);
+  CHECK(err.str().empty());
+  // Told to ignore a survey's breakpoints: not applicable, exit 3, no number where there is none.
+  std::ostringstream out2, err2;
+  CHECK(cli::run_cli({"thrust", "--curve", "points", "--curve-file", OGIVE_DATA_DIR "/curves/parabola-40.csv",
+                      "--method", "quadrature", "--ignore-breakpoints"},
+                     out2, err2) == 3);
+  CHECK(out2.str().find(",quadrature,none,1e-08,not_applicable,,") != std::string::npos);
+  CHECK(out2.str().find("nan") == std::string::npos);
 }

@@ -24,6 +24,8 @@
 
 namespace ogive {
 
+// Of the Options it reads rtol, stations and restart_at_breakpoints; integrator, atol, segments and
+// max_steps are CVODE's, and verify does not apply (the estimate is the method's own, never skipped).
 // Status success when the estimate meets 10 rtol (the tolerance every method is held to);
 // tolerance_not_met when even degree 256 does not (a curve that is not smooth between its breakpoints);
 // singular_system / ill_conditioned as judged by finish_solution; not_applicable when
