@@ -114,24 +114,21 @@ PanelColumns integrate_panel(const ArchModel& model, const Panel& panel, const C
   weights << Y.row(kFx), -Y.row(kFy), Eigen::Matrix<double, 1, kColumns>::Unit(kLoad) * -1.0;
   PanelColumns out;
   out.node.resize(n, kStateSize * kColumns);
-  const double a_N = model.a_N(), a_V = model.a_V();
-  // Node by node, column by column: no temporaries.
+  // Node by node, column by column: no temporaries; the displacements' derivatives from the model.
   for (int j = 0; j < kColumns; ++j) {
     const double Fx = Y(kFx, j), Fy0 = Y(kFy, j), M0 = Y(kM, j), psi0 = Y(kPsi, j);
     const double load = j == kLoad ? 1.0 : 0.0;
     const double w0 = weights(0, j), w1 = weights(1, j), w2 = weights(2, j);
     for (int i = 0; i < n; ++i) {
-      const double Fy = Fy0 + load * ds[i];
-      const double M = M0 + work(i, 3) * w0 + work(i, 4) * w1 + work(i, 5) * w2;
-      const double psi = psi0 + ds[i] * M0 + work(i, 6) * w0 + work(i, 7) * w1 + work(i, 8) * w2;
-      const double N = c[i] * Fx + sn[i] * Fy;
-      const double rotation = a_V * (c[i] * Fy - sn[i] * Fx) + psi;
-      out.node(i, kFx * kColumns + j) = Fx;
-      out.node(i, kFy * kColumns + j) = Fy;
-      out.node(i, kM * kColumns + j) = M;
-      out.node(i, kPsi * kColumns + j) = psi;
-      out.node(i, kUx * kColumns + j) = a_N * N * c[i] - rotation * sn[i];
-      out.node(i, kUy * kColumns + j) = a_N * N * sn[i] + rotation * c[i];
+      StateVector y, dy;
+      y[kUx] = y[kUy] = 0;  // nothing depends on the displacements
+      y[kFx] = Fx;
+      y[kFy] = Fy0 + load * ds[i];
+      y[kM] = M0 + work(i, 3) * w0 + work(i, 4) * w1 + work(i, 5) * w2;
+      y[kPsi] = psi0 + ds[i] * M0 + work(i, 6) * w0 + work(i, 7) * w1 + work(i, 8) * w2;
+      model.derivative(c[i], sn[i], y.data(), dy.data(), load);
+      for (int k : {kFx, kFy, kM, kPsi}) out.node(i, k * kColumns + j) = y[k];
+      for (int k : {kUx, kUy}) out.node(i, k * kColumns + j) = dy[k];
     }
   }
   for (int k : {kFx, kFy, kM, kPsi}) out.end.row(k) = out.component(k).row(n - 1);
