@@ -70,7 +70,7 @@ struct Diagnostics {
   std::int64_t rhs_evaluations = 0;      // right-hand-side evaluations (CVODE); angle evaluations (quadrature)
   std::int64_t error_test_failures = 0;  // CVODE local error test failures
   std::int64_t jacobian_evaluations = 0; // CVODE Jacobian evaluations (BDF)
-  int segments = 0;                      // shooting segments used (arcs for the closed form)
+  int segments = 0;                      // shooting segments used (arcs for the closed form, panels for the quadrature)
   double condition_estimate = std::numeric_limits<double>::quiet_NaN();  // 1-norm, scaled system
   double boundary_residual = std::numeric_limits<double>::quiet_NaN();   // max |BC residual|, scaled
   double equilibrium_residual = std::numeric_limits<double>::quiet_NaN(); // relative to half weight
