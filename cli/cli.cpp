@@ -543,6 +543,7 @@ void add_scene_columns(CsvRow& row, const SceneParameters& p, const Curve* curve
 const std::map<std::string, Method> kMethods = {{"closed-form", Method::closed_form},
                                                 {"shooting", Method::shooting},
                                                 {"multiple-shooting", Method::multiple_shooting},
+                                                {"quadrature", Method::quadrature},
                                                 {"auto", Method::automatic}};
 const std::map<std::string, Integrator> kIntegrators = {{"adams", Integrator::adams}, {"bdf", Integrator::bdf}};
 
@@ -576,8 +577,9 @@ const CLI::Validator kCount([](std::string& text) { return number_problem(text, 
 // check chooses its methods itself (every one); bench also answers to the plural spellings it had.
 void add_solver_options(CLI::App& cmd, Options& o, SolverText& text, bool with_method = true, bool plurals = false) {
   if (with_method)
-    cmd.add_option(plurals ? "--method,--methods" : "--method", text.method, "closed-form (circular arcs only), shooting, multiple-shooting or auto (the closed form where it "
-                   "applies, else shooting with 1, 2, 4 .. 64 segments until the error estimate meets --rtol); a "
+    cmd.add_option(plurals ? "--method,--methods" : "--method", text.method, "closed-form (circular arcs only), quadrature (the force method, every curve), shooting, "
+                   "multiple-shooting or auto (the closed form where it applies, else the quadrature where its estimate "
+                   "meets --rtol, else shooting with 1, 2, 4 .. 64 segments until the error estimate meets --rtol); a "
                    "list a,b gives a row for each")->capture_default_str();
   cmd.add_option(plurals ? "--integrator,--integrators" : "--integrator", text.integrator, "CVODE's method: adams or bdf (the closed form uses none); a list "
                    "a,b gives a row for each")->capture_default_str();
@@ -661,6 +663,11 @@ SolverSweep solver_sweep(Options base, const SolverText& text, bool with_method 
   if (integrators.size() > 1) sweep.varying.push_back("integrator");
   if (rtols.size() > 1) sweep.varying.push_back("rtol");
   return sweep;
+}
+
+// The integrator column: CVODE's method, empty for the methods that use none.
+std::string_view integrator_of(Method method, const Options& o) {
+  return method == Method::closed_form || method == Method::quadrature ? std::string_view{} : to_string(o.integrator);
 }
 
 // The status of a row whose options are each valid but make no scene together (Scene::validate or the
@@ -878,7 +885,7 @@ int run_thrust(SceneOptions& so, const CLI::App& cmd, SolverSweep sweep, const C
         const Solution sol = solve(scene, o);
         const ThrustLineSummary line = summary ? summarize_thrust_line(sol) : ThrustLineSummary{};
         add_scene_columns(row, p, scene.curve.get());
-        row.add(to_string(sol.method)).add(sol.method != Method::closed_form ? to_string(o.integrator) : "").add(o.rtol);
+        row.add(to_string(sol.method)).add(integrator_of(sol.method, o)).add(o.rtol);
         row.add(to_string(sol.status)).add(sol.H).add(sol.V).add(sol.H_over_V);
         row.add(line.max_abs_e).add(line.max_abs_e_at);
         if (line.ok) row.add_bool(line.in_kern).add_bool(line.in_section);
@@ -938,7 +945,7 @@ int run_profile(SceneOptions& so, const CLI::App& cmd, SolverSweep sweep, int st
         bool ok = true;
         for (const Options& o : sweep.combinations) {
           const Solution sol = solve(scene, o);
-          const std::string integrator = sol.method != Method::closed_form ? to_string(o.integrator) : "";
+          const std::string integrator(integrator_of(sol.method, o));
           if (!sol.field) {  // unsolved: one row that says so, no numbers
             emit(sparse_row(columns, p, scene.curve.get(),
                             {{"method", to_string(sol.method)}, {"integrator", integrator},
@@ -1038,8 +1045,9 @@ int run_check(SceneOptions& so, const CLI::App& cmd, const SolverSweep& sweep, c
                                                  ? "closed-form"
                                                  : fmt::format("multiple-shooting rtol {}", reference_rtol(base));
         const double ref_error = reference_error(reference);
-        for (Method m : {Method::closed_form, Method::shooting, Method::multiple_shooting}) {
+        for (Method m : {Method::closed_form, Method::quadrature, Method::shooting, Method::multiple_shooting}) {
           if (m == Method::closed_form && scene.curve->arcs().empty()) continue;  // not applicable
+          if (m == Method::quadrature && !base.restart_at_breakpoints) continue;  // not applicable either
           Options o = base;
           o.method = m;
           const Solution sol = solve(scene, o);
@@ -1048,7 +1056,7 @@ int run_check(SceneOptions& so, const CLI::App& cmd, const SolverSweep& sweep, c
           const bool within = sol.ok() && known && within_tolerance(diff, o.rtol + ref_error);
           ok = ok && within;
           add_scene_columns(row, p, scene.curve.get());
-          row.add(to_string(sol.method)).add(m == Method::closed_form ? "" : to_string(o.integrator)).add(o.rtol);
+          row.add(to_string(sol.method)).add(integrator_of(sol.method, o)).add(o.rtol);
           row.add(sol.diagnostics.segments).add(to_string(sol.status)).add(sol.H_over_V).add(reference_method);
           row.add(to_string(reference.status)).add(ref_error).add(reference.H_over_V).add(diff).add(o.rtol);
           if (known) row.add_bool(within);
@@ -1317,6 +1325,7 @@ int run_bench(SceneOptions& so, const CLI::App& cmd, const SolverSweep& sweep, i
           // one row, not one per integrator and rtol.
           const bool exact = m == Method::closed_form || (m == Method::automatic && circular);
           if (exact && (o.integrator != first.integrator || o.rtol != first.rtol)) continue;
+          if (m == Method::quadrature && o.integrator != first.integrator) continue;  // no integrator
           {
             {
               std::vector<double> seconds;
@@ -1335,7 +1344,7 @@ int run_bench(SceneOptions& so, const CLI::App& cmd, const SolverSweep& sweep, i
               const Solution& judged = sol.ok() ? with_profile : sol;
               const double estimate = std::max(sol.diagnostics.error_estimate, with_profile.diagnostics.error_estimate);
               add_scene_columns(row, p, scene.curve.get());
-              row.add(to_string(m)).add(exact ? "" : to_string(o.integrator));
+              row.add(to_string(m)).add(exact ? std::string_view{} : integrator_of(m, o));
               if (exact) row.add(std::string_view{});
               else row.add(rtol);
               row.add(sol.diagnostics.segments).add(to_string(judged.status));

@@ -15,14 +15,19 @@ mkdir -p data/benchmarks docs/charts
 rtols=1e-2,1e-3,1e-4,1e-5,1e-6,1e-7,1e-8,1e-9,1e-10,1e-11,1e-12
 bench=(bench --rtols "$rtols" --integrators adams,bdf --no-verify --repeats 11)
 
+# The quadrature method has no integrator: one call with one (bench would repeat its rows per integrator).
+quadrature=(bench --rtols "$rtols" --integrators adams --methods quadrature --repeats 11)
 "$ogive" "${bench[@]}" --eccentricity 0,0.5,1 --methods closed-form,shooting,multiple-shooting,auto \
   > data/benchmarks/paper.csv
+"$ogive" "${quadrature[@]}" --eccentricity 0,0.5,1 >> data/benchmarks/paper.csv
 python3 scripts/scipy_peer.py --eccentricity 0,0.5,1 --tols "$rtols" --ogive "$ogive" --repeats 5 \
   >> data/benchmarks/paper.csv
 "$ogive" "${bench[@]}" --curve catenary --rise-ratio 0.5 --methods shooting,multiple-shooting,auto \
   > data/benchmarks/catenary.csv
+"$ogive" "${quadrature[@]}" --curve catenary --rise-ratio 0.5 >> data/benchmarks/catenary.csv
 "$ogive" "${bench[@]}" --curve points --curve-file data/curves/catenary-survey.csv \
   --methods shooting,multiple-shooting,auto > data/benchmarks/survey.csv
+"$ogive" "${quadrature[@]}" --curve points --curve-file data/curves/catenary-survey.csv >> data/benchmarks/survey.csv
 
 scripts/work_precision.sh data/benchmarks/paper.csv docs/charts/paper "pointed arches eps 0 / 0.5 / 1, t = 0.08 L"
 scripts/work_precision.sh data/benchmarks/catenary.csv docs/charts/catenary "catenary, rise L/2, t = 0.08 L"

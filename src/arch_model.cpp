@@ -24,7 +24,7 @@ ArchModel::ArchModel(Scene scene) : scene_(std::move(scene)) {
   d_ = scene_.support_displacement / scales_.displacement;
 }
 
-double ArchModel::theta(double s) const { return scene_.curve->at(s * scales_.length).theta; }
+double ArchModel::theta(double s) const { return scene_.curve->angle(s * scales_.length); }
 
 std::vector<double> ArchModel::breakpoints() const {
   std::vector<double> out = scene_.curve->breakpoints();
@@ -49,16 +49,7 @@ SystemMatrix ArchModel::system_matrix(double theta) const {
 
 void ArchModel::rhs(double s, const double* y, double* dy, double load_factor) const {
   const double th = theta(s);
-  const double c = std::cos(th), sn = std::sin(th);
-  const double N = c * y[kFx] + sn * y[kFy];
-  const double V = -sn * y[kFx] + c * y[kFy];
-  const double rot = a_V_ * V + y[kPsi];
-  dy[kUx] = a_N_ * N * c - rot * sn;
-  dy[kUy] = a_N_ * N * sn + rot * c;
-  dy[kPsi] = y[kM];
-  dy[kFx] = 0.0;
-  dy[kFy] = load_factor;
-  dy[kM] = sn * y[kFx] - c * y[kFy];
+  derivative(std::cos(th), std::sin(th), y, dy, load_factor);
 }
 
 BoundaryConditions ArchModel::boundary_conditions() const {

@@ -44,4 +44,8 @@ BvpSolution solve_single_segment(const ArchModel& model, const SystemMatrix& Phi
 // it against rtol with judge_solution), or singular_system when the condition exceeds 1 / round-off.
 void finish_solution(Solution& sol, const BvpSolution& bvp, std::shared_ptr<const StateField> field);
 
+// The larger of the relative differences of H and of the profiles (when both carry one): the error
+// estimate of a solution a against a tighter one b. NaN when either has no field.
+double solution_difference(const Solution& a, const Solution& b);
+
 }  // namespace ogive

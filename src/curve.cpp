@@ -18,7 +18,6 @@ namespace {
 // sin(z)/z, accurate near 0 where the quotient would cancel.
 double sinc(double z) { return std::abs(z) < 1e-4 ? 1.0 - z * z / 6.0 : std::sin(z) / z; }
 
-
 }  // namespace
 
 CurvePoint point_on_arc(const CircularArc& arc, double ds) {
@@ -45,6 +44,27 @@ CurvePoint Curve::at_whole_arch(double s) const {
   return s <= S ? at(s) : mirror(at(2.0 * S - s), span());
 }
 
+ParameterPoint Curve::at_parameter(double) const {
+  throw std::logic_error("Curve::at_parameter: the " + family() + " curve has no parameter of its own");
+}
+
+double Curve::parameter_at(double) const {
+  throw std::logic_error("Curve::parameter_at: the " + family() + " curve has no parameter of its own");
+}
+
+double Curve::max_curvature() const {
+  constexpr int kSamples = 512;
+  double largest = 0;
+  for (int i = 0; i <= kSamples; ++i) largest = std::max(largest, std::abs(at(half_length() * i / kSamples).kappa));
+  return largest;
+}
+
+double PiecewiseCircularCurve::max_curvature() const {
+  double largest = 0;
+  for (const CircularArc& arc : arcs_) largest = std::max(largest, std::abs(arc.kappa));
+  return largest;
+}
+
 double Curve::first_moment_x() const {
   // Composite 8-point Gauss-Legendre between breakpoints: the integrand is smooth on each piece.
   std::vector<double> knots{0.0};
@@ -56,7 +76,7 @@ double Curve::first_moment_x() const {
     const double h = (knots[k + 1] - knots[k]) / kPanelsPerPiece;
     for (int p = 0; p < kPanelsPerPiece; ++p) {
       const double mid = knots[k] + (p + 0.5) * h;
-      sum += gauss_legendre_8([&](double s) { return at(s).x; }, mid - 0.5 * h, mid + 0.5 * h);
+      sum += gauss_legendre_integral<8>([&](double s) { return at(s).x; }, mid - 0.5 * h, mid + 0.5 * h);
     }
   }
   return sum;
@@ -77,12 +97,21 @@ PiecewiseCircularCurve::PiecewiseCircularCurve(std::string family, double span,
   }
 }
 
-CurvePoint PiecewiseCircularCurve::at(double s) const {
-  // The last arc whose start is <= s; s outside [0, S] extrapolates the end arcs.
+const CircularArc& PiecewiseCircularCurve::arc_at(double s) const {
+  // s outside [0, S] extrapolates the end arcs.
   auto it = std::upper_bound(arcs_.begin(), arcs_.end(), s,
                              [](double v, const CircularArc& a) { return v < a.s_start; });
-  const CircularArc& arc = it == arcs_.begin() ? arcs_.front() : *std::prev(it);
+  return it == arcs_.begin() ? arcs_.front() : *std::prev(it);
+}
+
+CurvePoint PiecewiseCircularCurve::at(double s) const {
+  const CircularArc& arc = arc_at(s);
   return point_on_arc(arc, s - arc.s_start);
+}
+
+double PiecewiseCircularCurve::angle(double s) const {
+  const CircularArc& arc = arc_at(s);
+  return arc.theta_start + arc.kappa * (s - arc.s_start);  // as point_on_arc
 }
 
 std::vector<double> PiecewiseCircularCurve::breakpoints() const {

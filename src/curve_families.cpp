@@ -10,6 +10,9 @@
 
 #include <fmt/format.h>
 
+#include "chebyshev.hpp"
+#include "gauss_legendre.hpp"
+
 namespace ogive {
 namespace {
 
@@ -39,62 +42,8 @@ void check_smooth_rise(double rise_ratio, const char* family) {
 
 double radians(double degrees) { return degrees * (kPi / 180.0); }
 
-// ---------------------------------------------------------------------------------------------------
-// Gauss-Legendre rule on [-1, 1], computed once to full precision by Newton on the Legendre polynomial.
-
+// The arc length's rule: 16-point Gauss-Legendre per panel.
 constexpr int kGaussOrder = 16;
-
-struct GaussRule {
-  std::array<double, kGaussOrder> node{}, weight{};
-};
-
-const GaussRule& gauss_rule() {
-  static const GaussRule rule = [] {
-    GaussRule r;
-    const int n = kGaussOrder;
-    for (int i = 0; i < n / 2; ++i) {
-      double x = std::cos(kPi * (i + 0.75) / (n + 0.5));
-      double dp = 0;
-      for (int it = 0; it < 100; ++it) {
-        double p0 = 1, p1 = x;  // P_0, P_1
-        for (int k = 2; k <= n; ++k) {
-          const double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
-          p0 = p1;
-          p1 = p2;
-        }
-        dp = n * (x * p1 - p0) / (x * x - 1);  // P_n'(x)
-        const double dx = p1 / dp;
-        x -= dx;
-        if (std::abs(dx) <= 1e-17) break;
-      }
-      // Recompute P_n' at the converged node for the weight.
-      double p0 = 1, p1 = x;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (x * p1 - p0) / (x * x - 1);
-      const double w = 2 / ((1 - x * x) * dp * dp);
-      r.node[i] = -x;
-      r.weight[i] = w;
-      r.node[n - 1 - i] = x;
-      r.weight[n - 1 - i] = w;
-    }
-    return r;
-  }();
-  return rule;
-}
-
-// Integral of f over [a, b] by the 16-point rule.
-template <class F>
-double gauss(F&& f, double a, double b) {
-  const GaussRule& g = gauss_rule();
-  const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
-  double sum = 0;
-  for (int i = 0; i < kGaussOrder; ++i) sum += g.weight[i] * f(mid + half * g.node[i]);
-  return half * sum;
-}
 
 // ---------------------------------------------------------------------------------------------------
 // Piecewise-circular constructions.
@@ -198,6 +147,21 @@ class ParabolicCurve final : public Curve {
     return {half_ - u, 0.5 * c_ * (half_ - u) * (half_ + u), std::atan(cu), -c_ / (q * std::sqrt(q))};
   }
 
+  // |kappa| = c / (1 + c^2 u^2)^{3/2} is largest at the crown.
+  double max_curvature() const override { return c_; }
+
+  // The parameter is x (0 at the springing, L/2 at the crown): s = S - sigma(L/2 - x), tan theta = c u.
+  std::vector<double> parameter_knots() const override { return {0.0, half_}; }
+  ParameterPoint at_parameter(double x) const override {
+    const double u = half_ - x;
+    const double cu = c_ * u;
+    const double speed = std::sqrt(1 + cu * cu);
+    return {x == 0 ? 0.0 : length_ - sigma(u), speed, 1 / speed, cu / speed};
+  }
+  double parameter_at(double s) const override {
+    return s == 0 ? 0.0 : s == length_ ? half_ : half_ - distance_from_crown(length_ - s);
+  }
+
   // Integral of x ds = U S - ((1 + c^2 U^2)^{3/2} - 1) / (3 c^2), the bracket by expm1/log1p.
   double first_moment_x() const override {
     const double w = c_ * half_ * c_ * half_;
@@ -282,8 +246,13 @@ class CatenaryCurve final : public Curve {
     return {half_ - u, s == length_ ? rise_ : y, std::atan(r), -1.0 / (a_ * (1 + r * r))};
   }
 
+  // tan theta = sigma / a: no hyperbolic function needed.
+  double angle(double s) const override { return std::atan((length_ - s) / a_); }
+
   // Integral of x ds = int_0^U (U - u) cosh(u / a) du = a^2 (cosh(U / a) - 1) = a h.
   double first_moment_x() const override { return a_ * rise_; }
+  // |kappa| = 1 / (a (1 + (sigma / a)^2)) is largest at the crown.
+  double max_curvature() const override { return 1.0 / a_; }
 
  private:
   double span_, half_, rise_, a_, length_;
@@ -300,7 +269,7 @@ double ParametricCurve::speed(double t, std::size_t piece) const {
 }
 
 double ParametricCurve::integral_of_speed(double t0, double t1, std::size_t piece) const {
-  return gauss([&](double t) { return speed(t, piece); }, t0, t1);
+  return gauss_legendre_integral<kGaussOrder>([&](double t) { return speed(t, piece); }, t0, t1);
 }
 
 void ParametricCurve::build_arc_length(const std::vector<double>& knots, int initial_panels) {
@@ -308,10 +277,16 @@ void ParametricCurve::build_arc_length(const std::vector<double>& knots, int ini
   constexpr double kPanelTolerance = 4e-15;  // relative, per panel
   constexpr int kMaxDepth = 60;
   const double range = knots.back() - knots.front();
+  knots_ = knots;
   t_.assign(1, knots.front());
   s_.assign(1, 0.0);
   piece_.clear();
   first_moment_ = 0;
+  max_curvature_ = 0;
+  const auto curvature = [](const Jet& j) {
+    const double v2 = j.dx * j.dx + j.dy * j.dy;
+    return std::abs(j.dx * j.ddy - j.dy * j.ddx) / (v2 * std::sqrt(v2));
+  };
   struct Panel {
     double a, b, integral;
     int depth;
@@ -349,17 +324,41 @@ void ParametricCurve::build_arc_length(const std::vector<double>& knots, int ini
         t_.push_back(panel.b);
         s_.push_back(s_.back() + panel.integral);
         piece_.push_back(k);
-        first_moment_ += gauss(
+        first_moment_ += gauss_legendre_integral<kGaussOrder>(
             [&](double t) {
               const Jet j = jet(t, k);
+              max_curvature_ = std::max(max_curvature_, curvature(j));
               return j.x * std::sqrt(j.dx * j.dx + j.dy * j.dy);
             },
             panel.a, panel.b);
+        max_curvature_ = std::max({max_curvature_, curvature(jet(panel.a, k)), curvature(jet(panel.b, k))});
       } else {
         stack.push_back({mid, panel.b, right, panel.depth + 1});
         stack.push_back({panel.a, mid, left, panel.depth + 1});
       }
     }
+  }
+  build_arc_table();
+}
+
+void ParametricCurve::build_arc_table() {
+  const ChebyshevRule& rule = chebyshev_rule(kArcTableDegree);
+  const std::size_t panels = piece_.size(), n = kArcTableDegree + 1;
+  arc_table_.assign(panels * n, 0.0);
+  arc_table_ok_.assign(panels, false);
+  Eigen::VectorXd speeds(n);
+  for (std::size_t k = 0; k < panels; ++k) {
+    const double mid = 0.5 * (t_[k] + t_[k + 1]), h = 0.5 * (t_[k + 1] - t_[k]);
+    for (std::size_t i = 0; i < n; ++i) speeds[i] = speed(mid + h * rule.node[i], piece_[k]);
+    const Eigen::VectorXd s = h * (rule.integration * speeds);
+    const Eigen::VectorXd a = rule.to_coefficients * s;
+    std::copy(a.data(), a.data() + n, arc_table_.begin() + k * n);
+    // The table must reproduce the Gauss integral (what the tabulation accepted) to round-off, at the
+    // panel's end and between the nodes (a quarter of the way).
+    const double length = s_[k + 1] - s_[k];
+    const double quarter = integral_of_speed(t_[k], t_[k] + 0.5 * h, piece_[k]);
+    arc_table_ok_[k] = std::abs(s[n - 1] - length) <= kArcTableTolerance * length &&
+                       std::abs(chebyshev_series(a.data(), kArcTableDegree, -0.5) - quarter) <= kArcTableTolerance * length;
   }
 }
 
@@ -375,8 +374,12 @@ std::pair<double, std::size_t> ParametricCurve::locate(double s) const {
   double lo = t_[k], hi = t_[k + 1];
   double t = lo + (hi - lo) * ((s - s_[k]) / (s_[k + 1] - s_[k]));
   const double tolerance = 1e-15 * (t_.back() - t_.front());
+  const bool tabulated = bracketed && arc_table_ok_[k];
+  const double* table = arc_table_.data() + k * (kArcTableDegree + 1);
+  const double mid = 0.5 * (t_[k] + t_[k + 1]), inverse_h = 2 / (t_[k + 1] - t_[k]);
   for (int it = 0; it < 100; ++it) {
-    const double f = s_[k] + integral_of_speed(t_[k], t, piece) - s;
+    const double f = s_[k] - s + (tabulated ? chebyshev_series(table, kArcTableDegree, (t - mid) * inverse_h)
+                                            : integral_of_speed(t_[k], t, piece));
     if (f == 0) break;
     if (bracketed) (f > 0 ? hi : lo) = t;
     double next = t - f / speed(t, piece);
@@ -389,6 +392,27 @@ std::pair<double, std::size_t> ParametricCurve::locate(double s) const {
 }
 
 double ParametricCurve::parameter_at(double s) const { return locate(s).first; }
+
+ParameterPoint ParametricCurve::at_parameter(double t) const {
+  // The arc-length panel holding t (the end panels take t outside the knots), then its table or its
+  // Gauss integral from the panel's start: the same s(t) that at(s) inverts.
+  const std::size_t panels = piece_.size();
+  std::size_t k = static_cast<std::size_t>(std::upper_bound(t_.begin(), t_.end(), t) - t_.begin());
+  k = k == 0 ? 0 : std::min(k - 1, panels - 1);
+  const std::size_t piece = piece_[k];
+  double s = s_[k];
+  if (t == t_[k + 1]) {
+    s = s_[k + 1];
+  } else if (t != t_[k]) {
+    const double mid = 0.5 * (t_[k] + t_[k + 1]), inverse_h = 2 / (t_[k + 1] - t_[k]);
+    s += arc_table_ok_[k] ? chebyshev_series(arc_table_.data() + k * (kArcTableDegree + 1), kArcTableDegree,
+                                             (t - mid) * inverse_h)
+                          : integral_of_speed(t_[k], t, piece);
+  }
+  const Jet j = jet(t, piece);
+  const double speed = std::sqrt(j.dx * j.dx + j.dy * j.dy);
+  return {s, speed, j.dx / speed, j.dy / speed};
+}
 
 double ParametricCurve::arc_length_at_knot(double t) const {
   const auto it = std::lower_bound(t_.begin(), t_.end(), t);

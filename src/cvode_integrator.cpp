@@ -5,10 +5,12 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include <Eigen/LU>
+
 #include <cvode/cvode.h>
-#include <nvector/nvector_serial.h>
-#include <sunlinsol/sunlinsol_dense.h>
-#include <sunmatrix/sunmatrix_dense.h>
+#include <sundials/sundials_linearsolver.h>
+#include <sundials/sundials_matrix.h>
+#include <sundials/sundials_nvector.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 namespace ogive {
@@ -42,15 +44,58 @@ void check(int flag, const char* call) {
 }
 
 
-// Vector kernels. Debian's libsundials (6.4.1+dfsg1-3) is compiled without optimisation, and for the
-// short vectors here (42 entries) CVODE's time went mostly into its serial N_Vector loops (callgrind:
-// over half of all instructions). CVODE clones every work vector from the one given to CVodeInit,
-// and a clone copies the ops table, so replacing the table's entries on that one vector makes every
-// vector CVODE uses run these loops, compiled with the project's flags. Same arithmetic, same order.
-namespace kernels {
+// ---------------------------------------------------------------------------------------------------
+// ogive's own N_Vector (N_VNewEmpty and its operation table). Debian's libsundials (6.4.1+dfsg1-3) is
+// compiled without optimisation, and for the short vectors here (42 entries) CVODE's time went mostly
+// into its serial vector loops (callgrind: over half of all instructions). These are the same loops,
+// compiled with the project's flags; CVODE clones every work vector from the one given to CVodeInit, and a
+// clone copies the table, so every vector CVODE uses is one of these.
+namespace vector {
 
-sunrealtype* data(N_Vector v) { return NV_DATA_S(v); }
-sunindextype size(N_Vector v) { return NV_LENGTH_S(v); }
+struct Content {
+  sunindextype length = 0;
+  sunrealtype* data = nullptr;
+  bool owns_data = false;
+};
+
+Content& content(N_Vector v) { return *static_cast<Content*>(v->content); }
+sunrealtype* data(N_Vector v) { return content(v).data; }
+sunindextype size(N_Vector v) { return content(v).length; }
+
+N_Vector_ID get_id(N_Vector) { return SUNDIALS_NVEC_CUSTOM; }
+void destroy(N_Vector v) {
+  if (!v) return;
+  if (v->content) {
+    if (content(v).owns_data) delete[] content(v).data;
+    delete static_cast<Content*>(v->content);
+    v->content = nullptr;
+  }
+  N_VFreeEmpty(v);
+}
+N_Vector clone_empty(N_Vector w) {
+  N_Vector v = N_VNewEmpty(w->sunctx);
+  if (!v) return nullptr;
+  if (N_VCopyOps(w, v) != 0) {
+    N_VFreeEmpty(v);
+    return nullptr;
+  }
+  v->content = new Content{size(w), nullptr, false};
+  return v;
+}
+N_Vector clone(N_Vector w) {
+  N_Vector v = clone_empty(w);
+  if (!v) return nullptr;
+  content(v).data = new sunrealtype[static_cast<std::size_t>(size(w))]();
+  content(v).owns_data = true;
+  return v;
+}
+void space(N_Vector v, sunindextype* real_words, sunindextype* integer_words) {
+  *real_words = size(v);
+  *integer_words = 1;
+}
+sunrealtype* array_pointer(N_Vector v) { return data(v); }
+void set_array_pointer(sunrealtype* d, N_Vector v) { content(v).data = d; }
+sunindextype length(N_Vector v) { return size(v); }
 
 void linear_sum(sunrealtype a, N_Vector x, sunrealtype b, N_Vector y, N_Vector z) {
   const sunrealtype *xd = data(x), *yd = data(y);
@@ -91,6 +136,12 @@ void add_const(N_Vector x, sunrealtype b, N_Vector z) {
   sunrealtype* zd = data(z);
   for (sunindextype i = 0, n = size(x); i < n; ++i) zd[i] = xd[i] + b;
 }
+sunrealtype dot(N_Vector x, N_Vector y) {
+  const sunrealtype *xd = data(x), *yd = data(y);
+  sunrealtype sum = 0;
+  for (sunindextype i = 0, n = size(x); i < n; ++i) sum += xd[i] * yd[i];
+  return sum;
+}
 sunrealtype max_norm(N_Vector x) {
   const sunrealtype* xd = data(x);
   sunrealtype m = 0;
@@ -104,6 +155,27 @@ sunrealtype wsqr_sum(N_Vector x, N_Vector w) {
   return sum;
 }
 sunrealtype wrms_norm(N_Vector x, N_Vector w) { return std::sqrt(wsqr_sum(x, w) / size(x)); }
+sunrealtype min(N_Vector x) {
+  const sunrealtype* xd = data(x);
+  sunrealtype m = xd[0];
+  for (sunindextype i = 1, n = size(x); i < n; ++i) m = std::min(m, xd[i]);
+  return m;
+}
+void compare(sunrealtype c, N_Vector x, N_Vector z) {
+  const sunrealtype* xd = data(x);
+  sunrealtype* zd = data(z);
+  for (sunindextype i = 0, n = size(x); i < n; ++i) zd[i] = std::abs(xd[i]) >= c ? 1.0 : 0.0;
+}
+sunbooleantype inv_test(N_Vector x, N_Vector z) {
+  const sunrealtype* xd = data(x);
+  sunrealtype* zd = data(z);
+  bool ok = true;
+  for (sunindextype i = 0, n = size(x); i < n; ++i) {
+    if (xd[i] == 0) ok = false;
+    else zd[i] = 1.0 / xd[i];
+  }
+  return ok ? SUNTRUE : SUNFALSE;
+}
 int linear_combination(int nvec, sunrealtype* c, N_Vector* X, N_Vector z) {
   sunrealtype* zd = data(z);
   const sunindextype n = size(z);
@@ -127,8 +199,20 @@ int scale_add_multi(int nvec, sunrealtype* a, N_Vector x, N_Vector* Y, N_Vector*
   return 0;
 }
 
-void install(N_Vector v) {
+// A vector of n zeros with every operation CVODE, its Newton and fixed-point solvers and the block
+// linear solver below use.
+N_Vector make(sunindextype n, SUNContext ctx) {
+  N_Vector v = N_VNewEmpty(ctx);
+  if (!v) return nullptr;
   N_Vector_Ops ops = v->ops;
+  ops->nvgetvectorid = get_id;
+  ops->nvclone = clone;
+  ops->nvcloneempty = clone_empty;
+  ops->nvdestroy = destroy;
+  ops->nvspace = space;
+  ops->nvgetarraypointer = array_pointer;
+  ops->nvsetarraypointer = set_array_pointer;
+  ops->nvgetlength = length;
   ops->nvlinearsum = linear_sum;
   ops->nvconst = constant;
   ops->nvprod = prod;
@@ -137,14 +221,122 @@ void install(N_Vector v) {
   ops->nvabs = abs;
   ops->nvinv = inv;
   ops->nvaddconst = add_const;
+  ops->nvdotprod = dot;
   ops->nvmaxnorm = max_norm;
   ops->nvwrmsnorm = wrms_norm;
+  ops->nvmin = min;
+  ops->nvcompare = compare;
+  ops->nvinvtest = inv_test;
   ops->nvwsqrsumlocal = wsqr_sum;
   ops->nvlinearcombination = linear_combination;
   ops->nvscaleaddmulti = scale_add_multi;
+  v->content = new Content{n, new sunrealtype[static_cast<std::size_t>(n)](), true};
+  return v;
 }
 
-}  // namespace kernels
+}  // namespace vector
+
+// ---------------------------------------------------------------------------------------------------
+// BDF's Newton matrix I - gamma J. Every column of Y obeys the same ODE, so J is block diagonal with
+// identical 6x6 blocks A(theta): the matrix type stores that one block, and the linear solver factors
+// it once (Eigen, partial pivoting) and solves every column with it. Debian's -O0 dense 42x42 LU took
+// 82 % of a BDF solve.
+namespace block {
+
+using Block = Eigen::Matrix<sunrealtype, kStateSize, kStateSize>;
+
+Block& of(SUNMatrix A) { return *static_cast<Block*>(A->content); }
+
+SUNMatrix_ID get_id(SUNMatrix) { return SUNMATRIX_CUSTOM; }
+void destroy(SUNMatrix A) {
+  if (!A) return;
+  delete static_cast<Block*>(A->content);
+  A->content = nullptr;
+  SUNMatFreeEmpty(A);
+}
+SUNMatrix clone(SUNMatrix A) {
+  SUNMatrix B = SUNMatNewEmpty(A->sunctx);
+  if (!B) return nullptr;
+  if (SUNMatCopyOps(A, B) != 0) {
+    SUNMatFreeEmpty(B);
+    return nullptr;
+  }
+  B->content = new Block(Block::Zero());
+  return B;
+}
+int zero(SUNMatrix A) {
+  of(A).setZero();
+  return 0;
+}
+int copy(SUNMatrix A, SUNMatrix B) {
+  of(B) = of(A);
+  return 0;
+}
+int scale_add_identity(sunrealtype c, SUNMatrix A) {  // A = c A + I
+  of(A) = c * of(A) + Block::Identity();
+  return 0;
+}
+int scale_add(sunrealtype c, SUNMatrix A, SUNMatrix B) {  // A = c A + B
+  of(A) = c * of(A) + of(B);
+  return 0;
+}
+
+SUNMatrix make_matrix(SUNContext ctx) {
+  SUNMatrix A = SUNMatNewEmpty(ctx);
+  if (!A) return nullptr;
+  A->ops->getid = get_id;
+  A->ops->clone = clone;
+  A->ops->destroy = destroy;
+  A->ops->zero = zero;
+  A->ops->copy = copy;
+  A->ops->scaleaddi = scale_add_identity;
+  A->ops->scaleadd = scale_add;
+  A->content = new Block(Block::Zero());
+  return A;
+}
+
+using Factor = Eigen::PartialPivLU<Block>;
+Factor& factor_of(SUNLinearSolver S) { return *static_cast<Factor*>(S->content); }
+
+SUNLinearSolver_Type get_type(SUNLinearSolver) { return SUNLINEARSOLVER_DIRECT; }
+SUNLinearSolver_ID get_solver_id(SUNLinearSolver) { return SUNLINEARSOLVER_CUSTOM; }
+int initialize(SUNLinearSolver) { return SUNLS_SUCCESS; }
+int setup(SUNLinearSolver S, SUNMatrix A) {
+  factor_of(S).compute(of(A));
+  // Partial pivoting never fails; a zero pivot shows as a non-finite inverse estimate.
+  return factor_of(S).rcond() > 0 ? SUNLS_SUCCESS : SUNLS_LUFACT_FAIL;
+}
+int solve(SUNLinearSolver S, SUNMatrix, N_Vector x, N_Vector b, sunrealtype) {
+  const sunindextype columns = vector::size(b) / kStateSize;
+  Eigen::Map<const Eigen::Matrix<sunrealtype, kStateSize, Eigen::Dynamic>> B(vector::data(b), kStateSize, columns);
+  Eigen::Map<Eigen::Matrix<sunrealtype, kStateSize, Eigen::Dynamic>> X(vector::data(x), kStateSize, columns);
+  X = factor_of(S).solve(B);
+  return SUNLS_SUCCESS;
+}
+sunindextype last_flag(SUNLinearSolver) { return 0; }
+int free_solver(SUNLinearSolver S) {
+  if (!S) return 0;
+  delete static_cast<Factor*>(S->content);
+  S->content = nullptr;
+  SUNLinSolFreeEmpty(S);
+  return 0;
+}
+
+SUNLinearSolver make_solver(SUNContext ctx) {
+  SUNLinearSolver S = SUNLinSolNewEmpty(ctx);
+  if (!S) return nullptr;
+  S->ops->gettype = get_type;
+  S->ops->getid = get_solver_id;
+  S->ops->initialize = initialize;
+  S->ops->setup = setup;
+  S->ops->solve = solve;
+  S->ops->lastflag = last_flag;
+  S->ops->free = free_solver;
+  S->content = new Factor(kStateSize);
+  return S;
+}
+
+}  // namespace block
 
 }  // namespace
 
@@ -176,15 +368,11 @@ struct CvodeIntegrator::Impl {
     return 0;
   }
 
+  // The Jacobian's one block (the block matrix type above stores only that).
   static int jac(sunrealtype s, N_Vector, N_Vector, SUNMatrix J, void* user_data, N_Vector, N_Vector,
                  N_Vector) {
     const auto* self = static_cast<const Impl*>(user_data);
-    const SystemMatrix A = self->model.system_matrix(self->model.theta(s));
-    SUNMatZero(J);
-    for (int c = 0; c < self->columns; ++c)
-      for (int j = 0; j < kStateSize; ++j)
-        for (int i = 0; i < kStateSize; ++i)
-          if (A(i, j) != 0.0) SM_ELEMENT_D(J, c * kStateSize + i, c * kStateSize + j) = A(i, j);
+    block::of(J) = self->model.system_matrix(self->model.theta(s));
     return 0;
   }
 
@@ -201,10 +389,8 @@ CvodeIntegrator::CvodeIntegrator(const ArchModel& model, Integrator kind, double
   check(SUNContext_Create(nullptr, &ctx), "SUNContext_Create");
   m.context.reset(ctx);
   const sunindextype n = static_cast<sunindextype>(kStateSize) * columns;
-  m.y.reset(N_VNew_Serial(n, ctx));
-  if (!m.y) throw std::runtime_error("N_VNew_Serial failed");
-  kernels::install(m.y.get());
-  N_VConst(0.0, m.y.get());
+  m.y.reset(vector::make(n, ctx));
+  if (!m.y) throw std::runtime_error("N_VNewEmpty failed");
   m.cvode.reset(CVodeCreate(kind == Integrator::adams ? CV_ADAMS : CV_BDF, ctx));
   if (!m.cvode) throw std::runtime_error("CVodeCreate failed");
   void* mem = m.cvode.get();
@@ -218,10 +404,10 @@ CvodeIntegrator::CvodeIntegrator(const ArchModel& model, Integrator kind, double
     if (!m.nonlinear_solver) throw std::runtime_error("SUNNonlinSol_FixedPoint failed");
     check(CVodeSetNonlinearSolver(mem, m.nonlinear_solver.get()), "CVodeSetNonlinearSolver");
   } else {
-    m.jacobian.reset(SUNDenseMatrix(n, n, ctx));
-    if (!m.jacobian) throw std::runtime_error("SUNDenseMatrix failed");
-    m.linear_solver.reset(SUNLinSol_Dense(m.y.get(), m.jacobian.get(), ctx));
-    if (!m.linear_solver) throw std::runtime_error("SUNLinSol_Dense failed");
+    m.jacobian.reset(block::make_matrix(ctx));
+    if (!m.jacobian) throw std::runtime_error("SUNMatNewEmpty failed");
+    m.linear_solver.reset(block::make_solver(ctx));
+    if (!m.linear_solver) throw std::runtime_error("SUNLinSolNewEmpty failed");
     check(CVodeSetLinearSolver(mem, m.linear_solver.get(), m.jacobian.get()), "CVodeSetLinearSolver");
     check(CVodeSetJacFn(mem, &Impl::jac), "CVodeSetJacFn");
   }

@@ -38,7 +38,8 @@ class CvodeIntegrator {
   using Observer = std::function<void(std::size_t, const Matrix&)>;
 
   // Adams uses CVODE's fixed-point (functional) iteration: the system is not stiff. BDF uses Newton
-  // with the dense direct solver and the analytic Jacobian (block diagonal, A(theta) per column).
+  // with the analytic Jacobian, block diagonal with A(theta) in every column's block, and a linear
+  // solver that factors that one 6x6 block. Vectors are ogive's own N_Vector type.
   // atol applies to every scaled component. restart_at_breakpoints = false lets steps straddle the
   // curve's jumps of curvature (for studies only). Throws std::runtime_error if SUNDIALS cannot allocate.
   CvodeIntegrator(const ArchModel& model, Integrator kind, double rtol, double atol,

@@ -20,16 +20,9 @@ void require_positive(const char* field, double value) {
 
 }  // namespace
 
-double max_thickness(const Curve& curve) {
-  double max_curvature = 0;
-  for (const CircularArc& arc : curve.arcs()) max_curvature = std::max(max_curvature, std::abs(arc.kappa));
-  if (curve.arcs().empty()) {
-    constexpr int kSamples = 512;
-    for (int i = 0; i <= kSamples; ++i)
-      max_curvature = std::max(max_curvature, std::abs(curve.at(curve.half_length() * i / kSamples).kappa));
-  }
-  return 2.0 / max_curvature;
-}
+// The curve knows its largest curvature (exactly or cached at construction): validating a scene does
+// not evaluate the curve again (it used to sample 513 points, 20-67 % of a raw CVODE solve).
+double max_thickness(const Curve& curve) { return 2.0 / curve.max_curvature(); }
 
 void Scene::validate() const {
   if (!curve) throw std::invalid_argument("curve: a scene needs a generator curve");

@@ -10,6 +10,7 @@
 
 #include "bvp.hpp"
 #include "ogive/closed_form.hpp"
+#include "ogive/quadrature.hpp"
 #include "ogive/shooting.hpp"
 
 namespace ogive {
@@ -20,6 +21,7 @@ const char* to_string(Method m) {
     case Method::shooting: return "shooting";
     case Method::multiple_shooting: return "multiple-shooting";
     case Method::automatic: return "auto";
+    case Method::quadrature: return "quadrature";
   }
   return "?";
 }
@@ -175,18 +177,14 @@ void add_work(Diagnostics& to, const Diagnostics& from) {
   to.jacobian_evaluations += from.jacobian_evaluations;
 }
 
-// The larger of the relative differences of H and of the profiles (when both carry one). H is measured
-// against max(|H|, V / 100): under support spreading H passes through zero, where no relative error of
-// H means anything, and its absolute error is then held to rtol V / 100.
-double solution_difference(const Solution& a, const Solution& b) {
-  if (!a.field || !b.field) return std::numeric_limits<double>::quiet_NaN();
-  const double H = std::abs(a.H - b.H) / std::max(std::abs(b.H), std::abs(b.V) / 100);
-  if (b.profile.empty()) return H;
-  return std::max(H, profile_difference(a.profile, b.profile, b.model->scene().thickness));
-}
-
 Solution solve_once(const std::shared_ptr<const ArchModel>& model, const Options& options, Method method,
                     int segments) {
+  if (method == Method::quadrature) {
+    // It samples its profile itself (its error estimate compares two degrees' profiles).
+    Options capped = options;
+    capped.stations = std::min(options.stations, kVerificationStations);
+    return solve_quadrature(model, capped);
+  }
   Solution sol = method == Method::closed_form ? solve_closed_form(model, options)
                                                : solve_shooting(model, options, segments);
   if (sol.field && options.stations > 0) sample_profile(sol, std::min(options.stations, kVerificationStations));
@@ -266,8 +264,10 @@ void judge_solution(Solution& sol, double rtol) {
 // hand the method a tighter options.rtol).
 Solution solve_with(const std::shared_ptr<const ArchModel>& model, const Options& options, Method method,
                     int segments, double asked) {
-  Solution sol = method == Method::closed_form || !options.verify ? solve_once(model, options, method, segments)
-                                                                  : solve_verified(model, options, method, segments);
+  // The closed form needs no second solve (its error is round-off), the quadrature has its own estimate.
+  const bool own_estimate = method == Method::closed_form || method == Method::quadrature;
+  Solution sol = own_estimate || !options.verify ? solve_once(model, options, method, segments)
+                                                 : solve_verified(model, options, method, segments);
   judge_solution(sol, asked);
   // The profile was compared at kVerificationStations at most; the printed one has every station.
   if (sol.field && options.stations > kVerificationStations) sample_profile(sol, options.stations);
@@ -275,6 +275,15 @@ Solution solve_with(const std::shared_ptr<const ArchModel>& model, const Options
 }
 
 }  // namespace
+
+// H is measured against max(|H|, V / 100): under support spreading H passes through zero, where no
+// relative error of H means anything, and its absolute error is then held to rtol V / 100.
+double solution_difference(const Solution& a, const Solution& b) {
+  if (!a.field || !b.field) return std::numeric_limits<double>::quiet_NaN();
+  const double H = std::abs(a.H - b.H) / std::max(std::abs(b.H), std::abs(b.V) / 100);
+  if (b.profile.empty()) return H;
+  return std::max(H, profile_difference(a.profile, b.profile, b.model->scene().thickness));
+}
 
 double profile_difference(const std::vector<ArchState>& profile, const std::vector<ArchState>& reference,
                           double thickness) {
@@ -313,10 +322,19 @@ Solution solve(const Scene& scene, const Options& options) {
     case Method::shooting: return solve_with(model, options, Method::shooting, 1, options.rtol);
     case Method::multiple_shooting:
       return solve_with(model, options, Method::multiple_shooting, options.segments, options.rtol);
+    case Method::quadrature: return solve_with(model, options, Method::quadrature, 0, options.rtol);
     case Method::automatic: break;
   }
   // The smallest model that meets rtol. The closed form is exact to round-off where it applies.
   if (!scene.curve->arcs().empty()) return solve_with(model, options, Method::closed_form, 0, options.rtol);
+  // On smooth curves (and between a survey's points) the quadrature method, as fast as the closed form,
+  // with its own error estimate; where that does not meet rtol, CVODE shooting below. (Conditioning is
+  // the boundary-value problem's, the same for every method: CVODE would not cure it.)
+  {
+    Solution quadrature = solve_with(model, options, Method::quadrature, 0, options.rtol);
+    if (quadrature.status != Status::tolerance_not_met && quadrature.status != Status::not_applicable)
+      return quadrature;
+  }
   // Otherwise verified shooting with 1, 2, 4, ... 64 segments (breakpoints add more) while each doubling
   // at least halves the error estimate: more segments shorten the spans over which integration errors
   // grow and cancel. Where segments stop helping (a thin near-funicular arch, whose eccentricity in kern

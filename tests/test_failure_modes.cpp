@@ -110,7 +110,7 @@ TEST_CASE("failure mode: steps across jumps of curvature - H/V off by up to 37 r
   CHECK(within_tolerance(true_error(restarted, ref, scene), rtol));
 }
 
-TEST_CASE("failure mode: a rough survey - single shooting's profile at 67 rtol - flagged - auto adds segments") {
+TEST_CASE("failure mode: a rough survey - single shooting's profile at 67 rtol - flagged - auto meets rtol") {
   const Scene scene = scene_of(read_points_curve(kSurvey));
   const Solution ref = reference(scene);
   REQUIRE(ref.field);
@@ -120,11 +120,19 @@ TEST_CASE("failure mode: a rough survey - single shooting's profile at 67 rtol -
   CHECK(true_error(raw, ref, scene) > 10 * rtol);
   const Solution verified = run(scene, Method::shooting, Integrator::adams, rtol, true);
   CHECK(verified.status == Status::tolerance_not_met);
+  // auto: the quadrature method between the survey's points, its own estimate within rtol.
   const Solution chosen = run(scene, Method::automatic, Integrator::adams, rtol, true);
   REQUIRE(chosen.ok());
-  CHECK(chosen.method == Method::multiple_shooting);
+  CHECK(chosen.method == Method::quadrature);
   CHECK(within_tolerance(chosen.diagnostics.error_estimate, rtol));
   CHECK(within_tolerance(true_error(chosen, ref, scene), rtol));
+  // Told to ignore the breakpoints, the quadrature does not apply, and auto's CVODE ladder adds
+  // segments until the verified estimate meets rtol.
+  const Solution ladder = run(scene, Method::automatic, Integrator::adams, rtol, true, false);
+  REQUIRE(ladder.ok());
+  CHECK(ladder.method == Method::multiple_shooting);
+  CHECK(within_tolerance(ladder.diagnostics.error_estimate, rtol));
+  CHECK(within_tolerance(true_error(ladder, ref, scene), rtol));
 }
 
 TEST_CASE("conditioning: flat segmental arches meet rtol 1e-12 - ill_conditioned only where condition x round-off exceeds rtol") {
@@ -197,17 +205,29 @@ TEST_CASE("verification: over corners of the map every verified success is withi
   CHECK(flagged > 0);
 }
 
-TEST_CASE("auto: the closed form on circular arcs - one shooting segment where it meets rtol - more where asked") {
+TEST_CASE("auto: the closed form on circular arcs - the quadrature on smooth curves - CVODE where it does not apply") {
   Options o;  // Method::automatic by default
   CHECK(solve(paper_scene(0.5), o).method == Method::closed_form);
   CHECK(solve(scene_of(make_four_centred(10.0, 0.5)), o).method == Method::closed_form);
   const Scene catenary = scene_of(make_catenary(10.0, 0.5));
   const Solution thrust_only = solve(catenary, o);
   REQUIRE(thrust_only.ok());
-  CHECK(thrust_only.method == Method::shooting);
-  CHECK(thrust_only.diagnostics.segments == 1);
+  CHECK(thrust_only.method == Method::quadrature);
+  CHECK(thrust_only.diagnostics.segments == 1);  // one panel: the catenary has no breakpoints
   CHECK(thrust_only.profile.empty());  // stations only when asked for
   CHECK(std::isfinite(thrust_only.diagnostics.error_estimate));
+  // A parabola sampled at 40 points, without its breakpoints: the quadrature does not apply; verified
+  // shooting meets rtol (with the segments it needs).
+  Options no_breakpoints = o;
+  no_breakpoints.restart_at_breakpoints = false;
+  const Scene survey = scene_of(read_points_curve(OGIVE_DATA_DIR "/curves/parabola-40.csv"));
+  Options quadrature = no_breakpoints;
+  quadrature.method = Method::quadrature;
+  CHECK(solve(survey, quadrature).status == Status::not_applicable);
+  const Solution fallback = solve(survey, no_breakpoints);
+  REQUIRE(fallback.ok());
+  CHECK(fallback.method != Method::quadrature);
+  CHECK(within_tolerance(fallback.diagnostics.error_estimate, o.rtol));
 }
 
 TEST_CASE("no silent numbers: e is undefined where N = 0 - never an unbounded number") {

@@ -77,6 +77,9 @@ class ArchModel {
   static StateVector load() { return StateVector::Unit(kFy); }  // b
   // dy = A(theta(s)) y + load_factor * b; y and dy hold kStateSize doubles each.
   void rhs(double s, const double* y, double* dy, double load_factor = 1.0) const;
+  // The same at the angle whose cosine and sine are c and sn (the one place of this arithmetic; inline:
+  // the quadrature calls it at every node).
+  void derivative(double c, double sn, const double* y, double* dy, double load_factor = 1.0) const;
   // Interior breakpoints of the half arch, scaled.
   std::vector<double> breakpoints() const;
   BoundaryConditions boundary_conditions() const;
@@ -99,5 +102,18 @@ class ArchModel {
   Scales scales_;
   double half_length_, a_N_, a_V_, d_;
 };
+
+// The six equations of the header comment.
+inline void ArchModel::derivative(double c, double sn, const double* y, double* dy, double load_factor) const {
+  const double N = c * y[kFx] + sn * y[kFy];
+  const double V = -sn * y[kFx] + c * y[kFy];
+  const double rot = a_V_ * V + y[kPsi];
+  dy[kUx] = a_N_ * N * c - rot * sn;
+  dy[kUy] = a_N_ * N * sn + rot * c;
+  dy[kPsi] = y[kM];
+  dy[kFx] = 0.0;
+  dy[kFy] = load_factor;
+  dy[kM] = sn * y[kFx] - c * y[kFy];
+}
 
 }  // namespace ogive

@@ -31,6 +31,13 @@ struct CurvePoint {
   double kappa = 0;  // 1/m
 };
 
+// A point of the half arch given by a curve's own parameter t (see Curve::parameter_knots).
+struct ParameterPoint {
+  double s = 0;                  // m, arc length at t
+  double speed = 0;              // ds/dt (> 0)
+  double cos = 1, sin = 0;       // the unit tangent: cos theta, sin theta (no trigonometric call needed)
+};
+
 // A circular arc (or a straight piece when kappa == 0) of a piecewise-circular curve.
 struct CircularArc {
   double s_start = 0;  // m, arc length at the arc's start
@@ -46,6 +53,9 @@ class Curve {
   virtual double span() const = 0;         // L, m
   virtual double half_length() const = 0;  // S, m
   virtual CurvePoint at(double s) const = 0;
+  // at(s).theta alone: what the integrators and the quadrature ask for at every node or right-hand
+  // side. Families override it where the angle is cheaper than the point (same value to round-off).
+  virtual double angle(double s) const { return at(s).theta; }
   // Interior arc lengths where the curvature or its derivative jumps: integrators restart there.
   virtual std::vector<double> breakpoints() const { return {}; }
   // Non-empty exactly when the curve is piecewise circular; then the closed form applies arc by arc.
@@ -56,6 +66,17 @@ class Curve {
   CurvePoint at_whole_arch(double s) const;
   // Integral of x(s) ds over the half arch (m^2): the weight's moment about the springing per unit w.
   virtual double first_moment_x() const;
+  // A parameter of the curve's own, t, increasing from the springing to the crown, in which arc length and
+  // angle are explicit (no inversion of s(t)): the quadrature method places its nodes in t then. The
+  // knots are t at the springing, at every breakpoint (in order) and at the crown; empty (the default)
+  // when the curve has no such parameter. at_parameter(t) for t within the knots; parameter_at(s) is its
+  // inverse. Both throw std::logic_error on a curve without a parameter.
+  virtual std::vector<double> parameter_knots() const { return {}; }
+  virtual ParameterPoint at_parameter(double t) const;
+  virtual double parameter_at(double s) const;
+  // The largest |kappa| over the half arch (1/m). The families know it exactly or cached it at
+  // construction; this default samples 513 points of at(s) on every call.
+  virtual double max_curvature() const;
 };
 
 // A curve made of circular arcs that join with a continuous position (tangent jumps are allowed only at
@@ -67,15 +88,18 @@ class PiecewiseCircularCurve final : public Curve {
   double span() const override { return span_; }
   double half_length() const override { return half_length_; }
   CurvePoint at(double s) const override;
+  double angle(double s) const override;
   std::vector<double> breakpoints() const override;
   std::span<const CircularArc> arcs() const override { return arcs_; }
   double first_moment_x() const override;
+  double max_curvature() const override;
 
  private:
   std::string family_;
   double span_;
   double half_length_;
   std::vector<CircularArc> arcs_;
+  const CircularArc& arc_at(double s) const;  // the last arc whose start is <= s (the first before it)
 };
 
 // The mirror image about x = span/2 of a left-half point, its tangent pointing on towards the right

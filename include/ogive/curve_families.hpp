@@ -93,7 +93,9 @@ double catenary_parameter(double span, double rise_ratio);
 // inside each piece and have a non-vanishing speed), then calls build_arc_length from its constructor.
 // The arc length is tabulated on panels (adaptive 16-point Gauss-Legendre, never crossing a knot, each
 // panel's integral agreeing with its two halves' sum to 4e-15 relative); at(s) finds t by safeguarded
-// Newton on s(t), which is accurate to round-off.
+// Newton on s(t), which is accurate to round-off: s(t) is a Chebyshev table per panel (checked against
+// the Gauss integral to 2e-15 of the panel at construction), or the Gauss integral itself where the
+// table disagrees.
 class ParametricCurve : public Curve {
  public:
   struct Jet {
@@ -104,9 +106,14 @@ class ParametricCurve : public Curve {
   double half_length() const override { return s_.back(); }
   CurvePoint at(double s) const override;
   double first_moment_x() const override { return first_moment_; }
+  // The largest |kappa| at the arc-length panels' ends and Gauss nodes, found while tabulating.
+  double max_curvature() const override { return max_curvature_; }
   // The parameter t at arc length s (exact table values at the panel ends, so at(0) and at(S) are the
   // curve's end points exactly).
-  double parameter_at(double s) const;
+  double parameter_at(double s) const override;
+  // The knots given to build_arc_length, and the arc length, angle and speed at t without inversion.
+  std::vector<double> parameter_knots() const override { return knots_; }
+  ParameterPoint at_parameter(double t) const override;
 
  protected:
   // piece: the index of the knot interval that contains t (t may lie slightly outside it when
@@ -131,10 +138,21 @@ class ParametricCurve : public Curve {
   std::pair<double, std::size_t> locate(double s) const;  // t and its piece
   double speed(double t, std::size_t piece) const;
   double integral_of_speed(double t0, double t1, std::size_t piece) const;
+  std::vector<double> knots_;       // as given to build_arc_length
   std::vector<double> t_;           // panel ends, size P + 1
   std::vector<double> s_;           // arc length at the panel ends
   std::vector<std::size_t> piece_;  // the knot interval of each panel, size P
+  // Per panel, the Chebyshev coefficients (degree kArcTableDegree, in t mapped to [-1, 1]) of
+  // s(t) - s(panel start), so that at(s) inverts a polynomial (one jet per Newton step) instead of a
+  // 16-point Gauss integral per step; not ok for a panel where the table disagrees with the Gauss
+  // integral by more than kArcTableTolerance (that panel keeps the Gauss inversion).
+  static constexpr int kArcTableDegree = 16;
+  static constexpr double kArcTableTolerance = 2e-15;  // relative to the panel's length
+  std::vector<double> arc_table_;
+  std::vector<bool> arc_table_ok_;
+  void build_arc_table();
   double first_moment_ = 0;
+  double max_curvature_ = 0;
 };
 
 // ---------------------------------------------------------------------------------------------------

@@ -21,8 +21,11 @@ enum class Method {
   closed_form,        // matrix exponential arc by arc; piecewise-circular curves only
   shooting,           // CVODE, one shooting segment over the half arch
   multiple_shooting,  // CVODE, Options::segments segments joined by continuity
-  automatic,          // the smallest model that meets rtol: the closed form where it applies, else
-                      // shooting with 1, 2, 4, ... 64 segments until the error estimate meets rtol
+  automatic,          // the smallest model that meets rtol: the closed form where it applies, else the
+                      // quadrature method where its estimate meets rtol, else shooting with 1, 2, 4, ...
+                      // 64 segments until the error estimate meets rtol
+  quadrature,         // the force method: nested Chebyshev integrals per panel, its own error estimate
+                      // (include/ogive/quadrature.hpp); any curve
 };
 enum class Integrator { adams, bdf };
 
@@ -82,10 +85,10 @@ struct Options {
 // Plain numbers describing how the solution was found.
 struct Diagnostics {
   std::int64_t steps = 0;                // CVODE steps over all spans (0 for the closed form)
-  std::int64_t rhs_evaluations = 0;      // right-hand-side evaluations (CVODE)
+  std::int64_t rhs_evaluations = 0;      // right-hand-side evaluations (CVODE); angle evaluations (quadrature)
   std::int64_t error_test_failures = 0;  // CVODE local error test failures
   std::int64_t jacobian_evaluations = 0; // CVODE Jacobian evaluations (BDF)
-  int segments = 0;                      // shooting segments used (arcs for the closed form)
+  int segments = 0;                      // shooting segments used (arcs for the closed form, panels for the quadrature)
   // Skeel's condition number cond(Q) = || |Q^-1| |Q| ||_inf of the 3 x 3 boundary-value matrix
   // Q = B_crown Phi(S) U of the scaled problem (U: the springing state's three unknown directions; the
   // other three are given), invariant to the scaling of its rows. Every method reports the condition
@@ -98,8 +101,9 @@ struct Diagnostics {
   // round-off. CVODE methods (verified): the difference between a solve at rtol and one at rtol / 16, of
   // H relative to max(|H|, V / 100) (H crosses zero under support spreading) and, with a profile,
   // profile_difference; the tighter solution is the one returned, so its own error is smaller still
-  // whenever the second solve is at least twice as accurate as the first. The closed form: its
-  // round-off bound alone. NaN when not estimated (status unverified, or a failed solve).
+  // whenever the second solve is at least twice as accurate as the first. The quadrature method: the
+  // same difference between its last two degrees (quadrature.hpp). The closed form: its round-off
+  // bound alone. NaN when not estimated (status unverified, or a failed solve).
   double error_estimate = std::numeric_limits<double>::quiet_NaN();
 };
 

@@ -86,7 +86,7 @@ struct RegionMoments {
                  double a, double b) {
     double from = a;
     auto piece = [&](double to) {
-      add(gauss_legendre_8(
+      add(gauss_legendre_integral<8>(
           [&](double s) -> Eigen::Vector3d {
             const CurvePoint q = axis_at(curve, s);
             Eigen::Vector3d sum = Eigen::Vector3d::Zero();
@@ -210,7 +210,7 @@ Ring make_ring(const Curve& curve, double thickness, double unit_weight, const L
       left[k] = {unit_weight * r.area, Eigen::Vector2d(r.sx / r.area, r.sy / r.area)};
     } else {
       // rho g t per length of axis, at the centroid of the voussoir's piece of axis.
-      const Eigen::Vector2d first = gauss_legendre_8(
+      const Eigen::Vector2d first = gauss_legendre_integral<8>(
           [&](double s) -> Eigen::Vector2d { return face_at(curve, 0.0, s).p; }, a.joint.s, b.joint.s);
       const double length = b.joint.s - a.joint.s;
       left[k] = {unit_weight * thickness * length, first / length};
