@@ -143,9 +143,18 @@ inline void check_cli_value(std::string_view text, const std::vector<double>& va
   require(e.empty(), "{}a CSV run printed on stderr: {}", where, e);
   const auto rows = split(o, '\n');
   const std::size_t per_scene = geometry ? 3 : 1;
+  // A value that makes no scene with the others (a span outside the curves' range, say) is one row
+  // that says so (status invalid_scene, exit 3); every other scene gives per_scene rows.
+  const std::size_t status_column = column_index(rows.front(), "status");
+  require(status_column != std::string_view::npos, "{}no column status in the CSV", where);
+  std::size_t invalid = 0;
+  for (std::size_t r = 1; r + 1 < rows.size(); ++r)
+    invalid += ogive::test::csv_fields(rows[r]).at(status_column) == "invalid_scene" ? 1 : 0;
+  require(invalid <= values.size(), "{}{} invalid scenes of {}", where, invalid, values.size());
+  if (invalid > 0) require(status == ogive::cli::kExitNotConverged, "{}an invalid scene with exit {}", where, status);
   // header, rows, and the empty string after the last "\n"
-  require(rows.size() == 2 + values.size() * per_scene && rows.back().empty(),
-          "{}{} values gave {} lines of CSV", where, values.size(), rows.size() - 1);
+  require(rows.size() == 2 + (values.size() - invalid) * per_scene + invalid && rows.back().empty(),
+          "{}{} values ({} invalid) gave {} lines of CSV", where, values.size(), invalid, rows.size() - 1);
   const std::size_t width = split(rows.front(), ',').size();
   const std::size_t status_col = column_index(rows.front(), "status");
   // The CSV prints a number that is not finite as an empty field: the columns that a geometry row, or
@@ -159,7 +168,7 @@ inline void check_cli_value(std::string_view text, const std::vector<double>& va
   for (std::size_t r = 1; r + 1 < rows.size(); ++r) {
     const auto fields = ogive::test::csv_fields(rows[r]);
     require(fields.size() == width, "{}a row's width differs from the header's: {}", where, rows[r]);
-    const bool solved = geometry || (status_col != std::string_view::npos && fields[status_col] == "success");
+    const bool solved = status_col != std::string_view::npos && fields[status_col] == "success";
     if (status == ogive::cli::kExitOk)
       require(solved, "{}exit 0 with a row that is not a success: {}", where, rows[r]);
     if (!solved) continue;
