@@ -10,8 +10,8 @@
 //
 // Error estimate of its own (no second solve): the nodes of degree N are half of those of degree 2N, so
 // the method solves at N = 8, 16, 32, ... 256 per panel, reusing every angle, until the difference
-// between two successive degrees (of H relative to |H| and, with stations, profile_difference) meets
-// rtol, and returns the finer one. Diagnostics::error_estimate is that difference, which bounds the
+// between two successive degrees (of H relative to max(|H|, V / 100), as solution_difference measures
+// it, and, with stations, profile_difference) meets rtol, and returns the finer one. Diagnostics::error_estimate is that difference, which bounds the
 // coarser solution's error and overstates the finer one's, floored at round-off: 10 x eps x the
 // condition estimate (at least 100).
 // The field (Solution::at, profiles) interpolates the nodes' states per panel (barycentric formula),
@@ -26,9 +26,10 @@ namespace ogive {
 
 // Of the Options it reads rtol, stations and restart_at_breakpoints; integrator, atol, segments and
 // max_steps are CVODE's, and verify does not apply (the estimate is the method's own, never skipped).
-// Status success when the estimate meets 10 rtol (the tolerance every method is held to);
-// tolerance_not_met when even degree 256 does not (a curve that is not smooth between its breakpoints);
-// singular_system / ill_conditioned as judged by finish_solution; not_applicable when
+// Status: solve() judges the estimate as every method's (within_tolerance: success when it is at most
+// rtol; tolerance_not_met when even degree 256 does not meet it, a curve that is not smooth between its
+// breakpoints; ill_conditioned when the condition times round-off exceeds rtol); singular_system from
+// finish_solution; not_applicable when
 // Options::restart_at_breakpoints is off on a curve that has breakpoints (a panel across a jump converges
 // too slowly for the estimate to hold). Diagnostics: segments = panels,
 // rhs_evaluations = angle evaluations theta(s), steps = 0.
