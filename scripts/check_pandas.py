@@ -32,7 +32,7 @@ RUNS = [
     (["thrust", "--curve", "catenary", "--rise-ratio", "0.5,2", "--thickness-ratio", "0.5"], None),
     (["profile", "--eccentricity", "0,0.5", "--stations", "11"], ("eccentricity", 0.5, 11)),
     (["profile", "--method", "shooting", "--max-steps", "3"], None),
-    (["check", "--curve", "parabolic", "--rise-ratio", "0.2,0.4"], ("rise_ratio", 0.2, 2)),
+    (["check", "--curve", "parabolic", "--rise-ratio", "0.2,0.4"], ("rise_ratio", 0.2, 3)),  # quadrature, shooting, multiple shooting
     (["curve", "--curve", "elliptical", "--rise-ratio", "0.2:0.4:3", "--stations", "5"], ("rise_ratio", 0.3, 5)),
     (["bench", "--eccentricity", "0.5", "--method", "closed-form,shooting", "--rtol", "1e-6,1e-8", "--repeats", "1"], None),
     (["limit", "--eccentricity", "0:1:5", "--thickness-ratio", "0.15"], ("eccentricity", 0.25, 1)),
