@@ -287,8 +287,8 @@ Solution solve_quadrature(std::shared_ptr<const ArchModel> model, const Options&
     for (Panel& p : panels) evaluations += sample_nodes(*model, p, degree);
     Level fine = solve_level(*model, panels, degree);
     const double condition = 1.0 / fine.bvp.rcond;
-    // H = -Fx at the springing times the force scale: its relative difference is that of y0[Fx].
-    double difference = std::abs(coarse.y0[0] - fine.y0[0]) / std::abs(fine.y0[0]);
+    // H = -Fx at the springing times the force scale: its relative difference is that of Fx.
+    double difference = std::abs(coarse.bvp.y0[kFx] - fine.bvp.y0[kFx]) / std::abs(fine.bvp.y0[kFx]);
     if (profiles) {
       sol = make_solution(model, panels, fine, options);
       difference = solution_difference(coarse_solution, sol);
