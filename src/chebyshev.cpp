@@ -57,12 +57,12 @@ ChebyshevRule build_rule(int N) {
 }  // namespace
 
 const ChebyshevRule& chebyshev_rule(int degree) {
-  constexpr int kLevels = 6;  // 8, 16, 32, 64, 128, 256
+  constexpr int kLevels = 7;  // 4, 8, 16, 32, 64, 128, 256
   static_assert(kMinChebyshevDegree << (kLevels - 1) == kMaxChebyshevDegree);
   int level = 0;
   while (level < kLevels && (kMinChebyshevDegree << level) != degree) ++level;
   if (level == kLevels)
-    throw std::invalid_argument("chebyshev_rule: degree must be a power of two in [8, 256], got " +
+    throw std::invalid_argument("chebyshev_rule: degree must be a power of two in [4, 256], got " +
                                 std::to_string(degree));
   static std::once_flag once[kLevels];
   static std::unique_ptr<const ChebyshevRule> rules[kLevels];

@@ -22,8 +22,8 @@ struct ChebyshevRule {
   Eigen::MatrixXd to_coefficients;
 };
 
-// The degrees the quadrature method uses: 8, 16, ..., kMaxChebyshevDegree.
-inline constexpr int kMinChebyshevDegree = 8;
+// The degrees the quadrature method uses: 4, 8, 16, ..., kMaxChebyshevDegree.
+inline constexpr int kMinChebyshevDegree = 4;
 inline constexpr int kMaxChebyshevDegree = 256;
 
 // The rule of that degree (a power of two in [kMinChebyshevDegree, kMaxChebyshevDegree]), built once

@@ -1,7 +1,6 @@
 #include "ogive/curve.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <complex>
 #include <numbers>

@@ -1,7 +1,6 @@
 #include "ogive/curve_families.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>

@@ -67,7 +67,7 @@ class Curve {
   // Integral of x(s) ds over the half arch (m^2): the weight's moment about the springing per unit w.
   virtual double first_moment_x() const;
   // A parameter of the curve's own, t, increasing from the springing to the crown, in which arc length and
-  // angle are explicit (no inversion of s(t)): the quadrature method places its nodes in t then. The
+  // tangent are explicit (no inversion of s(t)): the quadrature method places its nodes in t then. The
   // knots are t at the springing, at every breakpoint (in order) and at the crown; empty (the default)
   // when the curve has no such parameter. at_parameter(t) for t within the knots; parameter_at(s) is its
   // inverse. Both throw std::logic_error on a curve without a parameter.

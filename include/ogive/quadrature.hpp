@@ -9,9 +9,10 @@
 // The six boundary conditions then close the same 6x6 system as the other methods.
 //
 // Error estimate of its own (no second solve): the nodes of degree N are half of those of degree 2N, so
-// the method solves at N = 8, 16, 32, ... 256 per panel, reusing every angle, until the difference
-// between two successive degrees (of H relative to max(|H|, V / 100), as solution_difference measures
-// it, and, with stations, profile_difference) meets rtol, and returns the finer one. Diagnostics::error_estimate is that difference, which bounds the
+// the method solves at N = 8, 16, 32, ... 256 per panel (from 4 when breakpoints cut the arch into
+// several panels), reusing every angle, until the difference between two successive degrees (of H
+// relative to max(|H|, V / 100), as solution_difference measures it, and, with stations,
+// profile_difference) meets rtol, and returns the finer one. Diagnostics::error_estimate is that difference, which bounds the
 // coarser solution's error and overstates the finer one's, floored at round-off: 10 x eps x the
 // condition estimate (at least 100).
 // The field (Solution::at, profiles) interpolates the nodes' states per panel (barycentric formula),
