@@ -58,15 +58,17 @@ Transfer arc_transfer(const ArchModel& model, const CircularArc& arc, double ds0
 // (the crown moment moved by 1.6e-10 between 3 and 999 999 stations).
 class ClosedFormField final : public StateField {
  public:
-  ClosedFormField(std::shared_ptr<const ArchModel> model, const StateVector& y0) : model_(std::move(model)) {
+  // arc_transfers: each arc's whole transfer, already computed for the boundary-value problem.
+  ClosedFormField(std::shared_ptr<const ArchModel> model, const StateVector& y0,
+                  const std::vector<Transfer>& arc_transfers)
+      : model_(std::move(model)) {
     const double L = model_->scales().length;
     StateVector y = y0;
-    for (const CircularArc& arc : model_->scene().curve->arcs()) {
-      const double a0 = arc.s_start / L, a1 = (arc.s_start + arc.length) / L;
-      arc_starts_.push_back(a0);
+    const auto arcs = model_->scene().curve->arcs();
+    for (std::size_t k = 0; k < arcs.size(); ++k) {
+      arc_starts_.push_back(arcs[k].s_start / L);
       start_states_.push_back(y);
-      const Transfer t = closed_form_transfer(*model_, a0, a1);
-      y = t.Phi * y + t.p;
+      y = arc_transfers[k].Phi * y + arc_transfers[k].p;
     }
   }
   void sample(std::span<const double> s, std::span<StateVector> out) const override {
@@ -111,10 +113,18 @@ Solution solve_closed_form(std::shared_ptr<const ArchModel> model, const Options
                   " is not";
     return sol;
   }
-  const Transfer t = closed_form_transfer(*model, 0.0, model->half_length());
+  // One exponential per arc: chained for the boundary-value problem, kept for the field's arc starts.
+  const double L = model->scales().length;
+  std::vector<Transfer> arcs;
+  Transfer t;
+  for (const CircularArc& arc : model->scene().curve->arcs()) {
+    arcs.push_back(arc_transfer(*model, arc, 0.0, arc.length / L));
+    t.Phi = arcs.back().Phi * t.Phi;
+    t.p = arcs.back().Phi * t.p + arcs.back().p;
+  }
   const BvpSolution bvp = solve_single_segment(*model, t.Phi, t.p);
-  sol.diagnostics.segments = static_cast<int>(model->scene().curve->arcs().size());
-  finish_solution(sol, bvp, std::make_shared<ClosedFormField>(model, bvp.y0));
+  sol.diagnostics.segments = static_cast<int>(arcs.size());
+  finish_solution(sol, bvp, std::make_shared<ClosedFormField>(model, bvp.y0, arcs));
   return sol;
 }
 
