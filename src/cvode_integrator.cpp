@@ -340,22 +340,90 @@ SUNLinearSolver make_solver(SUNContext ctx) {
 
 }  // namespace
 
-struct CvodeIntegrator::Impl {
-  const ArchModel& model;
+// The SUNDIALS objects of one kind of integration (method and number of columns): a context, the
+// template vector, the solvers and the CVODE memory. Creating them costs as much as a short
+// integration, so they are kept per thread and reused (CVodeReInit at every span, tolerances and user
+// data set anew at every use): across the segments of multiple shooting, the verifying solve, the
+// profile's sampling and the scenes of a sweep. One context per thread, as SUNDIALS asks.
+struct Workspace {
+  Integrator kind;
   int columns;
-  std::int64_t max_steps;
-  std::vector<double> breakpoints;
-  std::string last_message;  // CVODE's error text, captured instead of printed
+  // Destroyed in reverse order: CVODE's memory before the solvers and vectors it uses, the context last.
   ContextHandle context;
   VectorHandle y;
   MatrixHandle jacobian;
   LinearSolverHandle linear_solver;
   NonlinearSolverHandle nonlinear_solver;
   CvodeHandle cvode;
-  bool initialised = false;
+};
 
-  Impl(const ArchModel& m, int cols, std::int64_t steps, bool restart)
-      : model(m), columns(cols), max_steps(steps), breakpoints(restart ? m.breakpoints() : std::vector<double>{}) {}
+namespace {
+
+// rhs and jac reach the current use's model through CVODE's user data (CvodeIntegrator::Impl).
+std::unique_ptr<Workspace> make_workspace(Integrator kind, int columns, CVRhsFn rhs, CVLsJacFn jac) {
+  auto w = std::make_unique<Workspace>();
+  w->kind = kind;
+  w->columns = columns;
+  SUNContext ctx = nullptr;
+  check(SUNContext_Create(nullptr, &ctx), "SUNContext_Create");
+  w->context.reset(ctx);
+  const sunindextype n = static_cast<sunindextype>(kStateSize) * columns;
+  w->y.reset(vector::make(n, ctx));
+  if (!w->y) throw std::runtime_error("N_VNewEmpty failed");
+  w->cvode.reset(CVodeCreate(kind == Integrator::adams ? CV_ADAMS : CV_BDF, ctx));
+  if (!w->cvode) throw std::runtime_error("CVodeCreate failed");
+  void* mem = w->cvode.get();
+  check(CVodeInit(mem, rhs, 0.0, w->y.get()), "CVodeInit");
+  if (kind == Integrator::adams) {
+    w->nonlinear_solver.reset(SUNNonlinSol_FixedPoint(w->y.get(), 0, ctx));
+    if (!w->nonlinear_solver) throw std::runtime_error("SUNNonlinSol_FixedPoint failed");
+    check(CVodeSetNonlinearSolver(mem, w->nonlinear_solver.get()), "CVodeSetNonlinearSolver");
+  } else {
+    w->jacobian.reset(block::make_matrix(ctx));
+    if (!w->jacobian) throw std::runtime_error("SUNMatNewEmpty failed");
+    w->linear_solver.reset(block::make_solver(ctx));
+    if (!w->linear_solver) throw std::runtime_error("SUNLinSolNewEmpty failed");
+    check(CVodeSetLinearSolver(mem, w->linear_solver.get(), w->jacobian.get()), "CVodeSetLinearSolver");
+    check(CVodeSetJacFn(mem, jac), "CVodeSetJacFn");
+  }
+  return w;
+}
+
+// The idle workspaces of this thread. At most a few kinds are ever in use at once (multiple shooting's
+// 4- and 7-column integrators, the field's 1 column), so the pool stays small.
+std::vector<std::unique_ptr<Workspace>>& idle_workspaces() {
+  thread_local std::vector<std::unique_ptr<Workspace>> pool;
+  return pool;
+}
+
+std::unique_ptr<Workspace> take_workspace(Integrator kind, int columns, CVRhsFn rhs, CVLsJacFn jac) {
+  auto& pool = idle_workspaces();
+  for (auto it = pool.begin(); it != pool.end(); ++it)
+    if ((*it)->kind == kind && (*it)->columns == columns) {
+      std::unique_ptr<Workspace> w = std::move(*it);
+      pool.erase(it);
+      return w;
+    }
+  return make_workspace(kind, columns, rhs, jac);
+}
+
+void return_workspace(std::unique_ptr<Workspace> w) {
+  auto& pool = idle_workspaces();
+  constexpr std::size_t kMaxIdle = 8;
+  if (w && pool.size() < kMaxIdle) pool.push_back(std::move(w));
+}
+
+}  // namespace
+
+struct CvodeIntegrator::Impl {
+  const ArchModel& model;
+  int columns;
+  std::vector<double> breakpoints;
+  std::string last_message;  // CVODE's error text, captured instead of printed
+  std::unique_ptr<Workspace> workspace;
+
+  Impl(const ArchModel& m, int cols, bool restart)
+      : model(m), columns(cols), breakpoints(restart ? m.breakpoints() : std::vector<double>{}) {}
 
   static int rhs(sunrealtype s, N_Vector y, N_Vector ydot, void* user_data) {
     const auto* self = static_cast<const Impl*>(user_data);
@@ -383,45 +451,30 @@ struct CvodeIntegrator::Impl {
 
 CvodeIntegrator::CvodeIntegrator(const ArchModel& model, Integrator kind, double rtol, double atol,
                                  std::int64_t max_steps, int columns, bool restart_at_breakpoints)
-    : impl_(std::make_unique<Impl>(model, columns, max_steps, restart_at_breakpoints)) {
+    : impl_(std::make_unique<Impl>(model, columns, restart_at_breakpoints)) {
   Impl& m = *impl_;
-  SUNContext ctx = nullptr;
-  check(SUNContext_Create(nullptr, &ctx), "SUNContext_Create");
-  m.context.reset(ctx);
-  const sunindextype n = static_cast<sunindextype>(kStateSize) * columns;
-  m.y.reset(vector::make(n, ctx));
-  if (!m.y) throw std::runtime_error("N_VNewEmpty failed");
-  m.cvode.reset(CVodeCreate(kind == Integrator::adams ? CV_ADAMS : CV_BDF, ctx));
-  if (!m.cvode) throw std::runtime_error("CVodeCreate failed");
-  void* mem = m.cvode.get();
+  m.workspace = take_workspace(kind, columns, &Impl::rhs, &Impl::jac);
+  void* mem = m.workspace->cvode.get();
+  // Everything a previous use set is set anew: the error handler's and the functions' data, the
+  // tolerances, the step limit (the stop time and the history are set by every span's CVodeReInit).
   check(CVodeSetErrHandlerFn(mem, &Impl::error_handler, impl_.get()), "CVodeSetErrHandlerFn");
-  check(CVodeInit(mem, &Impl::rhs, 0.0, m.y.get()), "CVodeInit");
-  check(CVodeSStolerances(mem, rtol, atol), "CVodeSStolerances");
   check(CVodeSetUserData(mem, impl_.get()), "CVodeSetUserData");
+  check(CVodeSStolerances(mem, rtol, atol), "CVodeSStolerances");
   check(CVodeSetMaxNumSteps(mem, static_cast<long>(max_steps)), "CVodeSetMaxNumSteps");
-  if (kind == Integrator::adams) {
-    m.nonlinear_solver.reset(SUNNonlinSol_FixedPoint(m.y.get(), 0, ctx));
-    if (!m.nonlinear_solver) throw std::runtime_error("SUNNonlinSol_FixedPoint failed");
-    check(CVodeSetNonlinearSolver(mem, m.nonlinear_solver.get()), "CVodeSetNonlinearSolver");
-  } else {
-    m.jacobian.reset(block::make_matrix(ctx));
-    if (!m.jacobian) throw std::runtime_error("SUNMatNewEmpty failed");
-    m.linear_solver.reset(block::make_solver(ctx));
-    if (!m.linear_solver) throw std::runtime_error("SUNLinSolNewEmpty failed");
-    check(CVodeSetLinearSolver(mem, m.linear_solver.get(), m.jacobian.get()), "CVodeSetLinearSolver");
-    check(CVodeSetJacFn(mem, &Impl::jac), "CVodeSetJacFn");
-  }
 }
 
-CvodeIntegrator::~CvodeIntegrator() = default;
+CvodeIntegrator::~CvodeIntegrator() {
+  if (impl_ && impl_->workspace) return_workspace(std::move(impl_->workspace));
+}
 
 std::optional<IntegrationError> CvodeIntegrator::integrate(double s0, const Matrix& Y0,
                                                            std::span<const double> s_out,
                                                            const Observer& observer) {
   Impl& m = *impl_;
-  void* mem = m.cvode.get();
+  Workspace& w = *m.workspace;
+  void* mem = w.cvode.get();
   const int n = m.columns;
-  Eigen::Map<Matrix> Y(N_VGetArrayPointer(m.y.get()), kStateSize, n);
+  Eigen::Map<Matrix> Y(N_VGetArrayPointer(w.y.get()), kStateSize, n);
   Y = Y0;
   Matrix current = Y0;
   if (s_out.empty()) return std::nullopt;
@@ -438,14 +491,14 @@ std::optional<IntegrationError> CvodeIntegrator::integrate(double s0, const Matr
     const double a = knots[k], b = knots[k + 1];
     if (b <= a) continue;
     Y = current;
-    check(CVodeReInit(mem, a, m.y.get()), "CVodeReInit");
+    check(CVodeReInit(mem, a, w.y.get()), "CVodeReInit");
     check(CVodeSetStopTime(mem, b), "CVodeSetStopTime");
     std::optional<IntegrationError> failure;
     double reached = a;
     // One CVode call to tout; a failure is recorded with the arc length CVODE had reached.
     auto advance = [&](double tout) {
       sunrealtype t = a;
-      const int flag = CVode(mem, tout, m.y.get(), &t, CV_NORMAL);
+      const int flag = CVode(mem, tout, w.y.get(), &t, CV_NORMAL);
       if (flag < 0) {
         sunrealtype t_now = a;
         CVodeGetCurrentTime(mem, &t_now);
@@ -467,7 +520,7 @@ std::optional<IntegrationError> CvodeIntegrator::integrate(double s0, const Matr
     CVodeGetNumSteps(mem, &steps);
     CVodeGetNumRhsEvals(mem, &rhs);
     CVodeGetNumErrTestFails(mem, &etf);
-    if (m.jacobian) CVodeGetNumJacEvals(mem, &jacs);
+    if (w.jacobian) CVodeGetNumJacEvals(mem, &jacs);
     stats_.steps += steps;
     stats_.rhs_evaluations += rhs;
     stats_.error_test_failures += etf;
