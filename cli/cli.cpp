@@ -756,10 +756,11 @@ using Emit = std::function<void(const std::string&)>;
 // returns whether it succeeded; `invalid_row(p, built)` returns the row of an impossible one. Returns
 // whether every scene's row succeeded.
 //
-// With threads > 1, scenes are solved in parallel (each solve owns its SUNDIALS context) and written
-// in order: a worker takes the next scene only while it lies within a window of 4 x threads scenes
-// of the next one to be written, so memory stays bounded and the output is byte-identical to one
-// thread's. The callbacks must not share mutable state between calls.
+// With threads > 1, scenes are solved in parallel (each thread keeps its own SUNDIALS objects) and
+// written in order: a worker takes the next chunk of consecutive scenes (so that locking costs little
+// against scenes of a few microseconds) only while it lies within a window of 4 x threads
+// chunks of the next one to be written, so memory stays bounded and the output is byte-identical to
+// one thread's. The callbacks must not share mutable state between calls.
 template <class Solved, class Invalid>
 bool for_each_scene(const ScenePlan& plan, RowWriter& writer, int threads, Solved rows_of, Invalid invalid_row) {
   // One scene: its rows to emit, and whether it succeeded.
@@ -784,6 +785,9 @@ bool for_each_scene(const ScenePlan& plan, RowWriter& writer, int threads, Solve
     std::string text;
     bool ok = true, done = false;
   };
+  // Chunks of up to 128 scenes, but at least 16 per thread so that a short sweep is shared out too.
+  const std::size_t kChunk = std::clamp<std::size_t>(n / (16 * static_cast<std::size_t>(threads)), 1, 128);
+  const std::size_t chunks = (n + kChunk - 1) / kChunk;
   const std::size_t window = 4 * static_cast<std::size_t>(threads);
   std::vector<Slot> slots(window);
   std::mutex mutex;
@@ -796,13 +800,15 @@ bool for_each_scene(const ScenePlan& plan, RowWriter& writer, int threads, Solve
       std::size_t i;
       {
         std::unique_lock lock(mutex);
-        space.wait(lock, [&] { return stop || next_to_take >= n || next_to_take < next_to_write + window; });
-        if (stop || next_to_take >= n) return;
+        space.wait(lock, [&] { return stop || next_to_take >= chunks || next_to_take < next_to_write + window; });
+        if (stop || next_to_take >= chunks) return;
         i = next_to_take++;
       }
       Slot result;
       try {
-        result.ok = one(i, [&](const std::string& text) { result.text += text; });
+        const Emit into_slot = [&](const std::string& text) { result.text += text; };
+        for (std::size_t scene = i * kChunk; scene < std::min(n, (i + 1) * kChunk); ++scene)
+          result.ok = one(scene, into_slot) && result.ok;
       } catch (...) {
         std::lock_guard lock(mutex);
         if (!failure) failure = std::current_exception();
@@ -834,7 +840,7 @@ bool for_each_scene(const ScenePlan& plan, RowWriter& writer, int threads, Solve
     }
   } joiner{pool, mutex, stop, space};
   for (int t = 0; t < threads; ++t) pool.emplace_back(work);
-  for (std::size_t w = 0; w < n; ++w) {
+  for (std::size_t w = 0; w < chunks; ++w) {
     Slot slot;
     {
       std::unique_lock lock(mutex);

@@ -324,7 +324,8 @@ TEST_CASE("trust: output streams in whole rows - header and first row at once") 
   RecordingBuffer buffer;
   std::ostream out(&buffer);
   std::ostringstream err;
-  REQUIRE(cli::run_cli({"thrust", "--eccentricity", "0:1:3001"}, out, err) == 0);
+  // One thread: the first row on its own. (With several, the first chunk of scenes, at most 128.)
+  REQUIRE(cli::run_cli({"thrust", "--eccentricity", "0:1:3001", "--threads", "1"}, out, err) == 0);
   const auto& pieces = buffer.pieces;
   REQUIRE(pieces.size() >= 4);                      // written in several pieces, not at the end
   CHECK(lines(pieces[0]).size() == 1);              // the header
@@ -335,6 +336,15 @@ TEST_CASE("trust: output streams in whole rows - header and first row at once") 
   // The same bytes as one string: streaming changes when, not what.
   const Run whole = run_command({"thrust", "--eccentricity", "0:1:3001"});
   CHECK(whole.out == buffer.all());
+  // With two threads: whole rows in every piece, the first rows early (one chunk), the same bytes.
+  RecordingBuffer threaded;
+  std::ostream out2(&threaded);
+  REQUIRE(cli::run_cli({"thrust", "--eccentricity", "0:1:3001", "--threads", "2"}, out2, err) == 0);
+  REQUIRE(threaded.pieces.size() >= 4);
+  CHECK(lines(threaded.pieces[1]).size() <= 128);
+  for (const auto& piece : threaded.pieces)
+    if (!piece.empty()) CHECK(piece.back() == '\n');
+  CHECK(threaded.all() == buffer.all());
 }
 
 TEST_CASE("trust: a write error ends the run - one line on stderr - exit 4") {
