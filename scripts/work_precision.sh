@@ -12,9 +12,11 @@
 # If the error_profile column has finite values anywhere, also writes OUTPUT_PREFIX-profile.{png,svg}
 # with x = error_profile.
 #
-# The input may be several CSVs concatenated: every line whose first field is "curve" is a header
+# The input may be several CSVs concatenated: every line whose first field is "scene" (ogive) or "curve"
+# (the scipy peer) is a header
 # and (re)defines the columns by name, so blocks with different columns (e.g. with and without
-# error_profile) mix fine.  Fields must not contain quoted commas (ogive never writes any).
+# error_profile) mix fine.  Only the last column, message, may hold a quoted comma; the columns read
+# here come before it.
 #
 # Needs: bash, awk (mawk or gawk), sort, gnuplot >= 5.4 (Debian: apt-get install -y gnuplot-nox).
 set -euo pipefail
@@ -54,13 +56,13 @@ BEGIN { nseries = 0; nscenes = 0; nrows = 0; nclamped = 0; nheaders = 0 }
 /^[ \t]*$/ { next }
 # first pass over the file: which scene columns (those before "method") do all header blocks share?
 NR == FNR {
-  if ($1 == "curve") {
+  if ($1 == "curve" || $1 == "scene") {
     nheaders++
     for (i = 1; i <= NF && $i != "method"; i++) ncommon[$i]++
   }
   next
 }
-$1 == "curve" {
+$1 == "curve" || $1 == "scene" {
   delete col; nscene_cols = 0
   for (i = 1; i <= NF; i++) col[$i] = i
   for (k = split("method rtol status error_H_over_V median_seconds", need, " "); k > 0; k--)
@@ -72,7 +74,7 @@ $1 == "curve" {
   header = 1
   next
 }
-!header { printf "%s: line %d: data before any header line (first field \"curve\")\n", prog, NR > "/dev/stderr"; bad = 1; exit 2 }
+!header { printf "%s: line %d: data before any header line (first field \"scene\" or \"curve\")\n", prog, NR > "/dev/stderr"; bad = 1; exit 2 }
 {
   method = $(col["method"])
   integ = ("integrator" in col) ? $(col["integrator"]) : "none"
