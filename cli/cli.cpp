@@ -887,20 +887,20 @@ int run_thrust(SceneOptions& so, const CLI::App& cmd, SolverSweep sweep, const C
         bool ok = true;
         std::string text;
         for (const Options& o : sweep.combinations) {
-        CsvRow row(columns.keep());
-        const Solution sol = solve(scene, o);
-        const ThrustLineSummary line = summary ? summarize_thrust_line(sol) : ThrustLineSummary{};
-        add_scene_columns(row, p, scene.curve.get());
-        row.add(to_string(sol.method)).add(integrator_of(sol.method, o)).add(o.rtol);
-        row.add(to_string(sol.status)).add(sol.H).add(sol.V).add(sol.H_over_V);
-        row.add(line.max_abs_e).add(line.max_abs_e_at);
-        if (line.ok) row.add_bool(line.in_kern).add_bool(line.in_section);
-        else row.add(std::string_view{}).add(std::string_view{});
-        const Diagnostics& d = sol.diagnostics;
-        row.add(d.steps).add(d.rhs_evaluations).add(d.segments).add(d.condition_estimate).add(d.error_estimate);
-        row.add(d.boundary_residual).add(d.equilibrium_residual).add(sol.message);
-        text += row.take();
-        ok = ok && sol.ok();
+          CsvRow row(columns.keep());
+          const Solution sol = solve(scene, o);
+          const ThrustLineSummary line = summary ? summarize_thrust_line(sol) : ThrustLineSummary{};
+          add_scene_columns(row, p, scene.curve.get());
+          row.add(to_string(sol.method)).add(integrator_of(sol.method, o)).add(o.rtol);
+          row.add(to_string(sol.status)).add(sol.H).add(sol.V).add(sol.H_over_V);
+          row.add(line.max_abs_e).add(line.max_abs_e_at);
+          if (line.ok) row.add_bool(line.in_kern).add_bool(line.in_section);
+          else row.add(std::string_view{}).add(std::string_view{});
+          const Diagnostics& d = sol.diagnostics;
+          row.add(d.steps).add(d.rhs_evaluations).add(d.segments).add(d.condition_estimate).add(d.error_estimate);
+          row.add(d.boundary_residual).add(d.equilibrium_residual).add(sol.message);
+          text += row.take();
+          ok = ok && sol.ok();
         }
         emit(text);
         return ok;
@@ -1046,30 +1046,30 @@ int run_check(SceneOptions& so, const CLI::App& cmd, const SolverSweep& sweep, c
         bool ok = true;
         std::string text;
         for (const Options& base : sweep.combinations) {
-        const Solution reference = reference_solution(scene, base);
-        const std::string reference_method = reference.method == Method::closed_form
-                                                 ? "closed-form"
-                                                 : fmt::format("multiple-shooting rtol {}", reference_rtol(base));
-        const double ref_error = reference_error(reference);
-        for (Method m : {Method::closed_form, Method::quadrature, Method::shooting, Method::multiple_shooting}) {
-          if (m == Method::closed_form && scene.curve->arcs().empty()) continue;  // not applicable
-          if (m == Method::quadrature && !base.restart_at_breakpoints) continue;  // not applicable either
-          Options o = base;
-          o.method = m;
-          const Solution sol = solve(scene, o);
-          const double diff = thrust_difference(sol.H_over_V, reference.H_over_V);
-          const bool known = reference.field && sol.field;
-          const bool within = sol.ok() && known && within_tolerance(diff, o.rtol + ref_error);
-          ok = ok && within;
-          add_scene_columns(row, p, scene.curve.get());
-          row.add(to_string(sol.method)).add(integrator_of(sol.method, o)).add(o.rtol);
-          row.add(sol.diagnostics.segments).add(to_string(sol.status)).add(sol.H_over_V).add(reference_method);
-          row.add(to_string(reference.status)).add(ref_error).add(reference.H_over_V).add(diff).add(o.rtol);
-          if (known) row.add_bool(within);
-          else row.add(std::string_view{});
-          row.add(sol.message);
-          text += row.take();
-        }
+          const Solution reference = reference_solution(scene, base);
+          const std::string reference_method = reference.method == Method::closed_form
+                                                   ? "closed-form"
+                                                   : fmt::format("multiple-shooting rtol {}", reference_rtol(base));
+          const double ref_error = reference_error(reference);
+          for (Method m : {Method::closed_form, Method::quadrature, Method::shooting, Method::multiple_shooting}) {
+            if (m == Method::closed_form && scene.curve->arcs().empty()) continue;  // not applicable
+            if (m == Method::quadrature && !base.restart_at_breakpoints) continue;  // not applicable either
+            Options o = base;
+            o.method = m;
+            const Solution sol = solve(scene, o);
+            const double diff = thrust_difference(sol.H_over_V, reference.H_over_V);
+            const bool known = reference.field && sol.field;
+            const bool within = sol.ok() && known && within_tolerance(diff, o.rtol + ref_error);
+            ok = ok && within;
+            add_scene_columns(row, p, scene.curve.get());
+            row.add(to_string(sol.method)).add(integrator_of(sol.method, o)).add(o.rtol);
+            row.add(sol.diagnostics.segments).add(to_string(sol.status)).add(sol.H_over_V).add(reference_method);
+            row.add(to_string(reference.status)).add(ref_error).add(reference.H_over_V).add(diff).add(o.rtol);
+            if (known) row.add_bool(within);
+            else row.add(std::string_view{});
+            row.add(sol.message);
+            text += row.take();
+          }
         }
         emit(text);
         return ok;
@@ -1332,37 +1332,33 @@ int run_bench(SceneOptions& so, const CLI::App& cmd, const SolverSweep& sweep, i
           const bool exact = m == Method::closed_form || (m == Method::automatic && circular);
           if (exact && (o.integrator != first.integrator || o.rtol != first.rtol)) continue;
           if (m == Method::quadrature && o.integrator != first.integrator) continue;  // no integrator
-          {
-            {
-              std::vector<double> seconds;
-              Solution sol;
-              for (int r = 0; r < repeats; ++r) {
-                const auto t0 = std::chrono::steady_clock::now();
-                sol = solve(scene, o);
-                seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-              }
-              std::nth_element(seconds.begin(), seconds.begin() + repeats / 2, seconds.end());
-              // The profile's error, outside the timing, from the same solve with stations.
-              Options profiled = o;
-              profiled.stations = kBenchProfileStations;
-              const Solution with_profile = solve(scene, profiled);
-              // The row's status is the worse of the two solves: a profile that missed its tolerance says so.
-              const Solution& judged = sol.ok() ? with_profile : sol;
-              const double estimate = std::max(sol.diagnostics.error_estimate, with_profile.diagnostics.error_estimate);
-              add_scene_columns(row, p, scene.curve.get());
-              row.add(to_string(m)).add(exact ? std::string_view{} : integrator_of(m, o));
-              if (exact) row.add(std::string_view{});
-              else row.add(rtol);
-              row.add(sol.diagnostics.segments).add(to_string(judged.status));
-              row.add(to_string(sol.method));
-              row.add(sol.H_over_V).add(thrust_difference(sol.H_over_V, reference.H_over_V));
-              row.add(profile_difference(with_profile.profile, reference.profile, scene.thickness)).add(estimate);
-              row.add(reference_error(reference));
-              row.add(seconds[repeats / 2]).add(sol.diagnostics.steps).add(sol.diagnostics.rhs_evaluations);
-              row.add(sol.diagnostics.condition_estimate).add(judged.message);
-              emit(row.take());
-            }
+          std::vector<double> seconds;
+          Solution sol;
+          for (int r = 0; r < repeats; ++r) {
+            const auto t0 = std::chrono::steady_clock::now();
+            sol = solve(scene, o);
+            seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
           }
+          std::nth_element(seconds.begin(), seconds.begin() + repeats / 2, seconds.end());
+          // The profile's error, outside the timing, from the same solve with stations.
+          Options profiled = o;
+          profiled.stations = kBenchProfileStations;
+          const Solution with_profile = solve(scene, profiled);
+          // The row's status is the worse of the two solves: a profile that missed its tolerance says so.
+          const Solution& judged = sol.ok() ? with_profile : sol;
+          const double estimate = std::max(sol.diagnostics.error_estimate, with_profile.diagnostics.error_estimate);
+          add_scene_columns(row, p, scene.curve.get());
+          row.add(to_string(m)).add(exact ? std::string_view{} : integrator_of(m, o));
+          if (exact) row.add(std::string_view{});
+          else row.add(rtol);
+          row.add(sol.diagnostics.segments).add(to_string(judged.status));
+          row.add(to_string(sol.method));
+          row.add(sol.H_over_V).add(thrust_difference(sol.H_over_V, reference.H_over_V));
+          row.add(profile_difference(with_profile.profile, reference.profile, scene.thickness)).add(estimate);
+          row.add(reference_error(reference));
+          row.add(seconds[repeats / 2]).add(sol.diagnostics.steps).add(sol.diagnostics.rhs_evaluations);
+          row.add(sol.diagnostics.condition_estimate).add(judged.message);
+          emit(row.take());
         }
         return true;
       },
