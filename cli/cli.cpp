@@ -251,7 +251,7 @@ class ScenePlan {
       Scene scene;
       scene.curve = out.curve;
       scene.thickness = p.thickness_ratio * p.span;
-      scene.support_displacement = p.support_displacement_ratio * p.span;
+      scene.set_support_displacement(p.support_displacement_ratio * p.span);
       scene.material = {p.youngs_modulus, p.poisson_ratio, p.density, p.gravity, p.shear_coefficient, p.plane_strain};
       scene.validate();
       out.scene = std::move(scene);
@@ -1099,7 +1099,7 @@ int run_curve(SceneOptions& so, const CLI::App& cmd, int stations, const ColumnT
         add_scene_columns(row, p, &curve);
         row.add("success").add(std::string_view{});
         row.mark();
-        const double S = curve.half_length();
+        const double S = curve.length();
         std::string text;
         for (int k = 0; k < stations; ++k) {
           const double s = 2.0 * S * k / (stations - 1);

@@ -24,14 +24,16 @@ SystemMatrix to_local(double theta) {
   return R;
 }
 
-// exp(A8 l) for one arc (scaled curvature k), local order (u, v, psi, N, V, M, c, sn).
+// exp(A8 l) for one arc (scaled curvature k), local order (u, v, psi, N, V, M, c, sn); the constant
+// vertical load b = w_self / w has local components (b sn, b c).
 Matrix8 arc_exponential(const ArchModel& model, double k, double l) {
+  const double b = model.self_weight();
   Matrix8 A = Matrix8::Zero();
   A(kUx, kUy) = k;   A(kUx, kFx) = model.a_N();                      // u'   = k v + a_N N
   A(kUy, kUx) = -k;  A(kUy, kPsi) = 1.0; A(kUy, kFy) = model.a_V();  // v'   = -k u + psi + a_V V
   A(kPsi, kM) = 1.0;                                                 // psi' = M
-  A(kFx, kFy) = k;   A(kFx, kSin) = 1.0;                             // N'   = k V + sn
-  A(kFy, kFx) = -k;  A(kFy, kCos) = 1.0;                             // V'   = -k N + c
+  A(kFx, kFy) = k;   A(kFx, kSin) = b;                               // N'   = k V + b sn
+  A(kFy, kFx) = -k;  A(kFy, kCos) = b;                               // V'   = -k N + b c
   A(kM, kFy) = -1.0;                                                 // M'   = -V
   A(kCos, kSin) = -k;                                                // c'   = -k sn
   A(kSin, kCos) = k;                                                 // sn'  = k c
@@ -52,39 +54,27 @@ Transfer arc_transfer(const ArchModel& model, const CircularArc& arc, double ds0
   return t;
 }
 
-// The closed form's field: exact state anywhere. Each station is reached from the start of its own arc
-// (whose state is chained once, arc by arc, from the springing), so a station's state does not depend
-// on how many other stations are asked for: chaining station to station would accumulate round-off
-// (the crown moment moved by 1.6e-10 between 3 and 999 999 stations).
-class ClosedFormField final : public StateField {
+// The closed form's field: exact state anywhere. Each station is reached from the start of its own piece
+// (an arc, or part of one between point loads; its state solved once, piece by piece, from the
+// springing), so a station's state does not depend on how many other stations are asked for: chaining
+// station to station would accumulate round-off (the crown moment moved by 1.6e-10 between 3 and 999 999
+// stations).
+class ClosedFormField final : public PiecewiseField {
  public:
-  // arc_transfers: each arc's whole transfer, already computed for the boundary-value problem.
-  ClosedFormField(std::shared_ptr<const ArchModel> model, const StateVector& y0,
-                  const std::vector<Transfer>& arc_transfers)
-      : model_(std::move(model)) {
-    const double L = model_->scales().length;
-    StateVector y = y0;
-    const auto arcs = model_->scene().curve->arcs();
-    for (std::size_t k = 0; k < arcs.size(); ++k) {
-      arc_starts_.push_back(arcs[k].s_start / L);
-      start_states_.push_back(y);
-      y = arc_transfers[k].Phi * y + arc_transfers[k].p;
-    }
-  }
-  void sample(std::span<const double> s, std::span<StateVector> out) const override {
+  ClosedFormField(std::shared_ptr<const ArchModel> model, const BvpSolution& bvp)
+      : PiecewiseField(bvp.knots, bvp.starts), model_(std::move(model)) {}
+
+ protected:
+  void propagate(double s_k, const StateVector& y_k, std::span<const double> s,
+                 std::span<StateVector> out) const override {
     for (std::size_t i = 0; i < s.size(); ++i) {
-      // The arc that holds s: the last one starting at or before it.
-      const auto it = std::upper_bound(arc_starts_.begin() + 1, arc_starts_.end(), s[i]);
-      const std::size_t k = static_cast<std::size_t>(it - arc_starts_.begin()) - 1;
-      const Transfer t = closed_form_transfer(*model_, arc_starts_[k], s[i]);
-      out[i] = t.Phi * start_states_[k] + t.p;
+      const Transfer t = closed_form_transfer(*model_, s_k, s[i]);
+      out[i] = t.Phi * y_k + t.p;
     }
   }
 
  private:
   std::shared_ptr<const ArchModel> model_;
-  std::vector<double> arc_starts_;         // scaled arc length where each arc starts
-  std::vector<StateVector> start_states_;  // the state there
 };
 
 }  // namespace
@@ -92,7 +82,7 @@ class ClosedFormField final : public StateField {
 Transfer closed_form_transfer(const ArchModel& model, double s0, double s1) {
   const double L = model.scales().length;
   Transfer total;
-  for (const CircularArc& arc : model.scene().curve->arcs()) {
+  for (const CircularArc& arc : model.curve().arcs()) {
     const double a0 = arc.s_start / L, a1 = (arc.s_start + arc.length) / L;
     const double lo = std::max(s0, a0), hi = std::min(s1, a1);
     if (hi <= lo) continue;
@@ -107,24 +97,32 @@ Solution solve_closed_form(std::shared_ptr<const ArchModel> model, const Options
   Solution sol;
   sol.method = Method::closed_form;
   sol.model = model;
-  if (model->scene().curve->arcs().empty()) {
+  const auto arcs = model->curve().arcs();
+  if (arcs.empty() || !model->self_weight_only_distributed()) {
     sol.status = Status::not_applicable;
-    sol.message = "closed form needs a piecewise-circular curve; " + model->scene().curve->family() +
-                  " is not";
+    sol.message = arcs.empty() ? "closed form needs a piecewise-circular curve; " + model->curve().family() + " is not"
+                               : "closed form treats the self-weight and point loads exactly, not a live load or "
+                                 "fill (their load per axis length is not constant on an arc)";
     return sol;
   }
-  // One exponential per arc: chained for the boundary-value problem, kept for the field's arc starts.
+  // Pieces: the arcs, cut at the point loads and the hinge; one exponential each.
   const double L = model->scales().length;
-  std::vector<Transfer> arcs;
-  Transfer t;
-  for (const CircularArc& arc : model->scene().curve->arcs()) {
-    arcs.push_back(arc_transfer(*model, arc, 0.0, arc.length / L));
-    t.Phi = arcs.back().Phi * t.Phi;
-    t.p = arcs.back().Phi * t.p + arcs.back().p;
-  }
-  const BvpSolution bvp = solve_single_segment(*model, t.Phi, t.p);
-  sol.diagnostics.segments = static_cast<int>(arcs.size());
-  finish_solution(sol, bvp, std::make_shared<ClosedFormField>(model, bvp.y0, arcs));
+  std::vector<double> arc_starts;
+  for (const CircularArc& arc : arcs) arc_starts.push_back(arc.s_start / L);
+  const std::vector<double> knots = merge_knots(*model, arc_starts);
+  March m;
+  march(*model, knots,
+        [&](std::size_t k, AffineState& Y) {
+          const Transfer t = closed_form_transfer(*model, knots[k], knots[k + 1]);
+          const AffineState next = t.Phi * Y;
+          Y = next;
+          Y.col(Y.cols() - 1) += t.p;
+          return true;
+        },
+        m);
+  const BvpSolution bvp = solve_march(*model, m);
+  sol.diagnostics.segments = static_cast<int>(knots.size() - 1);
+  finish_solution(sol, bvp, std::make_shared<ClosedFormField>(model, bvp));
   return sol;
 }
 

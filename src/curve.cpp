@@ -39,8 +39,77 @@ SectionFaces section_faces(const CurvePoint& p, double thickness) {
 }
 
 CurvePoint Curve::at_whole_arch(double s) const {
-  const double S = half_length();
+  const double S = length();
+  if (extent() == CurveExtent::whole) return at(s);
   return s <= S ? at(s) : mirror(at(2.0 * S - s), span());
+}
+
+namespace {
+
+// A half arch and its mirror image as one whole curve: s in [0, S] is the half's, s in (S, 2S] the mirror
+// of the half's point at 2S - s. Its arcs (when the half has some) are the half's followed by their
+// mirror images in reverse order; a mirrored arc keeps its curvature and starts at minus the angle its
+// original ends with.
+class MirroredCurve final : public Curve {
+ public:
+  explicit MirroredCurve(std::shared_ptr<const Curve> half) : half_(std::move(half)), S_(half_->length()) {
+    const auto arcs = half_->arcs();
+    arcs_.assign(arcs.begin(), arcs.end());
+    for (auto it = arcs.rbegin(); it != arcs.rend(); ++it) {
+      const CurvePoint end = mirror(point_on_arc(*it, it->length), half_->span());
+      arcs_.push_back({2.0 * S_ - (it->s_start + it->length), it->length, end.x, end.y, end.theta, it->kappa});
+    }
+  }
+  CurveExtent extent() const override { return CurveExtent::whole; }
+  std::string family() const override { return half_->family(); }
+  double span() const override { return half_->span(); }
+  double length() const override { return 2.0 * S_; }
+  CurvePoint at(double s) const override { return s <= S_ ? half_->at(s) : mirror(half_->at(2.0 * S_ - s), span()); }
+  double angle(double s) const override { return s <= S_ ? half_->angle(s) : -half_->angle(2.0 * S_ - s); }
+  // The half's, the crown (its third derivative may jump, its tangent at a pointed crown) and the
+  // mirrored ones.
+  std::vector<double> breakpoints() const override {
+    std::vector<double> out = half_->breakpoints();
+    out.push_back(S_);
+    const std::vector<double> left = half_->breakpoints();
+    for (auto it = left.rbegin(); it != left.rend(); ++it) out.push_back(2.0 * S_ - *it);
+    return out;
+  }
+  std::span<const CircularArc> arcs() const override { return arcs_; }
+  double crown() const override { return S_; }
+  double first_moment_x() const override {
+    // The mirror's x is L - x on the same lengths: integral = S L - M_half, plus the half's M_half.
+    return S_ * span();
+  }
+  double max_curvature() const override { return half_->max_curvature(); }
+
+ private:
+  std::shared_ptr<const Curve> half_;
+  double S_;
+  std::vector<CircularArc> arcs_;
+};
+
+}  // namespace
+
+std::shared_ptr<const Curve> whole_arch(std::shared_ptr<const Curve> curve) {
+  if (!curve) throw std::invalid_argument("curve: whole_arch needs a curve");
+  if (curve->extent() == CurveExtent::whole) return curve;
+  return std::make_shared<MirroredCurve>(std::move(curve));
+}
+
+double arc_length_at_x(const Curve& whole, double x) {
+  // Bisection on x(s), which never decreases: robust where dx/ds vanishes (a vertical springing), and
+  // 64 halvings reach round-off of any length.
+  const double length = whole.extent() == CurveExtent::whole ? whole.length() : whole.whole_length();
+  x = std::clamp(x, 0.0, whole.span());
+  double lo = 0, hi = length;
+  if (whole.at_whole_arch(lo).x >= x) return lo;
+  for (int i = 0; i < 64 && hi - lo > 0; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid <= lo || mid >= hi) break;
+    (whole.at_whole_arch(mid).x < x ? lo : hi) = mid;
+  }
+  return hi;
 }
 
 ParameterPoint Curve::at_parameter(double) const {
@@ -54,7 +123,7 @@ double Curve::parameter_at(double) const {
 double Curve::max_curvature() const {
   constexpr int kSamples = 512;
   double largest = 0;
-  for (int i = 0; i <= kSamples; ++i) largest = std::max(largest, std::abs(at(half_length() * i / kSamples).kappa));
+  for (int i = 0; i <= kSamples; ++i) largest = std::max(largest, std::abs(at(length() * i / kSamples).kappa));
   return largest;
 }
 
@@ -68,7 +137,7 @@ double Curve::first_moment_x() const {
   // Composite 8-point Gauss-Legendre between breakpoints: the integrand is smooth on each piece.
   std::vector<double> knots{0.0};
   for (double b : breakpoints()) knots.push_back(b);
-  knots.push_back(half_length());
+  knots.push_back(length());
   constexpr int kPanelsPerPiece = 32;
   double sum = 0;
   for (std::size_t k = 0; k + 1 < knots.size(); ++k) {
@@ -83,16 +152,16 @@ double Curve::first_moment_x() const {
 
 PiecewiseCircularCurve::PiecewiseCircularCurve(std::string family, double span,
                                                std::vector<CircularArc> arcs)
-    : family_(std::move(family)), span_(span), half_length_(0), arcs_(std::move(arcs)) {
+    : family_(std::move(family)), span_(span), length_(0), arcs_(std::move(arcs)) {
   if (!(span_ > 0) || !std::isfinite(span_))
     throw std::invalid_argument("span: must be a finite positive length");
   if (arcs_.empty()) throw std::invalid_argument("curve: a piecewise-circular curve needs an arc");
   for (const CircularArc& arc : arcs_) {
     if (!(arc.length > 0) || !std::isfinite(arc.length) || !std::isfinite(arc.kappa))
       throw std::invalid_argument("curve: every arc needs a finite positive length and curvature");
-    if (std::abs(arc.s_start - half_length_) > 1e-12 * span_)
+    if (std::abs(arc.s_start - length_) > 1e-12 * span_)
       throw std::invalid_argument("curve: arcs must follow each other without gaps");
-    half_length_ += arc.length;
+    length_ += arc.length;
   }
 }
 

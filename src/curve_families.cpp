@@ -137,7 +137,7 @@ class ParabolicCurve final : public Curve {
       : span_(span), half_(0.5 * span), rise_(rise), c_(8 * rise / (span * span)), length_(sigma(half_)) {}
   std::string family() const override { return "parabolic"; }
   double span() const override { return span_; }
-  double half_length() const override { return length_; }
+  double length() const override { return length_; }
 
   CurvePoint at(double s) const override {
     const double u = s == 0 ? half_ : s == length_ ? 0.0 : distance_from_crown(length_ - s);
@@ -234,7 +234,7 @@ class CatenaryCurve final : public Curve {
       : span_(span), half_(0.5 * span), rise_(rise), a_(a), length_(a * std::sinh(half_ / a)) {}
   std::string family() const override { return "catenary"; }
   double span() const override { return span_; }
-  double half_length() const override { return length_; }
+  double length() const override { return length_; }
 
   CurvePoint at(double s) const override {
     const double sigma = length_ - s;

@@ -416,31 +416,38 @@ void return_workspace(std::unique_ptr<Workspace> w) {
 }  // namespace
 
 struct CvodeIntegrator::Impl {
-  const ArchModel& model;
+  const OdeSystem& system;
   int columns;
-  std::vector<double> breakpoints;
+  bool restart;
   std::string last_message;  // CVODE's error text, captured instead of printed
   std::unique_ptr<Workspace> workspace;
+  double span_start = 0, span_end = 0;  // the span being integrated
 
-  Impl(const ArchModel& m, int cols, bool restart)
-      : model(m), columns(cols), breakpoints(restart ? m.breakpoints() : std::vector<double>{}) {}
+  Impl(const OdeSystem& s, int cols, bool restart_at_breakpoints)
+      : system(s), columns(cols), restart(restart_at_breakpoints) {}
+
+  // s moved strictly inside the current span: at a breakpoint the system must see the piece being
+  // integrated (a pointed crown's angle, a live load's edge), and CVODE evaluates at the span's ends.
+  double inside(double s) const {
+    if (!restart || !(span_end > span_start)) return s;
+    return std::clamp(s, std::nextafter(span_start, span_end), std::nextafter(span_end, span_start));
+  }
 
   static int rhs(sunrealtype s, N_Vector y, N_Vector ydot, void* user_data) {
     const auto* self = static_cast<const Impl*>(user_data);
-    const SystemMatrix A = self->model.system_matrix(self->model.theta(s));
     const int n = self->columns;
     Eigen::Map<const Matrix> Y(N_VGetArrayPointer(y), kStateSize, n);
     Eigen::Map<Matrix> dY(N_VGetArrayPointer(ydot), kStateSize, n);
-    dY.noalias() = A * Y;
-    dY(kFy, n - 1) += 1.0;  // the self-weight load rides on the last column
+    self->system.rhs(self->inside(s), Y, dY);
     return 0;
   }
 
   // The Jacobian's one block (the block matrix type above stores only that).
-  static int jac(sunrealtype s, N_Vector, N_Vector, SUNMatrix J, void* user_data, N_Vector, N_Vector,
+  static int jac(sunrealtype s, N_Vector y, N_Vector, SUNMatrix J, void* user_data, N_Vector, N_Vector,
                  N_Vector) {
     const auto* self = static_cast<const Impl*>(user_data);
-    block::of(J) = self->model.system_matrix(self->model.theta(s));
+    Eigen::Map<const Matrix> Y(N_VGetArrayPointer(y), kStateSize, self->columns);
+    block::of(J) = self->system.jacobian_block(self->inside(s), Y);
     return 0;
   }
 
@@ -449,9 +456,9 @@ struct CvodeIntegrator::Impl {
   }
 };
 
-CvodeIntegrator::CvodeIntegrator(const ArchModel& model, Integrator kind, double rtol, double atol,
+CvodeIntegrator::CvodeIntegrator(const OdeSystem& system, Integrator kind, double rtol, double atol,
                                  std::int64_t max_steps, int columns, bool restart_at_breakpoints)
-    : impl_(std::make_unique<Impl>(model, columns, restart_at_breakpoints)) {
+    : impl_(std::make_unique<Impl>(system, columns, restart_at_breakpoints)) {
   Impl& m = *impl_;
   m.workspace = take_workspace(kind, columns, &Impl::rhs, &Impl::jac);
   void* mem = m.workspace->cvode.get();
@@ -481,8 +488,9 @@ std::optional<IntegrationError> CvodeIntegrator::integrate(double s0, const Matr
   const double s_end = s_out.back();
   // Knots: s0, the breakpoints strictly inside (s0, s_end), s_end. Each span is integrated afresh.
   std::vector<double> knots{s0};
-  for (double b : m.breakpoints)
-    if (b > s0 && b < s_end) knots.push_back(b);
+  if (m.restart)
+    for (double b : m.system.breakpoints())
+      if (b > s0 && b < s_end) knots.push_back(b);
   knots.push_back(s_end);
 
   std::size_t next = 0;
@@ -491,6 +499,8 @@ std::optional<IntegrationError> CvodeIntegrator::integrate(double s0, const Matr
     const double a = knots[k], b = knots[k + 1];
     if (b <= a) continue;
     Y = current;
+    m.span_start = a;
+    m.span_end = b;
     check(CVodeReInit(mem, a, w.y.get()), "CVodeReInit");
     check(CVodeSetStopTime(mem, b), "CVodeSetStopTime");
     std::optional<IntegrationError> failure;

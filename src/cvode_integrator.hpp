@@ -1,10 +1,11 @@
 // CVODE wrapper (private header): the only translation unit that includes <cvode/cvode.h> is
 // cvode_integrator.cpp. Every SUNDIALS object is owned by RAII handles; every return flag is checked.
 //
-// It integrates the matrix ODE  Y' = A(theta(s)) Y + b e_last^T  of ArchModel, Y being 6 x columns:
-// with columns = 7 and Y(s0) = [I | 0] it yields the fundamental matrix and the load's particular
-// solution of a shooting segment; with columns = 1 it carries one state. One CVODE instance is created
-// per integrator and re-initialised for every span, never rebuilt.
+// It integrates a system handed to it (Boost.Odeint's way: the integrator owns no model), whose state is
+// a 6 x columns matrix Y: for ogive's linear problem Y' = A(s) Y + b(s) e_last^T, with columns = 7 and
+// Y(s0) = [I | 0] the fundamental matrix and the load's particular solution of a shooting segment, with
+// columns = 1 one state. One CVODE instance is taken per integrator from a per-thread pool and
+// re-initialised for every span, never rebuilt.
 #pragma once
 
 #include <cstdint>
@@ -13,6 +14,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -31,9 +33,25 @@ struct IntegrationError {
   std::string detail;     // CVODE's own message, if it gave one
 };
 
+using OdeMatrix = Eigen::Matrix<double, kStateSize, Eigen::Dynamic>;
+
+// The system: Y' = f(s, Y) and its Jacobian. The columns of Y are alike (a state and its variations, or
+// the columns of a fundamental matrix), so the Jacobian is block diagonal with one 6 x 6 block for all
+// columns; BDF's linear solver factors that block once. The integrator evaluates the system strictly
+// inside the span it integrates (never at a breakpoint itself), so that on either side of a breakpoint
+// the system sees the piece being integrated.
+class OdeSystem {
+ public:
+  virtual ~OdeSystem() = default;
+  virtual void rhs(double s, const Eigen::Ref<const OdeMatrix>& Y, Eigen::Ref<OdeMatrix> dY) const = 0;
+  virtual SystemMatrix jacobian_block(double s, const Eigen::Ref<const OdeMatrix>& Y) const = 0;
+  // Interior points where f is not smooth, ascending: integration restarts there.
+  virtual const std::vector<double>& breakpoints() const = 0;
+};
+
 class CvodeIntegrator {
  public:
-  using Matrix = Eigen::Matrix<double, kStateSize, Eigen::Dynamic>;
+  using Matrix = OdeMatrix;
   // Receives output index i and Y at s_out[i].
   using Observer = std::function<void(std::size_t, const Matrix&)>;
 
@@ -42,13 +60,14 @@ class CvodeIntegrator {
   // solver that factors that one 6x6 block. Vectors are ogive's own N_Vector type.
   // atol applies to every scaled component. restart_at_breakpoints = false lets steps straddle the
   // curve's jumps of curvature (for studies only). Throws std::runtime_error if SUNDIALS cannot allocate.
-  CvodeIntegrator(const ArchModel& model, Integrator kind, double rtol, double atol,
-                  std::int64_t max_steps, int columns, bool restart_at_breakpoints = true);
+  // The system must outlive the integrator.
+  CvodeIntegrator(const OdeSystem& system, Integrator kind, double rtol, double atol, std::int64_t max_steps,
+                  int columns, bool restart_at_breakpoints = true);
   ~CvodeIntegrator();
   CvodeIntegrator(const CvodeIntegrator&) = delete;
   CvodeIntegrator& operator=(const CvodeIntegrator&) = delete;
 
-  // From Y0 at s0 through the ascending outputs s_out (each >= s0), restarting at the model's
+  // From Y0 at s0 through the ascending outputs s_out (each >= s0), restarting at the system's
   // breakpoints that lie in between (unless told not to) so that no step straddles a jump of curvature.
   std::optional<IntegrationError> integrate(double s0, const Matrix& Y0, std::span<const double> s_out,
                                             const Observer& observer);

@@ -5,8 +5,6 @@
 #include <limits>
 #include <optional>
 
-#include <Eigen/SparseCore>
-#include <Eigen/SparseLU>
 #include <fmt/format.h>
 
 #include "bvp.hpp"
@@ -24,37 +22,48 @@ std::string failure_message(const IntegrationError& e, const ArchModel& model, s
   return text;
 }
 
-// The shooting solution's field: integrates the solved state from the nearest segment start.
-class ShootingField final : public StateField {
+// ArchModel's problem as the integrator's system: Y' = A(theta(s)) Y + b(s) e_Fy e_last^T (the load
+// rides on the last column: the particular solution, or the one state of a field's integration).
+class ArchSystem final : public OdeSystem {
  public:
-  ShootingField(std::shared_ptr<const ArchModel> model, const Options& options, std::vector<double> knots,
-                std::vector<StateVector> starts)
-      : model_(std::move(model)), options_(options), knots_(std::move(knots)), starts_(std::move(starts)) {}
+  explicit ArchSystem(const ArchModel& model) : model_(model) {}
+  void rhs(double s, const Eigen::Ref<const OdeMatrix>& Y, Eigen::Ref<OdeMatrix> dY) const override {
+    const SystemMatrix A = model_.system_matrix(model_.theta(s));
+    dY.noalias() = A * Y;
+    dY(kFy, Y.cols() - 1) += model_.load(s);
+  }
+  SystemMatrix jacobian_block(double s, const Eigen::Ref<const OdeMatrix>&) const override {
+    return model_.system_matrix(model_.theta(s));
+  }
+  const std::vector<double>& breakpoints() const override { return model_.breakpoints(); }
 
-  void sample(std::span<const double> s, std::span<StateVector> out) const override {
+ private:
+  const ArchModel& model_;
+};
+
+// The shooting solution's field: integrates the solved state from the start of its piece.
+class ShootingField final : public PiecewiseField {
+ public:
+  ShootingField(std::shared_ptr<const ArchModel> model, const Options& options, const BvpSolution& bvp)
+      : PiecewiseField(bvp.knots, bvp.starts), model_(std::move(model)), system_(*model_), options_(options) {}
+
+ protected:
+  void propagate(double s_k, const StateVector& y_k, std::span<const double> s,
+                 std::span<StateVector> out) const override {
     const CvodeTolerances tol = cvode_tolerances(options_);
-    CvodeIntegrator integrator(*model_, options_.integrator, tol.rtol, tol.atol, options_.max_steps, 1,
+    CvodeIntegrator integrator(system_, options_.integrator, tol.rtol, tol.atol, options_.max_steps, 1,
                                options_.restart_at_breakpoints);
-    std::size_t i = 0;
-    for (std::size_t k = 0; k < starts_.size() && i < s.size(); ++k) {
-      const bool last = k + 1 == starts_.size();
-      std::size_t j = i;
-      while (j < s.size() && (last || s[j] < knots_[k + 1])) ++j;
-      if (j == i) continue;
-      const auto failure = integrator.integrate(
-          knots_[k], starts_[k], s.subspan(i, j - i),
-          [&](std::size_t n, const CvodeIntegrator::Matrix& Y) { out[i + n] = Y.col(0); });
-      if (failure)  // Marked, never plausible: the caller sees non-finite states.
-        for (std::size_t n = i; n < j; ++n) out[n].setConstant(std::numeric_limits<double>::quiet_NaN());
-      i = j;
-    }
+    const auto failure = integrator.integrate(s_k, y_k, s, [&](std::size_t n, const CvodeIntegrator::Matrix& Y) {
+      out[n] = Y.col(0);
+    });
+    if (failure)  // Marked, never plausible: the caller sees non-finite states.
+      for (StateVector& y : out) y.setConstant(std::numeric_limits<double>::quiet_NaN());
   }
 
  private:
   std::shared_ptr<const ArchModel> model_;
+  ArchSystem system_;
   Options options_;
-  std::vector<double> knots_;
-  std::vector<StateVector> starts_;
 };
 
 }  // namespace
@@ -70,18 +79,13 @@ CvodeTolerances cvode_tolerances(const Options& o) {
 }
 
 std::vector<double> shooting_knots(const ArchModel& model, int segments, bool at_breakpoints) {
-  const double S = model.half_length();
-  std::vector<double> knots;
-  for (int k = 0; k <= segments; ++k) knots.push_back(S * k / segments);
-  knots.back() = S;
-  if (segments > 1 && at_breakpoints)
-    for (double b : model.breakpoints()) knots.push_back(b);
-  std::sort(knots.begin(), knots.end());
-  // Merge knots closer than a part in 1e9 of the half arch: a breakpoint on a uniform knot.
-  knots.erase(std::unique(knots.begin(), knots.end(), [S](double a, double b) { return b - a < 1e-9 * S; }),
-              knots.end());
-  knots.back() = S;
-  return knots;
+  const double S = model.length();
+  std::vector<double> extra;
+  if (segments > 1) {
+    for (int k = 1; k < segments; ++k) extra.push_back(S * k / segments);
+    if (at_breakpoints) extra.insert(extra.end(), model.breakpoints().begin(), model.breakpoints().end());
+  }
+  return merge_knots(model, extra);
 }
 
 Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& options, int segments) {
@@ -93,37 +97,44 @@ Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& o
   sol.diagnostics.segments = static_cast<int>(K);
 
   const CvodeTolerances tol = cvode_tolerances(options);
-  // The first segment starts at the springing, where three components are given: it integrates the
-  // three unknown directions and the particular solution (4 columns). Later segments start from a full
-  // unknown state (the fundamental matrix and the particular solution: 7 columns).
-  const SpringingSplit split = springing_split(*model);
-  CvodeIntegrator first(*model, options.integrator, tol.rtol, tol.atol, options.max_steps, 4,
-                        options.restart_at_breakpoints);
-  std::optional<CvodeIntegrator> rest;
-  if (K > 1)
-    rest.emplace(*model, options.integrator, tol.rtol, tol.atol, options.max_steps, kStateSize + 1,
-                 options.restart_at_breakpoints);
-  // Segment k maps its unknown start x_k (u for k = 0, y_k after) to its end: G[k] x_k + g[k].
-  std::vector<Eigen::Matrix<double, kStateSize, Eigen::Dynamic>> G(K);
-  std::vector<StateVector> g(K);
-  for (std::size_t k = 0; k < K; ++k) {
-    CvodeIntegrator::Matrix Y0(kStateSize, k == 0 ? 4 : kStateSize + 1);
-    if (k == 0) Y0 << split.U, split.start;
-    else Y0 << SystemMatrix::Identity(), StateVector::Zero();
+  const ArchSystem system(*model);
+  // Single shooting carries the state's affine map [T | c] from the springing to the end: its m unknown
+  // directions and the particular solution (4 columns; 5 with a hinge, whose column is 0 before it),
+  // across point loads and the hinge (march adds them between pieces). Multiple shooting integrates that
+  // only over its first segment; every later one starts afresh from [I | 0] (7 columns: the segment's
+  // fundamental matrix and particular solution), so that no integration error grows over more than one
+  // segment, and its transfer is applied to the map.
+  const int m = unknown_count(*model);
+  CvodeIntegrator carried(system, options.integrator, tol.rtol, tol.atol, options.max_steps, m + 1,
+                          options.restart_at_breakpoints);
+  std::optional<CvodeIntegrator> fresh;
+  if (segments > 1 && K > 1)
+    fresh.emplace(system, options.integrator, tol.rtol, tol.atol, options.max_steps, kStateSize + 1,
+                  options.restart_at_breakpoints);
+  std::optional<IntegrationError> failure;
+  std::size_t failed_piece = 0;
+  auto integrate = [&](CvodeIntegrator& integrator, std::size_t k, const AffineState& Y0, AffineState& Y1) {
     const double end = knots[k + 1];
-    CvodeIntegrator& integrator = k == 0 ? first : *rest;
-    const auto failure = integrator.integrate(knots[k], Y0, std::span<const double>(&end, 1),
-                                              [&](std::size_t, const CvodeIntegrator::Matrix& Y) {
-                                                G[k] = Y.leftCols(Y.cols() - 1);
-                                                g[k] = Y.col(Y.cols() - 1);
-                                              });
-    if (failure) {
-      sol.status = Status::integrator_failure;
-      sol.message = failure_message(*failure, *model, k, K);
-      break;
-    }
-  }
-  for (const CvodeIntegrator* integrator : {&first, rest ? &*rest : nullptr}) {
+    failure = integrator.integrate(knots[k], Y0, std::span<const double>(&end, 1),
+                                   [&](std::size_t, const CvodeIntegrator::Matrix& Y) { Y1 = Y; });
+    failed_piece = k;
+    return !failure;
+  };
+  March marched;
+  const bool ok = march(*model, knots,
+                        [&](std::size_t k, AffineState& Y) {
+                          if (!fresh || k == 0) return integrate(carried, k, AffineState(Y), Y);
+                          AffineState start(kStateSize, kStateSize + 1);
+                          start << SystemMatrix::Identity(), StateVector::Zero();
+                          AffineState G;
+                          if (!integrate(*fresh, k, start, G)) return false;
+                          const AffineState next = G.leftCols<kStateSize>() * Y;
+                          Y = next;
+                          Y.col(Y.cols() - 1) += G.col(kStateSize);
+                          return true;
+                        },
+                        marched);
+  for (const CvodeIntegrator* integrator : {&carried, fresh ? &*fresh : nullptr}) {
     if (!integrator) continue;
     const IntegratorStats& st = integrator->stats();
     sol.diagnostics.steps += st.steps;
@@ -131,58 +142,16 @@ Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& o
     sol.diagnostics.error_test_failures += st.error_test_failures;
     sol.diagnostics.jacobian_evaluations += st.jacobian_evaluations;
   }
-  if (sol.status == Status::integrator_failure) return sol;
-
-  if (K == 1) {
-    const BvpSolution bvp = solve_reduced(*model, G[0], g[0]);
-    finish_solution(sol, bvp, std::make_shared<ShootingField>(model, options, knots, std::vector{bvp.y0}));
+  if (!ok) {
+    sol.status = Status::integrator_failure;
+    sol.message = failure ? failure_message(*failure, *model, failed_piece, K) : "integration failed";
     return sol;
   }
-
-  // Unknowns: u (3), then the start state of every later segment (6 each). Rows: 6 continuity rows per
-  // interior knot, 3 crown conditions; block-bidiagonal, so the LU has little fill.
-  const BoundaryConditions bc = model->boundary_conditions();
-  auto column_of = [](std::size_t k) { return k == 0 ? Eigen::Index{0} : 3 + kStateSize * static_cast<Eigen::Index>(k - 1); };
-  const Eigen::Index n = 3 + kStateSize * static_cast<Eigen::Index>(K - 1);
-  std::vector<Eigen::Triplet<double>> entries;
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
-  for (std::size_t k = 0; k + 1 < K; ++k) {
-    const Eigen::Index row = kStateSize * static_cast<Eigen::Index>(k);
-    for (int i = 0; i < kStateSize; ++i) {
-      for (Eigen::Index j = 0; j < G[k].cols(); ++j)
-        if (G[k](i, j) != 0) entries.emplace_back(row + i, column_of(k) + j, G[k](i, j));
-      entries.emplace_back(row + i, column_of(k + 1) + i, -1.0);
-      rhs(row + i) = -g[k](i);
-    }
-  }
-  const Eigen::Matrix<double, 3, kStateSize> crown = bc.at_crown.bottomRows<3>() * G[K - 1];
-  const Eigen::Vector3d crown_rhs = bc.rhs.tail<3>() - bc.at_crown.bottomRows<3>() * g[K - 1];
-  for (int r = 0; r < 3; ++r) {
-    for (int j = 0; j < kStateSize; ++j)
-      if (crown(r, j) != 0) entries.emplace_back(n - 3 + r, column_of(K - 1) + j, crown(r, j));
-    rhs(n - 3 + r) = crown_rhs(r);
-  }
-  Eigen::SparseMatrix<double> Q(n, n);
-  Q.setFromTriplets(entries.begin(), entries.end());
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
-  lu.compute(Q);
-  BvpSolution bvp;
-  std::vector<StateVector> starts(K);
-  if (lu.info() == Eigen::Success) {
-    const Eigen::VectorXd z = lu.solve(rhs);
-    starts[0] = split.start + split.U * z.head<3>();
-    for (std::size_t k = 1; k < K; ++k) starts[k] = z.segment<kStateSize>(column_of(k));
-    bvp.y0 = starts.front();
-    bvp.yS = G[K - 1] * starts.back() + g[K - 1];
-    // The condition of the boundary-value problem, not of this discretisation of it: the sparse
-    // system's own condition grows with the number of segments (its identity blocks), while its
-    // solution's accuracy does not. So the segments' transfers are condensed into Phi(S) U and judged
-    // by the same function as single shooting and the closed form.
-    ReducedTransfer whole = G[0];
-    for (std::size_t k = 1; k < K; ++k) whole = G[k] * whole;
-    bvp.condition = boundary_value_condition(*model, whole);
-  }
-  finish_solution(sol, bvp, std::make_shared<ShootingField>(model, options, knots, std::move(starts)));
+  // The condition of the boundary-value problem, not of a discretisation of it: the equations in the
+  // unknowns are condensed through every segment's transfer, and judged by the same function as the
+  // closed form's.
+  const BvpSolution bvp = solve_march(*model, marched);
+  finish_solution(sol, bvp, std::make_shared<ShootingField>(model, options, bvp));
   return sol;
 }
 

@@ -55,87 +55,13 @@ bool Options::is_valid(std::string* why) const {
   return true;
 }
 
-SpringingSplit springing_split(const ArchModel& model) {
-  const BoundaryConditions bc = model.boundary_conditions();
-  SpringingSplit split;
-  std::array<bool, kStateSize> known{};
-  for (int r = 0; r < 3; ++r) {
-    Eigen::Index j = 0;
-    bc.at_springing.row(r).cwiseAbs().maxCoeff(&j);
-    // Each springing condition fixes one component: a unit row (ArchModel's conditions are).
-    if (bc.at_springing(r, j) != 1.0 || bc.at_springing.row(r).cwiseAbs().sum() != 1.0)
-      throw std::logic_error("springing_split: a springing condition is not of the form y_j = value");
-    known[static_cast<std::size_t>(j)] = true;
-    split.start[j] = bc.rhs(r);
-  }
-  int column = 0;
-  for (int j = 0; j < kStateSize; ++j)
-    if (!known[static_cast<std::size_t>(j)]) split.U(j, column++) = 1.0;
-  return split;
-}
-
-double boundary_value_condition(const ArchModel& model, const ReducedTransfer& PhiU) {
-  const BoundaryConditions bc = model.boundary_conditions();
-  const Eigen::Matrix3d Q = bc.at_crown.bottomRows<3>() * PhiU;
-  const Eigen::FullPivLU<Eigen::Matrix3d> lu(Q);
-  if (!lu.isInvertible()) return std::numeric_limits<double>::infinity();
-  // Skeel's measure, not ||Q|| ||Q^-1||: the rows mix displacement and force conditions whose sizes
-  // differ by orders of magnitude, and a norm-wise estimate would report that scaling, not a loss of
-  // digits. |Q^-1| |Q| is what partial pivoting's backward error is amplified by, row scaling aside.
-  const Eigen::Matrix3d amplification = lu.inverse().cwiseAbs() * Q.cwiseAbs();
-  const double condition = amplification.rowwise().sum().maxCoeff();
-  return std::isfinite(condition) ? condition : std::numeric_limits<double>::infinity();
-}
-
-double boundary_value_condition(const ArchModel& model, const SystemMatrix& Phi) {
-  return boundary_value_condition(model, ReducedTransfer(Phi * springing_split(model).U));
-}
-
-BvpSolution solve_reduced(const ArchModel& model, const ReducedTransfer& PhiU, const StateVector& q) {
-  const BoundaryConditions bc = model.boundary_conditions();
-  const SpringingSplit split = springing_split(model);
-  const Eigen::Matrix3d Q = bc.at_crown.bottomRows<3>() * PhiU;
-  const Eigen::Vector3d u = Q.partialPivLu().solve(bc.rhs.tail<3>() - bc.at_crown.bottomRows<3>() * q);
-  BvpSolution out;
-  out.condition = boundary_value_condition(model, PhiU);
-  out.y0 = split.start + split.U * u;
-  out.yS = PhiU * u + q;
-  return out;
-}
-
-BvpSolution solve_single_segment(const ArchModel& model, const SystemMatrix& Phi, const StateVector& p) {
-  const SpringingSplit split = springing_split(model);
-  return solve_reduced(model, Phi * split.U, Phi * split.start + p);
-}
-
-void finish_solution(Solution& sol, const BvpSolution& bvp, std::shared_ptr<const StateField> field) {
-  const ArchModel& model = *sol.model;
-  Diagnostics& d = sol.diagnostics;
-  d.condition_estimate = bvp.condition;
-  constexpr double kRoundoff = std::numeric_limits<double>::epsilon();
-  if (!(bvp.condition * kRoundoff < 1) || !bvp.y0.allFinite() || !bvp.yS.allFinite()) {
-    sol.status = Status::singular_system;
-    sol.message = fmt::format("boundary-value system singular to working precision (condition {:.3g})",
-                              d.condition_estimate);
-    return;
-  }
-  sol.field = std::move(field);
-  d.boundary_residual = model.boundary_residual(bvp.y0, bvp.yS);
-  d.equilibrium_residual = model.equilibrium_residual(bvp.y0, bvp.yS);
-  sol.H = model.horizontal_reaction(bvp.y0);
-  sol.V = model.vertical_reaction();
-  sol.H_over_V = sol.H / sol.V;
-  sol.status = Status::success;  // provisional: judge_solution decides against rtol
-  sol.message.clear();
-}
-
 ArchState Solution::at(double s) const {
   if (!field || !model) throw std::logic_error("Solution::at: no solved field (status " +
                                                std::string(to_string(status)) + ")");
   const double L = model->scales().length;
-  const double S = model->half_length();
+  const double S = model->length();
   double s_scaled = s / L;
-  const bool mirrored = s_scaled > S;
+  const bool mirrored = model->half() && s_scaled > S;
   if (mirrored) s_scaled = 2.0 * S - s_scaled;
   s_scaled = std::clamp(s_scaled, 0.0, S);
   StateVector y;
@@ -146,22 +72,24 @@ ArchState Solution::at(double s) const {
 std::vector<ArchState> sample_stations(const Solution& sol, int stations, int first, int count) {
   std::vector<ArchState> out;
   if (stations < 2 || !sol.field || first < 0 || count <= 0 || first + count > stations) return out;
-  const double S = sol.model->half_length();
-  // Stations over the whole arch; a right-half station is its mirror's state on the half arch.
-  std::vector<double> whole(count), half(count);
+  const double S = sol.model->length();
+  const bool half = sol.model->half();
+  const double whole_length = half ? 2.0 * S : S;
+  // Stations over the whole arch; over a half model, a right-half station is its mirror's state.
+  std::vector<double> whole(count), domain(count);
   for (int i = 0; i < count; ++i) {
-    whole[i] = 2.0 * S * (first + i) / (stations - 1);
-    half[i] = whole[i] <= S ? whole[i] : 2.0 * S - whole[i];
+    whole[i] = i + first == stations - 1 ? whole_length : whole_length * (first + i) / (stations - 1);
+    domain[i] = half && whole[i] > S ? 2.0 * S - whole[i] : whole[i];
   }
-  std::vector<double> sorted = half;
+  std::vector<double> sorted = domain;
   std::sort(sorted.begin(), sorted.end());
   sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
   std::vector<StateVector> states(sorted.size());
   sol.field->sample(sorted, states);
   out.reserve(count);
   for (int i = 0; i < count; ++i) {
-    const std::size_t k = std::lower_bound(sorted.begin(), sorted.end(), half[i]) - sorted.begin();
-    out.push_back(sol.model->to_physical(half[i], states[k], whole[i] > S));
+    const std::size_t k = std::lower_bound(sorted.begin(), sorted.end(), domain[i]) - sorted.begin();
+    out.push_back(sol.model->to_physical(domain[i], states[k], half && whole[i] > S));
   }
   return out;
 }
@@ -276,13 +204,22 @@ Solution solve_with(const std::shared_ptr<const ArchModel>& model, const Options
 
 }  // namespace
 
-// H is measured against max(|H|, V / 100): under support spreading H passes through zero, where no
-// relative error of H means anything, and its absolute error is then held to rtol V / 100.
+double reaction_difference(const Reactions& a, const Reactions& r, double thickness) {
+  const double F = std::max({std::abs(r.H_left), std::abs(r.V_left), std::abs(r.V_right)});
+  auto force = [&](double x, double ref) { return std::abs(x - ref) / std::max(std::abs(ref), F / 100); };
+  const double couple_scale = std::max({std::abs(r.M_left), std::abs(r.M_right), F * thickness / 6});
+  const double worst = std::max({force(a.H_left, r.H_left), force(a.H_right, r.H_right), force(a.V_left, r.V_left),
+                                 force(a.V_right, r.V_right), std::abs(a.M_left - r.M_left) / couple_scale,
+                                 std::abs(a.M_right - r.M_right) / couple_scale});
+  return std::isfinite(worst) ? worst : std::numeric_limits<double>::quiet_NaN();
+}
+
 double solution_difference(const Solution& a, const Solution& b) {
   if (!a.field || !b.field) return std::numeric_limits<double>::quiet_NaN();
-  const double H = std::abs(a.H - b.H) / std::max(std::abs(b.H), std::abs(b.V) / 100);
-  if (b.profile.empty()) return H;
-  return std::max(H, profile_difference(a.profile, b.profile, b.model->scene().thickness));
+  const double thickness = b.model->scene().thickness;
+  const double reactions = reaction_difference(a.reactions, b.reactions, thickness);
+  if (b.profile.empty()) return reactions;
+  return std::max(reactions, profile_difference(a.profile, b.profile, thickness));
 }
 
 double profile_difference(const std::vector<ArchState>& profile, const std::vector<ArchState>& reference,
@@ -316,7 +253,7 @@ Solution solve(const Scene& scene, const Options& options) {
   scene.validate();
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
-  auto model = std::make_shared<const ArchModel>(scene);
+  auto model = std::make_shared<const ArchModel>(scene, options.whole_arch);
   switch (options.method) {
     case Method::closed_form: return solve_with(model, options, Method::closed_form, 0, options.rtol);
     case Method::shooting: return solve_with(model, options, Method::shooting, 1, options.rtol);
@@ -326,12 +263,18 @@ Solution solve(const Scene& scene, const Options& options) {
     case Method::automatic: break;
   }
   // The smallest model that meets rtol. The closed form is exact to round-off where it applies.
-  if (!scene.curve->arcs().empty()) return solve_with(model, options, Method::closed_form, 0, options.rtol);
+  {
+    // Where the closed form treats the scene (a piecewise-circular curve, no distributed load but the
+    // self-weight), it is exact to round-off: nothing smaller or faster.
+    Solution exact = solve_with(model, options, Method::closed_form, 0, options.rtol);
+    if (exact.status != Status::not_applicable) return exact;
+  }
   // On smooth curves (and between a survey's points) the quadrature method, as fast as the closed form,
   // with its own error estimate; where that does not meet rtol, CVODE shooting below. (Conditioning is
   // the boundary-value problem's, the same for every method: CVODE would not cure it.)
   {
     Solution quadrature = solve_with(model, options, Method::quadrature, 0, options.rtol);
+    // (not_applicable beyond the symmetric clamped arch under its own weight: quadrature.hpp)
     if (quadrature.status != Status::tolerance_not_met && quadrature.status != Status::not_applicable)
       return quadrature;
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <tuple>
 #include <vector>
 
 #include <fmt/format.h>
@@ -147,7 +148,7 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
   scene.validate();
   const Curve& curve = *scene.curve;
-  const double S = curve.half_length();
+  const double S = curve.length();
   // The drawing's unit (svg.hpp): the span is 100 to 1000 units, whatever its size in metres, so that
   // fonts and strokes are a few units (rsvg draws no text below about 0.1 unit, nothing at 1e-5).
   const double unit = drawing_unit(scene.span());
@@ -162,7 +163,16 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
   // carried along its crown tangent to, the crown's vertical joint x = L/2, as the voussoirs meet there.
   std::vector<PlanePoint> axis, intrados, extrados;
   const CurvePoint crown = curve.at(S);
-  for (int k = 0; k < options.samples; ++k) {
+  const bool whole = curve.extent() == CurveExtent::whole;  // a whole arch (a survey): drawn as it is
+  if (whole)
+    for (int k = 0; k < 2 * options.samples - 1; ++k) {
+      const CurvePoint p = curve.at(k == 2 * options.samples - 2 ? S : S * k / (2 * options.samples - 2));
+      const SectionFaces f = faces_in_drawing(section_faces(p, scene.thickness));
+      axis.push_back(drawn_at(p.x, p.y));
+      intrados.push_back(f.intrados);
+      extrados.push_back(f.extrados);
+    }
+  for (int k = 0; k < options.samples && !whole; ++k) {
     const CurvePoint p = curve.at(k == options.samples - 1 ? S : S * k / (options.samples - 1));
     const SectionFaces f = faces_in_drawing(section_faces(p, scene.thickness));
     axis.push_back(drawn_at(p.x, p.y));
@@ -170,6 +180,7 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
     extrados.push_back(f.extrados);
   }
   for (std::vector<PlanePoint>* face : {&intrados, &extrados}) {
+    if (whole) break;
     std::vector<PlanePoint>& v = *face;
     const double joint = 0.5 * L;
     if (v.back().x < joint) {  // short of the joint: along the crown's tangent
@@ -187,6 +198,7 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
     }
   }
   for (std::vector<PlanePoint>* line : {&axis, &intrados, &extrados}) {
+    if (whole) break;
     std::vector<PlanePoint>& v = *line;
     for (std::size_t k = v.size() - 1; k-- > 0;) v.push_back({L - v[k].x, v[k].y});
   }
@@ -198,7 +210,7 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
   const double font = 0.022 * W;
 
   // Supports: the springing sections, the side of the support beyond each end of the axis.
-  const CurvePoint left = curve.at_whole_arch(0), right = curve.at_whole_arch(2 * S);
+  const CurvePoint left = curve.at_whole_arch(0), right = curve.at_whole_arch(curve.whole_length());
   const SectionFaces left_faces = faces_in_drawing(section_faces(left, scene.thickness));
   const SectionFaces right_faces = faces_in_drawing(section_faces(right, scene.thickness));
   const PlanePoint left_away{-std::cos(left.theta), -std::sin(left.theta)};
@@ -276,14 +288,16 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
   }
   body += supports;
 
-  // Support movement: each springing moves horizontally by d, outwards for d > 0.
+  // Support movement: each springing's horizontal spread, outwards for d > 0.
   double bottom = drawn.y0;
-  const double d = scene.support_displacement;
-  if (d != 0) {
-    const double y = bottom - 1.2 * font, length = 0.08 * W, sign = d > 0 ? 1.0 : -1.0;
+  if (scene.left.spread != 0 || scene.right.spread != 0) {
+    const double y = bottom - 1.2 * font, length = 0.08 * W;
     body += "<g id=\"support-movement\" stroke=\"#1f4e9c\" fill=\"#1f4e9c\">\n";
-    const std::string label = fmt::format("d = {:.3g} mm {}", std::abs(d) * 1000, d > 0 ? "outwards" : "inwards");
-    for (const auto& [x, outward] : {std::pair{left.x / unit, -1.0}, std::pair{right.x / unit, 1.0}}) {
+    for (const auto& [x, outward, d] : {std::tuple{left.x / unit, -1.0, scene.left.spread},
+                                        std::tuple{right.x / unit, 1.0, scene.right.spread}}) {
+      if (d == 0) continue;
+      const double sign = d > 0 ? 1.0 : -1.0;
+      const std::string label = fmt::format("d = {:.3g} mm {}", std::abs(d) * 1000, d > 0 ? "outwards" : "inwards");
       line(body, {x, y}, {x + sign * outward * length, y},
            fmt::format("stroke-width=\"{}\" marker-end=\"url(#arrowhead)\"", 1.5 * stroke));
       // The label below the arrow, towards the arch so that it stays in the picture.

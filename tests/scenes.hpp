@@ -13,7 +13,7 @@ inline Scene paper_scene(double eps, double t_over_L = 0.08, double d_over_L = 0
   Scene s;
   s.curve = make_pointed(10.0, eps);
   s.thickness = t_over_L * 10.0;
-  s.support_displacement = d_over_L * 10.0;
+  s.set_support_displacement(d_over_L * 10.0);
   return s;
 }
 

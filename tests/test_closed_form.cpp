@@ -47,14 +47,14 @@ TEST_CASE("closed form: the solution meets all six boundary conditions and globa
         const ArchState& crown = sol.profile[1];
         const double disp = sol.model->scales().displacement, rot = sol.model->scales().rotation;
         const double force = sol.model->scales().force;
-        CHECK(std::abs(spring.Ux + scene.support_displacement) <= kExact * disp);
+        CHECK(std::abs(spring.Ux + scene.left.spread) <= kExact * disp);
         CHECK(std::abs(spring.Uy) <= kExact * disp);
         CHECK(std::abs(spring.psi) <= kExact * rot);
         CHECK(std::abs(crown.Ux) <= kExact * disp);
         CHECK(std::abs(crown.psi) <= kExact * rot);
         CHECK(std::abs(crown.Fy) <= kExact * force);
         // The vertical reaction is half the weight, w S, and H = -Fx everywhere.
-        CHECK(close(sol.V, scene.weight_per_length() * scene.curve->half_length(), kExact));
+        CHECK(close(sol.V, scene.weight_per_length() * scene.curve->length(), kExact));
         CHECK(close(-spring.Fy, sol.V, kExact));
         CHECK(close(-crown.Fx, sol.H, kExact));
       }
@@ -90,7 +90,7 @@ TEST_CASE("closed form: agrees with the force method (Castigliano) for any eccen
         CAPTURE(d);
         const Scene scene = paper_scene(eps, t, d);
         const double H = reference::castigliano_pointed_H(10.0, eps, scene.thickness, scene.material,
-                                                          scene.support_displacement);
+                                                          scene.left.spread);
         const Solution sol = closed_form(scene);
         REQUIRE(sol.ok());
         // Scale by the weight: H may cross zero as d grows.
@@ -205,7 +205,7 @@ TEST_CASE("closed form: every station - right half included - balances the free 
   const ArchState& a = sol.profile.front();
   // The integral of x over [0, s] of the whole arch by composite Simpson on each half (smooth there).
   auto first_moment = [&](double s_end) {
-    const double S = scene.curve->half_length();
+    const double S = scene.curve->length();
     auto simpson = [&](double lo, double hi) {
       const int n = 4000;
       const double h = (hi - lo) / n;

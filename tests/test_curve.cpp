@@ -15,17 +15,17 @@ TEST_CASE("pointed curve: springing - crown and radius follow the construction")
     const auto curve = make_pointed(L, eps);
     const double R = (0.5 + eps) * L;
     const double alpha_c = std::acos(eps / (0.5 + eps));
-    CHECK(close(curve->half_length(), R * alpha_c, kExact));
+    CHECK(close(curve->length(), R * alpha_c, kExact));
     const CurvePoint spring = curve->at(0.0);
     CHECK(std::abs(spring.x) <= kExact * L);
     CHECK(std::abs(spring.y) <= kExact * L);
     CHECK(close(spring.theta, std::numbers::pi / 2, kExact));
-    const CurvePoint crown = curve->at(curve->half_length());
+    const CurvePoint crown = curve->at(curve->length());
     CHECK(close(crown.x, L / 2, kExact));
     CHECK(close(crown.y, R * std::sin(alpha_c), kExact));
     // Every point lies on the circle about (L/2 + eps L, 0).
     for (int i = 0; i <= 20; ++i) {
-      const CurvePoint p = curve->at(curve->half_length() * i / 20.0);
+      const CurvePoint p = curve->at(curve->length() * i / 20.0);
       CHECK(close(std::hypot(p.x - (0.5 + eps) * L, p.y), R, kExact));
       CHECK(close(p.kappa, -1.0 / R, kExact));
     }
@@ -38,7 +38,7 @@ TEST_CASE("pointed curve: the exact first moment agrees with quadrature") {
     std::shared_ptr<const Curve> inner;
     std::string family() const override { return "quadrature"; }
     double span() const override { return inner->span(); }
-    double half_length() const override { return inner->half_length(); }
+    double length() const override { return inner->length(); }
     CurvePoint at(double s) const override { return inner->at(s); }
   };
   for (double eps : {0.0, 0.5, 2.0}) {

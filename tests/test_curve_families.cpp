@@ -69,7 +69,7 @@ struct DefaultMoment final : Curve {
   std::shared_ptr<const Curve> inner;
   std::string family() const override { return "quadrature"; }
   double span() const override { return inner->span(); }
-  double half_length() const override { return inner->half_length(); }
+  double length() const override { return inner->length(); }
   CurvePoint at(double s) const override { return inner->at(s); }
   std::vector<double> breakpoints() const override { return inner->breakpoints(); }
 };
@@ -102,8 +102,8 @@ TEST_CASE("every family starts at the springing and ends at the crown (L/2 - h)"
     CAPTURE(f.label);
     const Curve& c = *f.curve;
     CHECK(c.span() == f.span);
-    CHECK(c.half_length() > 0);
-    const CurvePoint spring = c.at(0.0), crown = c.at(c.half_length());
+    CHECK(c.length() > 0);
+    const CurvePoint spring = c.at(0.0), crown = c.at(c.length());
     CHECK(std::abs(spring.x) <= kExact * f.span);
     CHECK(std::abs(spring.y) <= kExact * f.span);
     CHECK(close(crown.x, f.span / 2, kExact));
@@ -122,7 +122,7 @@ TEST_CASE("every family is ds-consistent: dx/ds = cos theta - dy/ds = sin theta 
   for (const Sample& f : family_samples()) {
     CAPTURE(f.label);
     const Curve& c = *f.curve;
-    const double S = c.half_length();
+    const double S = c.length();
     const auto bps = c.breakpoints();
     double max_kappa = 0;
     for (int i = 0; i <= 200; ++i) max_kappa = std::max(max_kappa, std::abs(c.at(S * i / 200).kappa));
@@ -151,14 +151,14 @@ TEST_CASE("smooth family half_length and first_moment_x agree with an independen
     {  // Parabola: ds = sqrt(1 + y'^2) dx.
       const auto c = make_parabolic(L, rr);
       auto ds = [&](double x) { return std::hypot(1.0, 4 * h * (L - 2 * x) / (L * L)); };
-      CHECK(close(c->half_length(), simpson(ds, 0, U), kQuadrature));
+      CHECK(close(c->length(), simpson(ds, 0, U), kQuadrature));
       CHECK(close(c->first_moment_x(), simpson([&](double x) { return x * ds(x); }, 0, U), kQuadrature));
     }
     {  // Catenary.
       const double a = catenary_parameter(L, rr);
       const auto c = make_catenary(L, rr);
       auto ds = [&](double x) { return std::cosh((x - U) / a); };
-      CHECK(close(c->half_length(), simpson(ds, 0, U), kQuadrature));
+      CHECK(close(c->length(), simpson(ds, 0, U), kQuadrature));
       CHECK(close(c->first_moment_x(), simpson([&](double x) { return x * ds(x); }, 0, U), kQuadrature));
     }
     if (rr <= 1.5) {  // Ellipse: the quarter perimeter by the trapezoid rule over the whole period.
@@ -167,7 +167,7 @@ TEST_CASE("smooth family half_length and first_moment_x agree with an independen
       const int n = 4000;
       double perimeter = 0;
       for (int i = 0; i < n; ++i) perimeter += speed(2 * kPi * i / n) * (2 * kPi / n);
-      CHECK(close(c->half_length(), perimeter / 4, kQuadrature));
+      CHECK(close(c->length(), perimeter / 4, kQuadrature));
       CHECK(close(c->first_moment_x(),
                   simpson([&](double t) { return U * (1 - std::cos(t)) * speed(t); }, 0, kPi / 2), kQuadrature));
     }
@@ -187,7 +187,7 @@ TEST_CASE("smooth family at(s) continues smoothly just beyond both ends") {
                                                       make_points_curve(parabola_points(10, 5, 20))};
   for (const auto& c : curves) {
     CAPTURE(c->family());
-    const double S = c->half_length(), d = 1e-7 * S;
+    const double S = c->length(), d = 1e-7 * S;
     for (double s0 : {0.0, S}) {
       const CurvePoint p = c->at(s0);
       for (double ds : {-d, d}) {
@@ -205,9 +205,9 @@ TEST_CASE("elliptical family at rise L/2 is the semicircle") {
   const double L = 10.0;
   const auto e = make_elliptical(L, 0.5);
   const auto c = make_pointed(L, 0.0);
-  CHECK(close(e->half_length(), c->half_length(), kExact));
+  CHECK(close(e->length(), c->length(), kExact));
   for (int i = 0; i <= 100; ++i) {
-    const double s = c->half_length() * i / 100;
+    const double s = c->length() * i / 100;
     CAPTURE(s);
     const CurvePoint p = e->at(s), q = c->at(s);
     CHECK(std::abs(p.x - q.x) <= kExact * L);
@@ -223,7 +223,7 @@ TEST_CASE("elliptical family lies on its ellipse with the ellipse's curvature") 
     const double h = rr * L;
     const auto c = make_elliptical(L, rr);
     for (int i = 0; i <= 50; ++i) {
-      const CurvePoint p = c->at(c->half_length() * i / 50);
+      const CurvePoint p = c->at(c->length() * i / 50);
       const double u = (p.x - a) / a, v = p.y / h;
       CHECK(std::abs(u * u + v * v - 1) <= kExact);
       // kappa = -a h / (a^2 sin^2 t + h^2 cos^2 t)^{3/2} with cos t = -u, sin t = v.
@@ -243,9 +243,9 @@ TEST_CASE("segmental family follows the known radius formula") {
     REQUIRE(c->arcs().size() == 1);
     CHECK(close(c->arcs()[0].kappa, -1 / R, kExact));
     CHECK(close(c->at(0).theta, std::asin(L / (2 * R)), kExact));
-    CHECK(close(c->half_length(), R * std::asin(L / (2 * R)), kExact));
+    CHECK(close(c->length(), R * std::asin(L / (2 * R)), kExact));
     for (int i = 0; i <= 20; ++i) {
-      const CurvePoint p = c->at(c->half_length() * i / 20);
+      const CurvePoint p = c->at(c->length() * i / 20);
       CHECK(close(std::hypot(p.x - L / 2, p.y - (h - R)), R, kExact));
     }
   }
@@ -264,7 +264,7 @@ TEST_CASE("three-centred family: tangent-continuous - curvature jumps from -1/r1
       const auto c = make_three_centred(L, rr, phi_deg);
       const auto bps = c->breakpoints();
       REQUIRE(bps.size() == 1);
-      const double b = bps[0], eps = 1e-9 * c->half_length();
+      const double b = bps[0], eps = 1e-9 * c->length();
       const CurvePoint before = c->at(b - eps), after = c->at(b + eps), at = c->at(b);
       // Tangent-continuous: the jump across 2 eps is the turning of the arcs over that length.
       CHECK(std::abs(after.theta - before.theta) <= eps * (std::abs(before.kappa) + std::abs(after.kappa)) + kExact);
@@ -305,7 +305,7 @@ TEST_CASE("four-centred family reproduces the quarter-point construction and joi
   REQUIRE(c->arcs().size() == 2);
   CHECK(close(-1 / c->arcs()[0].kappa, r1, kExact));
   CHECK(close(-1 / c->arcs()[1].kappa, r2, kExact));
-  CHECK(close(c->at(c->half_length()).theta, crown_deg * kPi / 180, kExact));
+  CHECK(close(c->at(c->length()).theta, crown_deg * kPi / 180, kExact));
   for (int i = 0; i <= 10; ++i) {
     const double s = c->arcs()[1].s_start + c->arcs()[1].length * i / 10;
     const CurvePoint p = c->at(s);
@@ -341,7 +341,7 @@ TEST_CASE("catenary family: the parameter solves a (cosh(L/2a) - 1) = h and the 
     // Funicular: H / V at the springing = cot theta(0) = 1 / sinh(L / 2a).
     CHECK(close(1 / std::tan(c->at(0).theta), 1 / std::sinh(L / (2 * a)), kExact));
     for (int i = 0; i <= 20; ++i) {
-      const CurvePoint p = c->at(c->half_length() * i / 20);
+      const CurvePoint p = c->at(c->length() * i / 20);
       CHECK(std::abs(p.y - (h - a * (std::cosh((p.x - L / 2) / a) - 1))) <= kExact * L);
     }
   }
@@ -354,7 +354,7 @@ TEST_CASE("parabolic family: y(x) - the springing angle atan(4h/L) and the curva
     const auto c = make_parabolic(L, rr);
     CHECK(close(c->at(0).theta, std::atan(4 * h / L), kExact));
     for (int i = 0; i <= 20; ++i) {
-      const CurvePoint p = c->at(c->half_length() * i / 20);
+      const CurvePoint p = c->at(c->length() * i / 20);
       CHECK(std::abs(p.y - parabola_y(L, h, p.x)) <= kExact * L);
       CHECK(std::abs(p.theta - parabola_theta(L, h, p.x)) <= kExact);
       const double slope = std::tan(p.theta);
@@ -393,20 +393,20 @@ TEST_CASE("points fitted to exact parabola samples reproduce it and converge as 
     CHECK(bp.size() == static_cast<std::size_t>(n) - 2);
     CHECK(std::is_sorted(bp.begin(), bp.end()));
     CHECK(bp.front() > 0);
-    CHECK(bp.back() < c->half_length());
+    CHECK(bp.back() < c->length());
     CHECK(c->arcs().empty());
     CHECK(c->at(0).x == 0);
     CHECK(c->at(0).y == 0);
-    CHECK(c->at(c->half_length()).x == L / 2);
-    CHECK(c->at(c->half_length()).y == h);
-    CHECK(std::abs(c->at(c->half_length()).theta) <= kExact);
+    CHECK(c->at(c->length()).x == L / 2);
+    CHECK(c->at(c->length()).y == h);
+    CHECK(std::abs(c->at(c->length()).theta) <= kExact);
     double err_y = 0, err_theta = 0;
     for (int i = 0; i <= 2000; ++i) {
-      const CurvePoint p = c->at(c->half_length() * i / 2000);
+      const CurvePoint p = c->at(c->length() * i / 2000);
       err_y = std::max(err_y, std::abs(p.y - parabola_y(L, h, p.x)));
       err_theta = std::max(err_theta, std::abs(p.theta - parabola_theta(L, h, p.x)));
     }
-    const double err_length = std::abs(c->half_length() - exact->half_length());
+    const double err_length = std::abs(c->length() - exact->length());
     MESSAGE("n ", n, ": max |dy| ", err_y, " m, max |dtheta| ", err_theta, " rad, |dS| ", err_length, " m");
     CHECK(err_y <= 1e-5 * L);
     CHECK(err_theta <= 1e-3);
@@ -425,7 +425,7 @@ TEST_CASE("points fitted to exact parabola samples reproduce it and converge as 
 TEST_CASE("points curve is ds-consistent and its first moment matches quadrature") {
   const auto c = make_points_curve(parabola_points(10, 5, 40));
   // The spline's third derivative jumps at the points: a small step keeps the truncation error small.
-  const double S = c->half_length(), d = 1e-4 * S;
+  const double S = c->length(), d = 1e-4 * S;
   for (int i = 1; i < 60; ++i) {
     const double s = S * i / 60.0;
     const CurvePoint p = c->at(s);
@@ -446,9 +446,9 @@ TEST_CASE("points files shipped in data/curves fit their curves") {
     const auto file = read_points_curve(data_file("parabola-40.csv"));
     const auto direct = make_points_curve(parabola_points(10, 5, 40));
     CHECK(file->span() == 10);
-    CHECK(close(file->half_length(), direct->half_length(), 1e-14));
+    CHECK(close(file->length(), direct->length(), 1e-14));
     for (int i = 0; i <= 50; ++i) {
-      const double s = file->half_length() * i / 50;
+      const double s = file->length() * i / 50;
       CHECK(std::abs(file->at(s).y - direct->at(s).y) <= 1e-14 * 10);
     }
   }
@@ -456,9 +456,9 @@ TEST_CASE("points files shipped in data/curves fit their curves") {
     const auto c = read_points_curve(data_file("semicircle-24.csv"));
     const auto exact = make_pointed(10, 0);
     CHECK(c->span() == 10);
-    CHECK(close(c->half_length(), exact->half_length(), 1e-5));
+    CHECK(close(c->length(), exact->length(), 1e-5));
     for (int i = 0; i <= 200; ++i) {
-      const CurvePoint p = c->at(c->half_length() * i / 200);
+      const CurvePoint p = c->at(c->length() * i / 200);
       CHECK(std::abs(std::hypot(p.x - 5, p.y) - 5) <= 1e-5);
       CHECK(std::abs(p.kappa + 0.2) <= 2e-3);
     }
@@ -469,9 +469,9 @@ TEST_CASE("points files shipped in data/curves fit their curves") {
     CHECK(c->span() == 12);
     CHECK(c->rise() == 4);
     const auto model = make_catenary(12, 4.0 / 12);
-    CHECK(close(c->half_length(), model->half_length(), 1e-3));
+    CHECK(close(c->length(), model->length(), 1e-3));
     for (int i = 0; i <= 100; ++i) {
-      const CurvePoint p = c->at(c->half_length() * i / 100);
+      const CurvePoint p = c->at(c->length() * i / 100);
       const double a = catenary_parameter(12, 4.0 / 12);
       CHECK(std::abs(p.y - (4 - a * (std::cosh((p.x - 6) / a) - 1))) <= 5e-3);  // survey noise: +-2 mm
       CHECK(p.kappa < 0);
@@ -499,10 +499,10 @@ TEST_CASE("points file variants (CRLF - BOM - spaces - trailing blank lines) giv
   for (std::size_t v = 0; v < variants.size(); ++v) {
     CAPTURE(v);
     const auto c = parse_text(variants[v]);
-    CHECK(c->half_length() == reference->half_length());
+    CHECK(c->length() == reference->length());
     CHECK(c->first_moment_x() == reference->first_moment_x());
     for (int i = 0; i <= 40; ++i) {
-      const double s = reference->half_length() * i / 40;
+      const double s = reference->length() * i / 40;
       const CurvePoint p = c->at(s), q = reference->at(s);
       CHECK(p.x == q.x);
       CHECK(p.y == q.y);
@@ -609,6 +609,6 @@ TEST_CASE("make_points_curve applies the same rules to points given directly") {
   CHECK(c->span() == 6);
   CHECK(c->at(0).x == 0);
   CHECK(c->at(0).y == 0);
-  CHECK(c->at(c->half_length()).x == 3);
+  CHECK(c->at(c->length()).x == 3);
   CHECK(c->rise() == 3);
 }

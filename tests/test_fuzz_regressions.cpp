@@ -185,7 +185,7 @@ TEST_CASE("fuzz found: a points fit that stops at its crown took minutes to tabu
   const auto pointed = ogive::make_pointed(10, 10);
   std::vector<std::pair<double, double>> xy;
   for (int i = 0; i < 100; ++i) {
-    const ogive::CurvePoint p = pointed->at(pointed->half_length() * i / 99);
+    const ogive::CurvePoint p = pointed->at(pointed->length() * i / 99);
     xy.emplace_back(p.x, i == 0 ? 0.0 : p.y);
   }
   const auto fitted = ogive::make_points_curve(xy);

@@ -18,7 +18,7 @@ TEST_CASE("geometry: the faces are t/2 either side of the axis, across the tange
   const double t = 0.8;
   for (const auto& curve : {make_pointed(10, 0.5), make_catenary(10, 0.4), make_four_centred(10, 0.42, 45, 15)}) {
     CAPTURE(curve->family());
-    const double S = curve->half_length();
+    const double S = curve->length();
     for (int k = 0; k <= 20; ++k) {
       const CurvePoint p = curve->at_whole_arch(2 * S * k / 20);
       const SectionFaces f = section_faces(p, t);
@@ -37,7 +37,7 @@ TEST_CASE("geometry: the faces are t/2 either side of the axis, across the tange
   // On the semicircle: the faces are the circles of radii R -+ t/2 about the centre (L/2, 0).
   const auto circle = make_pointed(10, 0);
   for (int k = 0; k <= 10; ++k) {
-    const SectionFaces f = section_faces(circle->at(circle->half_length() * k / 10), t);
+    const SectionFaces f = section_faces(circle->at(circle->length() * k / 10), t);
     CHECK(std::abs(std::hypot(f.intrados.x - 5, f.intrados.y) - (5 - t / 2)) <= kExact * 10);
     CHECK(std::abs(std::hypot(f.extrados.x - 5, f.extrados.y) - (5 + t / 2)) <= kExact * 10);
   }

@@ -206,7 +206,7 @@ TEST_CASE("limit: the ring's weight and centroids are those of the annulus; the 
   }
   o.weight = WeightModel::axis;
   const Ring axis = make_ring(*curve, t, kGamma, o);
-  CHECK(close(axis.total_weight(), kGamma * t * 2.0 * curve->half_length(), kExact));
+  CHECK(close(axis.total_weight(), kGamma * t * 2.0 * curve->length(), kExact));
 }
 
 TEST_CASE("limit: the pointed ring weighs what the two annulus segments left of mid-span weigh, whatever the joints") {

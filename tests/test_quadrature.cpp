@@ -53,7 +53,7 @@ Scene scene_of(std::shared_ptr<const Curve> curve, double t_over_L = 0.08, doubl
   Scene s;
   s.curve = std::move(curve);
   s.thickness = t_over_L * s.curve->span();
-  s.support_displacement = d_over_L * s.curve->span();
+  s.set_support_displacement(d_over_L * s.curve->span());
   return s;
 }
 
@@ -228,7 +228,7 @@ TEST_CASE("curves: a parameter of their own agrees with the arc length (parabola
     CAPTURE(curve->family());
     // The knots are the springing, the breakpoints and the crown.
     CHECK(curve->at_parameter(knots.front()).s == 0.0);
-    CHECK(close(curve->at_parameter(knots.back()).s, curve->half_length(), kExact));
+    CHECK(close(curve->at_parameter(knots.back()).s, curve->length(), kExact));
     for (std::size_t k = 1; k + 1 < knots.size(); ++k)
       CHECK(close(curve->at_parameter(knots[k]).s, curve->breakpoints()[k - 1], kExact));
     for (std::size_t k = 0; k + 1 < knots.size(); ++k)
@@ -262,7 +262,7 @@ TEST_CASE("curves: the largest curvature they know agrees with sampling the curv
     double sampled = 0;
     constexpr int kSamples = 4096;
     for (int i = 0; i <= kSamples; ++i)
-      sampled = std::max(sampled, std::abs(curve->at(curve->half_length() * i / kSamples).kappa));
+      sampled = std::max(sampled, std::abs(curve->at(curve->length() * i / kSamples).kappa));
     CAPTURE(curve->family());
     // Never smaller than what any sample shows (to round-off), and no more than sampling between the
     // samples can miss (the curvature varies smoothly between breakpoints).

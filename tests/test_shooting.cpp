@@ -156,7 +156,7 @@ TEST_CASE("shooting: the profile matches the closed form's at every station") {
         CHECK(std::abs(a.e - b.e) <= 600.0 * 10 * rtol * (sM / std::abs(b.N) + std::abs(b.M) * sN / (b.N * b.N)) / 1.0);
       }
       // The state view at any s, right half included, agrees as well.
-      const double s = 1.2345 * scene.curve->half_length();
+      const double s = 1.2345 * scene.curve->length();
       CHECK(std::abs(sol.at(s).M - ref.at(s).M) <= 10 * rtol * sM);
     }
   }
@@ -204,7 +204,7 @@ TEST_CASE("closed form on a non-circular curve is not applicable - with a reason
   struct Sine final : Curve {
     std::string family() const override { return "sine"; }
     double span() const override { return 10.0; }
-    double half_length() const override { return 8.0; }
+    double length() const override { return 8.0; }
     CurvePoint at(double s) const override {
       // A made-up smooth curve: theta = pi/2 (1 - s/8)^2 is enough for this test's purpose.
       const double th = std::numbers::pi / 2 * (1 - s / 8) * (1 - s / 8);

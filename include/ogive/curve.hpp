@@ -1,13 +1,23 @@
-// Generator curves of symmetric arches, described by arc length.
+// Generator curves, described by arc length.
 //
-// A Curve is the axis of the LEFT HALF of a symmetric arch: arc length s runs from the left springing
-// (s = 0, at x = 0, y = 0) to the crown (s = S = half_length(), at x = span/2). The right half is its
-// mirror image about x = span/2. Units: metres and radians.
+// A Curve is the axis of an arch from its left springing (s = 0, at x = 0, y = 0), and its extent() says
+// how much of the arch it describes:
+//   half:  the LEFT HALF of a symmetric arch, to the crown at s = S = length(), x = span/2; the right
+//          half is its mirror image about x = span/2 (every classic family, and half-arch surveys);
+//   whole: the whole arch, springing to springing: s = length() is the right springing, at x = span(),
+//          y = right_springing_height() (either sign: a rampant arch). The span L is the horizontal
+//          distance between the springings, and heights are measured up from the left springing.
+// whole_arch(curve) turns a half into the whole arch it stands for (mirrored); the model solves a
+// symmetric scene over the half and every other scene over the whole.
+// Units: metres and radians.
 //   theta(s): angle of the tangent (direction of increasing s) to the horizontal; pi/2 at a vertical
-//             springing, 0 at a smooth crown, > 0 at a pointed crown's kink.
+//             left springing, 0 at a smooth crown, > 0 at a pointed crown's kink on the left half (and
+//             < 0 beyond the crown of a whole arch).
 //   kappa(s): d theta / ds (1/m); negative for an arch that curves downwards (kappa = -1/R on a circle).
-// Invariants every Curve keeps: span() > 0; half_length() > 0; at(0) is (0, 0); at(S).x == span()/2;
-// breakpoints() are strictly increasing and strictly inside (0, S).
+// Invariants every Curve keeps: span() > 0; length() > 0; at(0) is (0, 0); a half's at(S).x == span()/2,
+// a whole's at(length()).x == span(); x(s) never decreases; breakpoints() are strictly increasing and
+// strictly inside (0, length()). At a breakpoint where the tangent jumps (a pointed crown of a whole
+// arch), angle() and at() give the value before it (from the left).
 #pragma once
 
 #include <memory>
@@ -46,12 +56,15 @@ struct CircularArc {
   double kappa = 0;  // 1/m, constant on the arc
 };
 
+enum class CurveExtent { half, whole };
+
 class Curve {
  public:
   virtual ~Curve() = default;
+  virtual CurveExtent extent() const { return CurveExtent::half; }
   virtual std::string family() const = 0;
   virtual double span() const = 0;         // L, m
-  virtual double half_length() const = 0;  // S, m
+  virtual double length() const = 0;  // m: S for a half, the whole arch's length for a whole
   virtual CurvePoint at(double s) const = 0;
   // at(s).theta alone: what the integrators and the quadrature ask for at every node or right-hand
   // side. Families override it where the angle is cheaper than the point (same value to round-off).
@@ -60,11 +73,18 @@ class Curve {
   virtual std::vector<double> breakpoints() const { return {}; }
   // Non-empty exactly when the curve is piecewise circular; then the closed form applies arc by arc.
   virtual std::span<const CircularArc> arcs() const { return {}; }
-  double rise() const { return at(half_length()).y; }
-  // The point at arc length s of the whole arch, 0 <= s <= 2S: on the right half the mirror image of
-  // the left half's point at 2S - s.
+  // The crown's arc length (m): S for a half and a mirrored half; a whole curve's highest point.
+  virtual double crown() const { return length(); }
+  // The highest point's height above the left springing (m): the crown's y.
+  double rise() const { return at(crown()).y; }
+  // The right springing's height above the left one (m): 0 for a half (its mirror) and a symmetric arch.
+  virtual double right_springing_height() const { return 0.0; }
+  // The length of the whole arch (m): 2 S for a half, length() for a whole.
+  double whole_length() const { return extent() == CurveExtent::half ? 2.0 * length() : length(); }
+  // The point at arc length s of the whole arch, 0 <= s <= whole_length(): for a half, on the right half
+  // the mirror image of the left half's point at 2S - s; for a whole, at(s).
   CurvePoint at_whole_arch(double s) const;
-  // Integral of x(s) ds over the half arch (m^2): the weight's moment about the springing per unit w.
+  // Integral of x(s) ds over the curve's extent (m^2): the weight's moment about the springing per unit w.
   virtual double first_moment_x() const;
   // A parameter of the curve's own, t, increasing from the springing to the crown, in which arc length and
   // tangent are explicit (no inversion of s(t)): the quadrature method places its nodes in t then. The
@@ -79,14 +99,14 @@ class Curve {
   virtual double max_curvature() const;
 };
 
-// A curve made of circular arcs that join with a continuous position (tangent jumps are allowed only at
-// the crown). Positions, angles and the first moment are exact.
+// A half arch made of circular arcs that join with a continuous position (tangent jumps are allowed only
+// at the crown). Positions, angles and the first moment are exact.
 class PiecewiseCircularCurve final : public Curve {
  public:
   PiecewiseCircularCurve(std::string family, double span, std::vector<CircularArc> arcs);
   std::string family() const override { return family_; }
   double span() const override { return span_; }
-  double half_length() const override { return half_length_; }
+  double length() const override { return length_; }
   CurvePoint at(double s) const override;
   double angle(double s) const override;
   std::vector<double> breakpoints() const override;
@@ -97,10 +117,19 @@ class PiecewiseCircularCurve final : public Curve {
  private:
   std::string family_;
   double span_;
-  double half_length_;
+  double length_;
   std::vector<CircularArc> arcs_;
   const CircularArc& arc_at(double s) const;  // the last arc whose start is <= s (the first before it)
 };
+
+// The whole arch a curve stands for: a whole curve itself, a half joined to its mirror image (extent
+// whole, the crown at s = S a breakpoint; piecewise circular when the half is). Throws
+// std::invalid_argument for a null curve.
+std::shared_ptr<const Curve> whole_arch(std::shared_ptr<const Curve> curve);
+
+// The arc length (m) at which the axis reaches the horizontal position x (m, clamped to [0, span]) on the
+// whole arch of the curve (x(s) never decreases): the first such s, to round-off of the span.
+double arc_length_at_x(const Curve& whole, double x);
 
 // The mirror image about x = span/2 of a left-half point, its tangent pointing on towards the right
 // springing (theta < 0); the curvature keeps its sign: the mirrored arch still turns downwards.

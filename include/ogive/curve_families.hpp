@@ -103,7 +103,7 @@ class ParametricCurve : public Curve {
     double dx, dy;  // d/dt
     double ddx, ddy;  // d^2/dt^2
   };
-  double half_length() const override { return s_.back(); }
+  double length() const override { return s_.back(); }
   CurvePoint at(double s) const override;
   double first_moment_x() const override { return first_moment_; }
   // The largest |kappa| at the arc-length panels' ends and Gauss nodes, found while tabulating.

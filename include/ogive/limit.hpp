@@ -45,10 +45,10 @@ enum class WeightModel {
 const char* to_string(JointOrientation j);
 const char* to_string(WeightModel w);
 
-// The live load: one vertical point load on the extrados, whose multiplier at collapse is the load
+// The collapse load: one vertical point load on the extrados, whose multiplier at collapse is the load
 // factor. A small struct on purpose: issue 11's general loads (several point loads, distributed
 // loads, fill) will replace it without changing the rest of the module.
-struct PointLoad {
+struct CollapseLoad {
   double force = 0;       // P, N per metre of vault width, downward; 0: no live load
   double position = 0.5;  // a: the load acts at x = a L, in [0, 1], on the voussoir whose extrados holds x
   bool present() const { return force > 0; }
@@ -69,7 +69,7 @@ struct LimitOptions {
   // Coulomb friction coefficient of the joints; 0: no sliding check (sliding is excluded). When > 0,
   // every joint must also satisfy |shear| <= friction * normal force.
   double friction = 0;
-  PointLoad point_load;
+  CollapseLoad point_load;
   // Ceres-style check: false with the reason in *why (naming the field) when an option is unusable.
   bool is_valid(std::string* why) const;
 };
@@ -168,7 +168,7 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options);
 // The state of a thrust line with reactions (H, V_left) and left-support moment M_left about the origin
 // (N m/m), under the ring's self-weight and `load_factor` times the point load: where it crosses each
 // joint. The hinges are joints crossed at a face to `hinge_tolerance` of the joint's length.
-ThrustState thrust_state(const Ring& ring, const PointLoad& load, double H, double V_left, double M_left,
+ThrustState thrust_state(const Ring& ring, const CollapseLoad& load, double H, double V_left, double M_left,
                          double load_factor, double hinge_tolerance = 1e-9);
 
 // The kinematic (upper-bound) multiplier of the point load for the mechanism whose hinges are given:
@@ -177,6 +177,6 @@ ThrustState thrust_state(const Ring& ring, const PointLoad& load, double H, doub
 // make a mechanism of one degree of freedom in which the point load does work and every hinge opens on
 // the face opposite to its own (kinematically admissible). Given more than four hinges (a degenerate
 // static optimum), the least multiplier of the admissible mechanisms of four of them.
-double mechanism_load_factor(const Ring& ring, const PointLoad& load, const std::vector<Hinge>& hinges);
+double mechanism_load_factor(const Ring& ring, const CollapseLoad& load, const std::vector<Hinge>& hinges);
 
 }  // namespace ogive

@@ -63,7 +63,7 @@ struct Options {
   // CVODE's rtol. A larger atol loosens the first solve only: the verifying solve uses the smaller of
   // atol and that default, divided by 16, so that no atol can make both solves agree on a wrong answer.
   double atol = 0.0;
-  int segments = 8;    // multiple shooting: segments over the half arch (>= 1; breakpoints add more)
+  int segments = 8;    // multiple shooting: segments over the domain (>= 1; breakpoints, loads, a hinge add more)
   std::int64_t max_steps = 200000;  // CVODE step limit for one integration span
   // Profile stations over the whole arch, springing to springing (0: none, else >= 2). With a profile,
   // its error is part of the estimate, compared at min(stations, kVerificationStations) stations.
@@ -77,6 +77,9 @@ struct Options {
   // Restart the integrator at every breakpoint of the curve (jumps of curvature). Off only for studies
   // of what a step across a jump costs (the stability map).
   bool restart_at_breakpoints = true;
+  // Solve a symmetric scene over the whole arch as well (a check: by default such a scene is solved over
+  // the half, the smaller model; ArchModel::half() says which one a solution used).
+  bool whole_arch = false;
 
   // Ceres-style check: false with the reason in *why (naming the field) when an option is unusable.
   bool is_valid(std::string* why) const;
@@ -89,29 +92,29 @@ struct Diagnostics {
   std::int64_t error_test_failures = 0;  // CVODE local error test failures
   std::int64_t jacobian_evaluations = 0; // CVODE Jacobian evaluations (BDF)
   int segments = 0;                      // shooting segments used (arcs for the closed form, panels for the quadrature)
-  // Skeel's condition number cond(Q) = || |Q^-1| |Q| ||_inf of the 3 x 3 boundary-value matrix
-  // Q = B_crown Phi(S) U of the scaled problem (U: the springing state's three unknown directions; the
-  // other three are given), invariant to the scaling of its rows. Every method reports the condition
+  // Skeel's condition number cond(Q) = || |Q^-1| |Q| ||_inf of the boundary-value matrix Q of the
+  // scaled problem in its m unknowns (the springing state's three unknown components, and psi's jump at
+  // a hinge inside the domain): Q = B_end Phi(S) U without a hinge. Invariant to the scaling of its rows. Every method reports the condition
   // of the same problem: multiple shooting condenses its segments' transfers into Phi(S) U for this
   // estimate, so it does not grow with the number of segments.
   double condition_estimate = std::numeric_limits<double>::quiet_NaN();
   double boundary_residual = std::numeric_limits<double>::quiet_NaN();   // max |BC residual|, scaled
-  double equilibrium_residual = std::numeric_limits<double>::quiet_NaN(); // relative to half weight
+  double equilibrium_residual = std::numeric_limits<double>::quiet_NaN(); // relative to the domain's load
   // Estimated relative error of the printed numbers, never smaller than condition_estimate times
   // round-off. CVODE methods (verified): the difference between a solve at rtol and one at rtol / 16, of
-  // H relative to max(|H|, V / 100) (H crosses zero under support spreading) and, with a profile,
-  // profile_difference; the tighter solution is the one returned, so its own error is smaller still
+  // the reactions (reaction_difference) and, with a profile, profile_difference; the tighter solution is the one returned, so its own error is smaller still
   // whenever the second solve is at least twice as accurate as the first. The quadrature method: the
   // same difference between its last two degrees (quadrature.hpp). The closed form: its round-off
   // bound alone. NaN when not estimated (status unverified, or a failed solve).
   double error_estimate = std::numeric_limits<double>::quiet_NaN();
 };
 
-// The solved state along the half arch in scaled units: lets any method serve as another's reference.
+// The solved state along the model's domain (the half or the whole arch) in scaled units: lets any method serve as another's reference.
 class StateField {
  public:
   virtual ~StateField() = default;
-  // Scaled states at scaled arc lengths s (ascending, within [0, S~]) into out (same size).
+  // Scaled states at scaled arc lengths s (ascending, within the model's domain [0, S~]) into out (same
+  // size). At a point load, the state after it.
   virtual void sample(std::span<const double> s, std::span<StateVector> out) const = 0;
 };
 
@@ -119,15 +122,18 @@ struct Solution {
   Status status = Status::not_applicable;
   std::string message;
   Method method = Method::automatic;  // the method that produced the numbers (never automatic)
-  double H = std::numeric_limits<double>::quiet_NaN();         // N/m, inward push of a support
-  double V = std::numeric_limits<double>::quiet_NaN();         // N/m, half the weight
-  double H_over_V = std::numeric_limits<double>::quiet_NaN();  // normalized horizontal reaction
+  // Both springings' reactions (arch_model.hpp: H into the span, V up, M counter-clockwise); NaN-free
+  // only when a field exists.
+  Reactions reactions;
+  double H = std::numeric_limits<double>::quiet_NaN();         // N/m, H_left: the inward push of the left support
+  double V = std::numeric_limits<double>::quiet_NaN();         // N/m, V_left (half the load of a symmetric scene)
+  double H_over_V = std::numeric_limits<double>::quiet_NaN();  // H_left / V_left
   std::vector<ArchState> profile;  // Options::stations states, springing to springing
   Diagnostics diagnostics;
 
   bool ok() const { return status == Status::success; }
-  // The state at arc length s (m) of the whole arch, 0 <= s <= 2S; right half by symmetry.
-  // Requires a solved field (status success or ill_conditioned).
+  // The state at arc length s (m) of the whole arch, 0 <= s <= its length; the right half by symmetry
+  // when the model is the half arch. Requires a solved field (status success or ill_conditioned).
   ArchState at(double s) const;
 
   std::shared_ptr<const ArchModel> model;
@@ -147,6 +153,13 @@ void sample_profile(Solution& solution, int stations);
 // solution's field (empty without a field or for indices out of range): a long profile in pieces, so
 // that memory does not grow with the number of stations.
 std::vector<ArchState> sample_stations(const Solution& solution, int stations, int first, int count);
+
+// The error measure of reactions against a reference: each force's difference relative to the larger of
+// its own size and F / 100, F being the largest of the reference's |H_left|, |V_left|, |V_right| (H crosses
+// zero under support spreading, where no relative error of H means anything: its absolute error is
+// then held to rtol V / 100); each couple's relative to the larger of the largest |M| and F t / 6 (the
+// couple that puts the thrust at the kern's edge).
+double reaction_difference(const Reactions& a, const Reactions& reference, double thickness);
 
 // The error measure of a profile against a reference at the same stations: the largest difference of
 // the displacement (Ux, Uy) relative to the largest |U| of the reference, of psi relative to the

@@ -88,7 +88,7 @@ const char* to_string(LimitStatus s) {
   return "unknown";
 }
 
-ThrustState thrust_state(const Ring& ring, const PointLoad& load, double H, double V_left, double M_left,
+ThrustState thrust_state(const Ring& ring, const CollapseLoad& load, double H, double V_left, double M_left,
                          double load_factor, double hinge_tolerance) {
   const limit_detail::LoadsLeftOfJoints left = limit_detail::loads_left_of_joints(ring, load);
   ThrustState st;
@@ -119,7 +119,7 @@ namespace {
 // The multiplier of one mechanism with hinges h (sorted by joint, distinct joints): NaN unless it has
 // exactly one degree of freedom, the point load does work in it, and it is kinematically admissible
 // (each hinge opens on the face opposite to its own).
-double one_mechanism(const Ring& ring, const PointLoad& load, const std::vector<Hinge>& h) {
+double one_mechanism(const Ring& ring, const CollapseLoad& load, const std::vector<Hinge>& h) {
   // Bodies b = 0 .. k-2 between consecutive hinges, each with a rigid velocity (u, v, omega): a point p
   // moves with (u - omega p_y, v + omega p_x). The parts outside the first and last hinges stay put.
   const int k = static_cast<int>(h.size()), bodies = k - 1;
@@ -170,7 +170,7 @@ double one_mechanism(const Ring& ring, const PointLoad& load, const std::vector<
 
 }  // namespace
 
-double mechanism_load_factor(const Ring& ring, const PointLoad& load, const std::vector<Hinge>& hinges) {
+double mechanism_load_factor(const Ring& ring, const CollapseLoad& load, const std::vector<Hinge>& hinges) {
   if (!load.present() || hinges.size() < 3) return kNaN;
   std::vector<Hinge> h = hinges;
   std::sort(h.begin(), h.end(), [](const Hinge& a, const Hinge& b) { return a.joint < b.joint; });
@@ -199,7 +199,7 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
   const Curve& curve = *scene.curve;
   const double unit_weight = scene.material.density * scene.material.gravity;
   const Ring ring = make_ring(curve, scene.thickness, unit_weight, options);
-  const PointLoad& load = options.point_load;
+  const CollapseLoad& load = options.point_load;
   const double load_factor = load.present() ? 1.0 : 0.0;  // the H range and t_min: under the loads as given
 
   LimitResult r;

@@ -11,7 +11,7 @@ namespace ogive::limit_detail {
 
 // The voussoir that carries the point load: the one whose extrados holds x = a L (the first of two at a
 // shared joint). -1 without a point load.
-int loaded_voussoir(const Ring& ring, const PointLoad& load);
+int loaded_voussoir(const Ring& ring, const CollapseLoad& load);
 
 // What lies to the left of each joint j (voussoirs 0 .. j-1), for the equilibrium of that part:
 // the self-weight and its moment about the origin (sum of x W), and the point load's share (P or 0)
@@ -19,7 +19,7 @@ int loaded_voussoir(const Ring& ring, const PointLoad& load);
 struct LoadsLeftOfJoints {
   std::vector<double> dead, dead_moment, live, live_moment;
 };
-LoadsLeftOfJoints loads_left_of_joints(const Ring& ring, const PointLoad& load);
+LoadsLeftOfJoints loads_left_of_joints(const Ring& ring, const CollapseLoad& load);
 
 // The linear programs of one ring and load. Unknowns: the thrust H, the left support's vertical
 // reaction V and moment M about the origin, the load factor lambda and the margin mu. Joint j carries
@@ -28,7 +28,7 @@ LoadsLeftOfJoints loads_left_of_joints(const Ring& ring, const PointLoad& load);
 // m_j - I x F_j <= -mu h_j and m_j - E x F_j >= mu h_j, h_j = |E - I| W (W the self-weight).
 class LimitLp {
  public:
-  LimitLp(const Ring& ring, const PointLoad& load, double friction);
+  LimitLp(const Ring& ring, const CollapseLoad& load, double friction);
   ~LimitLp();
   LimitLp(const LimitLp&) = delete;
   LimitLp& operator=(const LimitLp&) = delete;

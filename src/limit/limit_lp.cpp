@@ -54,7 +54,7 @@ struct LimitLp::Impl {
                   const std::vector<int>* warm = nullptr) const;
 };
 
-LimitLp::LimitLp(const Ring& ring, const PointLoad& load, double friction) : impl_(std::make_unique<Impl>()) {
+LimitLp::LimitLp(const Ring& ring, const CollapseLoad& load, double friction) : impl_(std::make_unique<Impl>()) {
   const double W = ring.total_weight(), L = ring.span;
   impl_->weight = W;
   impl_->span = L;

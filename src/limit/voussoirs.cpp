@@ -24,7 +24,7 @@ struct FacePoint {
 };
 
 CurvePoint axis_at(const Curve& curve, double s) {
-  const double S = curve.half_length();
+  const double S = curve.length();
   if (s <= S || !curve.arcs().empty()) return curve.at(s);
   const CurvePoint c = curve.at(S);
   return {c.x + (s - S) * std::cos(c.theta), c.y + (s - S) * std::sin(c.theta), c.theta, 0.0};
@@ -150,7 +150,7 @@ Ring make_ring(const Curve& curve, double thickness, double unit_weight, const L
     throw std::invalid_argument(fmt::format(
         "thickness: must be > 0 and less than twice the smallest radius of curvature ({} m), got {} m",
         max_thickness(curve), thickness));
-  const double L = curve.span(), S = curve.half_length(), half_t = 0.5 * thickness;
+  const double L = curve.span(), S = curve.length(), half_t = 0.5 * thickness;
   const int m = (options.joints_count - 1) / 2;  // voussoirs per half
 
   // The crown joint is vertical at mid-span. At a pointed crown the intrados reaches mid-span before the
@@ -234,7 +234,7 @@ Ring make_ring(const Curve& curve, double thickness, double unit_weight, const L
 
 namespace limit_detail {
 
-int loaded_voussoir(const Ring& ring, const PointLoad& load) {
+int loaded_voussoir(const Ring& ring, const CollapseLoad& load) {
   if (!load.present()) return -1;
   const double x = load.position * ring.span;
   for (std::size_t k = 0; k + 1 < ring.joints.size(); ++k)
@@ -242,7 +242,7 @@ int loaded_voussoir(const Ring& ring, const PointLoad& load) {
   return static_cast<int>(ring.voussoirs.size()) - 1;
 }
 
-LoadsLeftOfJoints loads_left_of_joints(const Ring& ring, const PointLoad& load) {
+LoadsLeftOfJoints loads_left_of_joints(const Ring& ring, const CollapseLoad& load) {
   const std::size_t n = ring.joints.size();
   LoadsLeftOfJoints out{std::vector<double>(n, 0.0), std::vector<double>(n, 0.0), std::vector<double>(n, 0.0),
                         std::vector<double>(n, 0.0)};

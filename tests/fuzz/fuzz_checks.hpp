@@ -252,7 +252,7 @@ inline void check_values(std::string_view text, bool every_cli = false) {
 
 // The invariants of curve.hpp, on any curve.
 inline void check_curve(const ogive::Curve& curve) {
-  const double L = curve.span(), S = curve.half_length();
+  const double L = curve.span(), S = curve.length();
   require(std::isfinite(L) && L > 0, "span {}", L);
   require(std::isfinite(S) && S > 0, "half length {}", S);
   // The half arch reaches from x = 0 to x = L/2: it is at least that long (to round-off).

@@ -1,0 +1,186 @@
+#include "bvp.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include <Eigen/LU>
+#include <fmt/format.h>
+
+namespace ogive {
+
+SpringingSplit springing_split(const ArchModel& model) {
+  const BoundaryConditions& bc = model.boundary_conditions();
+  SpringingSplit split;
+  std::array<bool, kStateSize> known{};
+  for (int r = 0; r < 3; ++r) {
+    Eigen::Index j = 0;
+    bc.at_start.row(r).cwiseAbs().maxCoeff(&j);
+    // Each springing condition fixes one component: a unit row (ArchModel's conditions are).
+    if (bc.at_start(r, j) != 1.0 || bc.at_start.row(r).cwiseAbs().sum() != 1.0)
+      throw std::logic_error("springing_split: a springing condition is not of the form y_j = value");
+    known[static_cast<std::size_t>(j)] = true;
+    split.start[j] = bc.rhs(r);
+  }
+  int column = 0;
+  for (int j = 0; j < kStateSize; ++j)
+    if (!known[static_cast<std::size_t>(j)]) split.U(j, column++) = 1.0;
+  return split;
+}
+
+int unknown_count(const ArchModel& model) { return model.hinge() ? 4 : 3; }
+
+std::vector<double> required_knots(const ArchModel& model) {
+  std::vector<double> knots{0.0};
+  for (const PointJump& j : model.jumps())
+    if (j.s > 0 && j.s < model.length()) knots.push_back(j.s);
+  if (model.hinge()) knots.push_back(*model.hinge());
+  knots.push_back(model.length());
+  std::sort(knots.begin(), knots.end());
+  knots.erase(std::unique(knots.begin(), knots.end()), knots.end());
+  return knots;
+}
+
+std::vector<double> merge_knots(const ArchModel& model, std::vector<double> extra) {
+  const std::vector<double> required = required_knots(model);
+  const double S = model.length(), close = 1e-9 * S;
+  std::vector<double> out = required;
+  for (double e : extra) {
+    if (!(e > close && e < S - close)) continue;
+    const bool near = std::any_of(required.begin(), required.end(), [&](double r) { return std::abs(r - e) < close; });
+    if (!near) out.push_back(e);
+  }
+  std::sort(out.begin(), out.end());
+  // Extra knots closer than `close` to each other: keep the first.
+  std::vector<double> merged;
+  for (double k : out) {
+    const bool is_required = std::binary_search(required.begin(), required.end(), k);
+    if (!merged.empty() && k - merged.back() < close) {
+      if (is_required) merged.back() = k;
+      continue;
+    }
+    merged.push_back(k);
+  }
+  return merged;
+}
+
+bool march(const ArchModel& model, const std::vector<double>& knots, const Advance& advance, March& out) {
+  const int m = unknown_count(model);
+  const SpringingSplit split = springing_split(model);
+  AffineState Y = AffineState::Zero(kStateSize, m + 1);
+  Y.leftCols<3>() = split.U;
+  Y.col(m) = split.start;
+  const auto& jumps = model.jumps();
+  // The point loads at s (a knot): Fy jumps by their force.
+  auto apply_jumps = [&](double s) {
+    for (const PointJump& j : jumps)
+      if (j.s == s) Y(kFy, m) += j.force;
+  };
+  out.knots = knots;
+  out.starts.clear();
+  out.hinge_row.resize(0);
+  apply_jumps(0.0);
+  const std::size_t K = knots.size() - 1;
+  for (std::size_t k = 0; k < K; ++k) {
+    out.starts.push_back(Y);
+    if (!advance(k, Y)) return false;
+    const double s = knots[k + 1];
+    if (model.hinge() && s == *model.hinge()) {
+      out.hinge_row = Y.row(kM);
+      Y.col(3).setZero();
+      Y(kPsi, 3) = 1.0;  // psi jumps by the fourth unknown
+    }
+    apply_jumps(s);
+  }
+  out.end = Y;
+  return true;
+}
+
+double boundary_value_condition(const Eigen::MatrixXd& Q) {
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(Q);
+  if (!lu.isInvertible()) return std::numeric_limits<double>::infinity();
+  // Skeel's measure, not ||Q|| ||Q^-1||: the rows mix displacement and force conditions whose sizes
+  // differ by orders of magnitude, and a norm-wise estimate would report that scaling, not a loss of
+  // digits. |Q^-1| |Q| is what partial pivoting's backward error is amplified by, row scaling aside.
+  const Eigen::MatrixXd amplification = lu.inverse().cwiseAbs() * Q.cwiseAbs();
+  const double condition = amplification.rowwise().sum().maxCoeff();
+  return std::isfinite(condition) ? condition : std::numeric_limits<double>::infinity();
+}
+
+BvpSolution solve_march(const ArchModel& model, const March& march) {
+  const int m = unknown_count(model);
+  const BoundaryConditions& bc = model.boundary_conditions();
+  Eigen::MatrixXd Q(m, m);
+  Eigen::VectorXd rhs(m);
+  const Eigen::Matrix<double, 3, kStateSize> B = bc.at_end.bottomRows<3>();
+  Q.topRows(3) = B * march.end.leftCols(m);
+  rhs.head(3) = bc.rhs.tail<3>() - B * march.end.col(m);
+  if (m == 4) {
+    Q.row(3) = march.hinge_row.leftCols(m);
+    rhs(3) = -march.hinge_row(m);
+  }
+  BvpSolution out;
+  out.condition = boundary_value_condition(Q);
+  Eigen::VectorXd z1(m + 1);
+  z1.head(m) = Q.partialPivLu().solve(rhs);
+  z1(m) = 1.0;
+  const SpringingSplit split = springing_split(model);
+  out.y0 = split.start + split.U * z1.head<3>();
+  out.yS = march.end * z1;
+  out.knots = march.knots;
+  for (const AffineState& Y : march.starts) out.starts.push_back(Y * z1);
+  if (m == 4) out.hinge_moment = march.hinge_row.dot(z1);
+  return out;
+}
+
+BvpSolution solve_single_segment(const ArchModel& model, const SystemMatrix& Phi, const StateVector& p) {
+  March m;
+  const std::vector<double> knots{0.0, model.length()};
+  march(model, knots,
+        [&](std::size_t, AffineState& Y) {
+          const AffineState next = Phi * Y;
+          Y = next;
+          Y.col(Y.cols() - 1) += p;
+          return true;
+        },
+        m);
+  return solve_march(model, m);
+}
+
+void finish_solution(Solution& sol, const BvpSolution& bvp, std::shared_ptr<const StateField> field) {
+  const ArchModel& model = *sol.model;
+  Diagnostics& d = sol.diagnostics;
+  d.condition_estimate = bvp.condition;
+  constexpr double kRoundoff = std::numeric_limits<double>::epsilon();
+  if (!(bvp.condition * kRoundoff < 1) || !bvp.y0.allFinite() || !bvp.yS.allFinite()) {
+    sol.status = Status::singular_system;
+    sol.message = fmt::format("boundary-value system singular to working precision (condition {:.3g})",
+                              d.condition_estimate);
+    return;
+  }
+  sol.field = std::move(field);
+  d.boundary_residual = model.boundary_residual(bvp.y0, bvp.yS, bvp.hinge_moment);
+  d.equilibrium_residual = model.equilibrium_residual(bvp.y0, bvp.yS);
+  sol.reactions = model.reactions(bvp.y0, bvp.yS);
+  sol.H = sol.reactions.H_left;
+  sol.V = sol.reactions.V_left;
+  sol.H_over_V = sol.H / sol.V;
+  sol.status = Status::success;  // provisional: judge_solution decides against rtol
+  sol.message.clear();
+}
+
+void PiecewiseField::sample(std::span<const double> s, std::span<StateVector> out) const {
+  std::size_t i = 0;
+  const std::size_t K = starts_.size();
+  for (std::size_t k = 0; k < K && i < s.size(); ++k) {
+    const bool last = k + 1 == K;
+    std::size_t j = i;
+    while (j < s.size() && (last || s[j] < knots_[k + 1])) ++j;
+    if (j == i) continue;
+    propagate(knots_[k], starts_[k], s.subspan(i, j - i), out.subspan(i, j - i));
+    i = j;
+  }
+}
+
+}  // namespace ogive
