@@ -29,6 +29,7 @@
 #include "ogive/curve_families.hpp"
 #include "ogive/csv.hpp"
 #include "ogive/limit.hpp"
+#include "ogive/loads_file.hpp"
 #include "ogive/solve.hpp"
 #include "ogive/svg.hpp"
 #include "ogive/thrust_line.hpp"
@@ -47,6 +48,14 @@ struct SceneParameters {
   double span, thickness_ratio, support_displacement_ratio;
   double youngs_modulus, poisson_ratio, density, gravity, shear_coefficient;
   bool plane_strain;
+  // Loads and supports (NaN: not given).
+  double point_load, point_load_at, live_load, live_load_from, live_load_to, fill_density, fill_height_ratio;
+  double left_spread_ratio, right_spread_ratio, left_settlement_ratio, right_settlement_ratio, left_rotation,
+      right_rotation;
+  const char* left_support = "clamped";
+  const char* right_support = "clamped";
+  bool crown_hinge = false;
+  std::string loads_file;
 };
 
 // A numeric scene option: its flag, its text as given ("" = the curve family's default), the rule
@@ -83,18 +92,51 @@ const std::vector<CurveFamily> kFamilies = {
     {"points", false, false, false, false, true},
 };
 
+template <class Enum>
+Enum lookup(const std::map<std::string, Enum>& names, const std::string& text, const char* flag) {
+  const auto it = names.find(text);
+  if (it != names.end()) return it->second;
+  std::string known;
+  for (const auto& [name, value] : names) known += (known.empty() ? "" : ", ") + name;
+  throw UsageError(fmt::format("{}: unknown value '{}' (known: {})", flag, text, known));
+}
+
+bool within_span(double v) { return v >= 0 && v <= 1; }
+bool small_movement(double v) { return std::abs(v) <= 0.01; }
+constexpr const char* kSpanRule = "must lie in [0, 1] (x / L within the span)";
+constexpr const char* kMovementRule = "must lie in [-0.01, 0.01] (beyond, small-displacement theory does not hold)";
+
 struct SceneOptions {
   std::string curve = "pointed";
   std::string curve_file;
   bool plane_strain = false;
   std::shared_ptr<const Curve> points;  // read once from curve_file
+  std::string supports = "clamped", left_support, right_support;
+  bool crown_hinge = false;
+  std::string loads_file;
+  Loads file_loads;  // read once from loads_file
   std::vector<Axis> axes{
       // Order: the last axis varies fastest in the output.
+      {"--point-load", "", &SceneParameters::point_load, [](double) { return true; }, "must be a finite number"},
+      {"--point-load-at", "", &SceneParameters::point_load_at, within_span, kSpanRule},
+      {"--live-load", "", &SceneParameters::live_load, [](double) { return true; }, "must be a finite number"},
+      {"--live-load-from", "", &SceneParameters::live_load_from, within_span, kSpanRule},
+      {"--live-load-to", "", &SceneParameters::live_load_to, within_span, kSpanRule},
+      {"--fill-density", "", &SceneParameters::fill_density, [](double v) { return v >= 0; }, "must be >= 0"},
+      {"--fill-height-ratio", "", &SceneParameters::fill_height_ratio, [](double v) { return v > 0 && v <= 100; },
+       "must lie in (0, 100] (the fill's level above the springing line, over the span)"},
+      {"--left-spread-ratio", "", &SceneParameters::left_spread_ratio, small_movement, kMovementRule},
+      {"--right-spread-ratio", "", &SceneParameters::right_spread_ratio, small_movement, kMovementRule},
+      {"--left-settlement-ratio", "0", &SceneParameters::left_settlement_ratio, small_movement, kMovementRule},
+      {"--right-settlement-ratio", "0", &SceneParameters::right_settlement_ratio, small_movement, kMovementRule},
+      {"--left-rotation", "0", &SceneParameters::left_rotation, small_movement, kMovementRule},
+      {"--right-rotation", "0", &SceneParameters::right_rotation, small_movement, kMovementRule},
       {"--span", "10", &SceneParameters::span, positive, "must be > 0"},
       {"--youngs-modulus", "14.8e9", &SceneParameters::youngs_modulus, positive, "must be > 0"},
       {"--poisson-ratio", "0.2", &SceneParameters::poisson_ratio,
        [](double v) { return v > -1 && v <= 0.5; }, "must lie in (-1, 0.5]"},
-      {"--density", "2348", &SceneParameters::density, positive, "must be > 0"},
+      {"--density", "2348", &SceneParameters::density, [](double v) { return v >= 0; },
+       "must be >= 0 (0: no self-weight, with another load)"},
       {"--gravity", "9.81", &SceneParameters::gravity, positive, "must be > 0"},
       {"--shear-coefficient", "0.8333333333333334", &SceneParameters::shear_coefficient,
        [](double v) { return v > 0 && v <= 2; }, "must lie in (0, 2]"},
@@ -128,6 +170,19 @@ const std::map<std::string, std::string> kAxisMeaning = {
     {"--crown-angle", "four-centred: the tangent's angle above the horizontal at the crown, degrees"},
     {"--rise-ratio", "rise over span h/L (not for pointed, semicircular, points)"},
     {"--eccentricity", "pointed: the centres' offset beyond mid-span over the span (0 semicircle, 0.5 equilateral)"},
+    {"--point-load", "vertical point load P on the axis, N per metre of vault width, downwards"},
+    {"--point-load-at", "where the point load acts, x / L from the left springing (default 0.5)"},
+    {"--live-load", "uniform load q per horizontal length, N/m^2 (N/m per metre of width), downwards"},
+    {"--live-load-from", "where the live load starts, x / L (default 0)"},
+    {"--live-load-to", "where the live load ends, x / L (default 1)"},
+    {"--fill-density", "fill density rho_f, kg/m^3: load rho_f g max(0, h_f - y_extrados(x)) per horizontal length"},
+    {"--fill-height-ratio", "the fill's level h_f above the springing line, over the span"},
+    {"--left-spread-ratio", "left springing's horizontal movement, outwards positive, over the span"},
+    {"--right-spread-ratio", "right springing's horizontal movement, outwards positive, over the span"},
+    {"--left-settlement-ratio", "left springing's vertical movement, downwards positive, over the span"},
+    {"--right-settlement-ratio", "right springing's vertical movement, downwards positive, over the span"},
+    {"--left-rotation", "left springing's rotation, rad, counter-clockwise positive (clamped only)"},
+    {"--right-rotation", "right springing's rotation, rad, counter-clockwise positive (clamped only)"},
 };
 
 void add_scene_options(CLI::App& cmd, SceneOptions& o) {
@@ -143,7 +198,16 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
                                a.rule, a.text.empty() ? " (default: the curve's)" : ""))
         ->capture_default_str();
   cmd.add_flag("--plane-strain", o.plane_strain, "plane strain: E / (1 - nu^2) for axial and bending stiffness");
+  cmd.add_option("--supports", o.supports, "both springings: clamped or pinned")->capture_default_str();
+  cmd.add_option("--left-support", o.left_support, "left springing: clamped or pinned (default: --supports)");
+  cmd.add_option("--right-support", o.right_support, "right springing: clamped or pinned (default: --supports)");
+  cmd.add_flag("--crown-hinge", o.crown_hinge, "a hinge at the crown (M = 0): the three-hinged arch with --supports pinned");
+  cmd.add_option("--loads-file", o.loads_file,
+                 "CSV of loads, header kind,value,a,b: point,P,a, | live,q,a,b | fill,rho_f,h_f/L, (README: Loads)");
 }
+
+const std::map<std::string, SupportKind> kSupportKinds = {{"clamped", SupportKind::clamped},
+                                                          {"pinned", SupportKind::pinned}};
 
 // "rise_ratio: rule" from the library becomes "--rise-ratio: rule"; the scene's lengths are given
 // as ratios of the span on the command line, so "thickness: ..." names --thickness-ratio.
@@ -151,7 +215,9 @@ std::string as_option_message(const std::string& what) {
   const std::size_t colon = what.find(':');
   if (colon == std::string::npos || what.find_first_not_of("abcdefghijklmnopqrstuvwxyz_") < colon) return what;
   std::string field = what.substr(0, colon);
-  if (field == "thickness" || field == "support_displacement") field += "_ratio";
+  if (field == "thickness" || field == "support_displacement" || field == "left_spread" || field == "right_spread" ||
+      field == "left_settlement" || field == "right_settlement")
+    field += "_ratio";
   std::string flag = "--" + field;
   std::replace(flag.begin(), flag.end(), '_', '-');
   return flag + what.substr(colon);
@@ -186,6 +252,39 @@ class ScenePlan {
       try {
         // "-": the points come on standard input (a survey piped from another program).
         o.points = o.curve_file == "-" ? parse_points_curve(std::cin, "<stdin>") : read_points_curve(o.curve_file);
+      } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+      }
+    }
+    // Loads and supports: options that need another, and each springing's kind.
+    auto needs = [&](const char* flag, const char* other) {
+      if (cmd.count(flag) > 0 && cmd.count(other) == 0) throw UsageError(fmt::format("{}: needs {}", flag, other));
+    };
+    needs("--point-load-at", "--point-load");
+    needs("--live-load-from", "--live-load");
+    needs("--live-load-to", "--live-load");
+    needs("--fill-height-ratio", "--fill-density");
+    needs("--fill-density", "--fill-height-ratio");
+    for (const char* side : {"--left-spread-ratio", "--right-spread-ratio"})
+      if (cmd.count(side) > 0 && cmd.count("--support-displacement-ratio") > 0)
+        throw UsageError(fmt::format("{}: cannot be combined with --support-displacement-ratio (both springings "
+                                     "spreading alike): give each side's spread instead",
+                                     side));
+    left_kind_ = o.left_support.empty() ? lookup(kSupportKinds, o.supports, "--supports")
+                                        : lookup(kSupportKinds, o.left_support, "--left-support");
+    right_kind_ = o.right_support.empty() ? lookup(kSupportKinds, o.supports, "--supports")
+                                          : lookup(kSupportKinds, o.right_support, "--right-support");
+    if (!o.left_support.empty() || !o.right_support.empty()) lookup(kSupportKinds, o.supports, "--supports");
+    for (const auto& [flag, kind] : {std::pair{"--left-rotation", left_kind_}, {"--right-rotation", right_kind_}})
+      if (kind == SupportKind::pinned && cmd.count(flag) > 0)
+        throw UsageError(fmt::format("{}: does not apply to a pinned springing (it turns freely: its rotation is a "
+                                     "result, not a given movement)",
+                                     flag));
+    if (!o.loads_file.empty()) {
+      if (o.loads_file == "-" && o.curve_file == "-")
+        throw UsageError("--loads-file: standard input already holds the curve's points (--curve-file -)");
+      try {
+        o.file_loads = o.loads_file == "-" ? parse_loads(std::cin, "<stdin>") : read_loads_file(o.loads_file);
       } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
       }
@@ -227,13 +326,26 @@ class ScenePlan {
 
   // Scene number `index` (0-based) of the sweep; the last axis varies fastest.
   SceneParameters parameters(std::size_t index) const {
-    SceneParameters p{index + 1, options_.curve, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, options_.plane_strain};
+    SceneParameters p{};
+    p.scene = index + 1;
+    p.curve = options_.curve;
+    p.plane_strain = options_.plane_strain;
     for (std::size_t i = options_.axes.size(); i-- > 0;) {
       const Axis& a = options_.axes[i];
       p.*(a.field) = a.values[index % a.values.size()];
       index /= a.values.size();
     }
     if (!family_->eccentricity) p.eccentricity = std::numeric_limits<double>::quiet_NaN();
+    // The defaults of the load and movement options, as the row prints them.
+    if (!std::isnan(p.point_load) && std::isnan(p.point_load_at)) p.point_load_at = 0.5;
+    if (!std::isnan(p.live_load) && std::isnan(p.live_load_from)) p.live_load_from = 0;
+    if (!std::isnan(p.live_load) && std::isnan(p.live_load_to)) p.live_load_to = 1;
+    if (std::isnan(p.left_spread_ratio)) p.left_spread_ratio = p.support_displacement_ratio;
+    if (std::isnan(p.right_spread_ratio)) p.right_spread_ratio = p.support_displacement_ratio;
+    p.left_support = left_kind_ == SupportKind::clamped ? "clamped" : "pinned";
+    p.right_support = right_kind_ == SupportKind::clamped ? "clamped" : "pinned";
+    p.crown_hinge = options_.crown_hinge;
+    p.loads_file = options_.loads_file;
     return p;
   }
 
@@ -251,8 +363,14 @@ class ScenePlan {
       Scene scene;
       scene.curve = out.curve;
       scene.thickness = p.thickness_ratio * p.span;
-      scene.set_support_displacement(p.support_displacement_ratio * p.span);
       scene.material = {p.youngs_modulus, p.poisson_ratio, p.density, p.gravity, p.shear_coefficient, p.plane_strain};
+      scene.left = {left_kind_, p.left_spread_ratio * p.span, p.left_settlement_ratio * p.span, p.left_rotation};
+      scene.right = {right_kind_, p.right_spread_ratio * p.span, p.right_settlement_ratio * p.span, p.right_rotation};
+      scene.crown_hinge = options_.crown_hinge;
+      scene.loads = options_.file_loads;
+      if (!std::isnan(p.point_load)) scene.loads.points.push_back({p.point_load, p.point_load_at});
+      if (!std::isnan(p.live_load)) scene.loads.live.push_back({p.live_load, p.live_load_from, p.live_load_to});
+      if (!std::isnan(p.fill_density)) scene.loads.fills.push_back({p.fill_density, p.fill_height_ratio});
       scene.validate();
       out.scene = std::move(scene);
     } catch (const std::invalid_argument& e) {
@@ -289,6 +407,7 @@ class ScenePlan {
 
   const SceneOptions& options_;
   const CurveFamily* family_ = nullptr;
+  SupportKind left_kind_ = SupportKind::clamped, right_kind_ = SupportKind::clamped;
   std::size_t size_ = 1;
 };
 
@@ -316,13 +435,37 @@ const std::vector<ColumnDoc> kColumnDocs = {
     {"gravity", "m/s^2", "gravitational acceleration g"},
     {"shear_coefficient", "", "Timoshenko shear coefficient k"},
     {"plane_strain", "", "true: plane strain, E / (1 - nu^2); false: plane stress"},
+    {"left_support", "", "left springing: clamped (rotation given) or pinned (M = 0)"},
+    {"right_support", "", "right springing: clamped or pinned"},
+    {"crown_hinge", "", "true: a hinge at the crown (M = 0 there)"},
+    {"left_spread_ratio", "", "left springing's horizontal movement, outwards positive / span"},
+    {"right_spread_ratio", "", "right springing's horizontal movement, outwards positive / span"},
+    {"left_settlement_ratio", "", "left springing's vertical movement, downwards positive / span"},
+    {"right_settlement_ratio", "", "right springing's vertical movement, downwards positive / span"},
+    {"left_rotation", "rad", "left springing's given rotation, counter-clockwise positive"},
+    {"right_rotation", "rad", "right springing's given rotation, counter-clockwise positive"},
+    {"point_load", "N/m", "vertical point load P on the axis, downwards, per metre of vault width"},
+    {"point_load_at", "", "where P acts, x / span from the left springing"},
+    {"live_load", "N/m^2", "uniform load q per horizontal length, downwards, per metre of vault width"},
+    {"live_load_from", "", "where the live load starts, x / span"},
+    {"live_load_to", "", "where the live load ends, x / span"},
+    {"fill_density", "kg/m^3", "fill density rho_f (load rho_f g max(0, h_f - y_extrados) per horizontal length)"},
+    {"fill_height_ratio", "", "the fill's level h_f above the springing line / span"},
+    {"loads_file", "", "the --loads-file whose loads the scene carries too"},
     {"method", "", "method that produced the numbers (closed-form, shooting, multiple-shooting)"},
     {"integrator", "", "CVODE's method (adams, bdf); empty for the closed form"},
     {"rtol", "", "relative error asked (--rtol); success guarantees it"},
     {"status", "", "success, or why not (README: What status promises); limit: success or inadmissible"},
-    {"H", "N/m", "horizontal reaction: inward push of a support on the arch, per metre of vault (limit --thrust-line: of that state)"},
-    {"V", "N/m", "vertical reaction of a support: half the weight (limit: half the total vertical load), per metre of vault"},
-    {"H_over_V", "", "normalized horizontal reaction H / V"},
+    {"domain", "", "the model solved: half (a symmetric scene, the right half by symmetry) or whole (springing to springing)"},
+    {"H", "N/m", "horizontal reaction H_left: inward push of the left support on the arch, per metre of vault (limit --thrust-line: of that state)"},
+    {"V", "N/m", "vertical reaction V_left of the left support (half the load of a symmetric scene; limit: half the total vertical load), per metre of vault"},
+    {"H_over_V", "", "normalized horizontal reaction H_left / V_left"},
+    {"H_left", "N/m", "left support's horizontal reaction on the arch, positive pointing into the span (+x)"},
+    {"V_left", "N/m", "left support's vertical reaction on the arch, upwards positive"},
+    {"M_left", "N m/m", "left support's couple on the arch, counter-clockwise positive (0 when pinned)"},
+    {"H_right", "N/m", "right support's horizontal reaction on the arch, positive pointing into the span (-x)"},
+    {"V_right", "N/m", "right support's vertical reaction on the arch, upwards positive"},
+    {"M_right", "N m/m", "right support's couple on the arch, counter-clockwise positive (0 when pinned)"},
     {"max_thrust_eccentricity", "%", "largest |thrust_eccentricity| along the arch; empty if N is not a compression everywhere"},
     {"max_thrust_eccentricity_at", "m", "arc length from the left springing where it occurs"},
     {"thrust_in_kern", "", "true: compression everywhere and |thrust_eccentricity| <= 100 % (no tension in the section)"},
@@ -332,8 +475,8 @@ const std::vector<ColumnDoc> kColumnDocs = {
     {"segments", "", "shooting segments (arcs for the closed form)"},
     {"condition_estimate", "", "Skeel condition number of the boundary-value problem"},
     {"error_estimate", "", "estimated relative error of the row's numbers (thrust eccentricities in units of the kern)"},
-    {"boundary_residual", "", "largest residual of the six boundary conditions, scaled units"},
-    {"equilibrium_residual", "", "largest residual of the half arch's equilibrium / half weight"},
+    {"boundary_residual", "", "largest residual of the six boundary conditions (and a hinge's M = 0), scaled units"},
+    {"equilibrium_residual", "", "largest residual of the domain's equilibrium (forces, moments) / its load"},
     {"message", "", "why the status is not success; empty on success"},
     {"s", "m", "arc length from the left springing (limit --thrust-line: of the joint's axis point)"},
     {"x", "m", "axis point, horizontal from the left springing"},
@@ -370,8 +513,6 @@ const std::vector<ColumnDoc> kColumnDocs = {
     {"weight", "", "limit: voussoir (each voussoir's weight at its centroid) or axis (rho g t per axis length)"},
     {"joints_count", "", "limit: joints springing to springing, both included"},
     {"friction", "", "limit: friction coefficient of the joints; empty: no sliding check"},
-    {"point_load", "N/m", "limit: vertical point load P, downward, per metre of vault"},
-    {"point_load_at", "", "limit: where P acts, x / span from the left springing"},
     {"H_min", "N/m", "limit: minimum horizontal thrust of an admissible state"},
     {"H_max", "N/m", "limit: maximum horizontal thrust of an admissible state"},
     {"H_min_over_V", "", "limit: H_min / V"},
@@ -398,7 +539,9 @@ const ColumnDoc* find_column_doc(std::string_view name) {
 const std::vector<std::string> kSceneColumns = {
     "scene", "curve", "eccentricity", "rise_ratio", "haunch_angle", "crown_angle", "span", "thickness_ratio",
     "support_displacement_ratio", "youngs_modulus", "poisson_ratio", "density", "gravity", "shear_coefficient",
-    "plane_strain"};
+    "plane_strain", "left_support", "right_support", "crown_hinge", "left_spread_ratio", "right_spread_ratio",
+    "left_settlement_ratio", "right_settlement_ratio", "left_rotation", "right_rotation", "point_load",
+    "point_load_at", "live_load", "live_load_from", "live_load_to", "fill_density", "fill_height_ratio", "loads_file"};
 
 // The --columns and --all-columns options of a command.
 struct ColumnText {
@@ -535,6 +678,12 @@ void add_scene_columns(CsvRow& row, const SceneParameters& p, const Curve* curve
   row.add(p.span).add(p.thickness_ratio).add(p.support_displacement_ratio);
   row.add(p.youngs_modulus).add(p.poisson_ratio).add(p.density).add(p.gravity).add(p.shear_coefficient);
   row.add_bool(p.plane_strain);
+  row.add(p.left_support).add(p.right_support).add_bool(p.crown_hinge);
+  for (double v : {p.left_spread_ratio, p.right_spread_ratio, p.left_settlement_ratio, p.right_settlement_ratio,
+                   p.left_rotation, p.right_rotation, p.point_load, p.point_load_at, p.live_load, p.live_load_from,
+                   p.live_load_to, p.fill_density, p.fill_height_ratio})
+    add_parameter(row, v);
+  row.add(p.loads_file);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -592,22 +741,15 @@ void add_solver_options(CLI::App& cmd, Options& o, SolverText& text, bool with_m
                  "CVODE's absolute tolerance on the scaled state; must be >= 0 (0: 1e-6 of CVODE's rtol); the "
                  "verifying solve uses the smaller of atol and that default, /16")
       ->check(kFiniteNumber)->capture_default_str();
-  cmd.add_option("--segments", o.segments, "multiple-shooting segments over the half arch (breakpoints add more); must lie in [1, 10000]")->check(kCount)->capture_default_str();
+  cmd.add_option("--segments", o.segments, "multiple-shooting segments over the domain (breakpoints and loads add more); must lie in [1, 10000]")->check(kCount)->capture_default_str();
   cmd.add_option("--max-steps", o.max_steps, "CVODE step limit per integration span; must be >= 1")->check(kCount)->capture_default_str();
   cmd.add_flag("--no-verify", text.no_verify,
                "skip the second solve at rtol/16 that estimates the error (raw methods, for benchmarks): the "
                "status is then at best unverified, never success; auto always verifies");
   cmd.add_flag("--ignore-breakpoints", text.ignore_breakpoints,
                "let CVODE step across jumps of curvature (for stability studies)");
-}
-
-template <class Enum>
-Enum lookup(const std::map<std::string, Enum>& names, const std::string& text, const char* flag) {
-  const auto it = names.find(text);
-  if (it != names.end()) return it->second;
-  std::string known;
-  for (const auto& [name, value] : names) known += (known.empty() ? "" : ", ") + name;
-  throw UsageError(fmt::format("{}: unknown value '{}' (known: {})", flag, text, known));
+  cmd.add_flag("--whole-arch", o.whole_arch,
+               "solve a symmetric scene over the whole arch too (a check; by default the half, the smaller model)");
 }
 
 void apply_solver_text(Options& o, const SolverText& text) {
@@ -858,13 +1000,21 @@ bool for_each_scene(const ScenePlan& plan, RowWriter& writer, int threads, Solve
   return all_ok;
 }
 
+// "half" or "whole": the model a solution used (empty without one).
+std::string_view domain_of(const Solution& sol) {
+  if (!sol.model) return "";
+  return sol.model->half() ? "half" : "whole";
+}
+
 const Columns kThrustColumns(
-    {"method", "integrator", "rtol", "status", "H", "V", "H_over_V", "max_thrust_eccentricity",
+    {"method", "integrator", "rtol", "status", "domain", "H", "V", "H_over_V", "H_left", "V_left", "M_left", "H_right",
+     "V_right", "M_right", "max_thrust_eccentricity",
      "max_thrust_eccentricity_at", "thrust_in_kern", "thrust_in_section", "steps", "rhs_evaluations", "segments",
      "condition_estimate", "error_estimate", "boundary_residual", "equilibrium_residual", "message"},
     // The thrust line's summary is asked for by name (or --all-columns): it samples the whole field,
     // about 50 times the cost of the reactions in closed form, which a sweep of 10^6 scenes would feel.
-    {"method", "status", "H", "V", "H_over_V", "error_estimate", "message"});
+    {"method", "status", "domain", "H", "V", "H_over_V", "H_left", "V_left", "M_left", "H_right", "V_right", "M_right",
+     "error_estimate", "message"});
 
 // Stations at which a verified solve checks the profile when the thrust line is summarised.
 constexpr int kSummaryStations = 65;
@@ -892,7 +1042,10 @@ int run_thrust(SceneOptions& so, const CLI::App& cmd, SolverSweep sweep, const C
           const ThrustLineSummary line = summary ? summarize_thrust_line(sol) : ThrustLineSummary{};
           add_scene_columns(row, p, scene.curve.get());
           row.add(to_string(sol.method)).add(integrator_of(sol.method, o)).add(o.rtol);
-          row.add(to_string(sol.status)).add(sol.H).add(sol.V).add(sol.H_over_V);
+          row.add(to_string(sol.status)).add(domain_of(sol)).add(sol.H).add(sol.V).add(sol.H_over_V);
+          const Reactions& r = sol.reactions;
+          if (sol.field) row.add(r.H_left).add(r.V_left).add(r.M_left).add(r.H_right).add(r.V_right).add(r.M_right);
+          else for (int k = 0; k < 6; ++k) row.add(std::string_view{});
           row.add(line.max_abs_e).add(line.max_abs_e_at);
           if (line.ok) row.add_bool(line.in_kern).add_bool(line.in_section);
           else row.add(std::string_view{}).add(std::string_view{});
@@ -1132,7 +1285,7 @@ const std::map<std::string, ThrustLine> kThrustLines = {
 struct LimitText {
   std::string joints = "radial", weight = "voussoir", thrust_line;
   int joints_count = kDefaultJointsCount;
-  double friction = 0, point_load = 0, point_load_at = 0.5;
+  double friction = 0;
   int repeats = 0;
 };
 
@@ -1144,9 +1297,6 @@ void add_limit_options(CLI::App& cmd, LimitText& t) {
       ->check(kCount)->capture_default_str();
   cmd.add_option("--friction", t.friction, "friction coefficient of the joints (> 0): adds the sliding check")
       ->check(kFiniteNumber);
-  cmd.add_option("--point-load", t.point_load, "vertical point load P, N per metre of width, downward (> 0)")
-      ->check(kFiniteNumber);
-  cmd.add_option("--point-load-at", t.point_load_at, "where P acts: x/L in [0, 1] (default 0.5)")->check(kFiniteNumber);
   cmd.add_option("--thrust-line", t.thrust_line, "instead of the summary, one row per joint of the min, max or collapse state");
   cmd.add_option("--repeats", t.repeats, "solve each scene this many times and add median_seconds (benchmark)")
       ->check(kCount);
@@ -1161,11 +1311,18 @@ LimitOptions limit_options(const LimitText& t, const CLI::App& cmd) {
   if (cmd.count("--friction") > 0 && !(t.friction > 0))
     throw UsageError(fmt::format("--friction: must be > 0 (omit it for no sliding check), got {}", t.friction));
   o.friction = t.friction;
-  if (cmd.count("--point-load") > 0 && !(t.point_load > 0))
-    throw UsageError(fmt::format("--point-load: must be > 0 (N/m, downward), got {}", t.point_load));
-  if (cmd.count("--point-load-at") > 0 && cmd.count("--point-load") == 0)
-    throw UsageError("--point-load-at: needs --point-load");
-  o.point_load = {t.point_load, t.point_load_at};
+  if (cmd.count("--point-load") > 0) {
+    // Until the limit analysis reads the scene's loads: one point load, > 0, not swept.
+    const std::vector<double> P = parse_values(cmd.get_option("--point-load")->as<std::string>(), "--point-load");
+    const std::vector<double> a = cmd.count("--point-load-at") > 0
+                                      ? parse_values(cmd.get_option("--point-load-at")->as<std::string>(), "--point-load-at")
+                                      : std::vector<double>{0.5};
+    if (P.size() != 1 || a.size() != 1) throw UsageError("--point-load: limit takes one point load, not a sweep");
+    if (!(P[0] > 0)) throw UsageError(fmt::format("--point-load: must be > 0 (N/m, downward), got {}", P[0]));
+    o.point_load = {P[0], a[0]};
+  }
+  for (const char* flag : {"--live-load", "--fill-density", "--loads-file", "--crown-hinge"})
+    if (cmd.count(flag) > 0) throw UsageError(fmt::format("{}: does not apply to limit yet (one point load)", flag));
   if (cmd.count("--support-displacement-ratio") > 0)
     throw UsageError("--support-displacement-ratio: does not apply to limit (rigid voussoirs: a spreading support "
                      "brings the arch to H_min)");
@@ -1190,14 +1347,12 @@ std::string hinge_text(const std::vector<Hinge>& hinges, double span) {
   return text;
 }
 
-const std::vector<std::string> kLimitSetup = {"joints", "weight", "joints_count", "friction", "point_load",
-                                             "point_load_at"};
+const std::vector<std::string> kLimitSetup = {"joints", "weight", "joints_count", "friction"};
 
 void add_limit_setup(CsvRow& row, const LimitOptions& o) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   row.add(to_string(o.joints)).add(to_string(o.weight)).add(o.joints_count);
   row.add(o.friction > 0 ? o.friction : nan);
-  row.add(o.point_load.present() ? o.point_load.force : nan).add(o.point_load.present() ? o.point_load.position : nan);
 }
 
 

@@ -287,6 +287,6 @@ TEST_CASE("quadrature: --method quadrature in the CLI, no integrator, its estima
   CHECK(cli::run_cli({"thrust", "--curve", "points", "--curve-file", OGIVE_DATA_DIR "/curves/parabola-40.csv",
                       "--method", "quadrature", "--ignore-breakpoints", "--all-columns"},
                      out2, err2) == 3);
-  CHECK(out2.str().find(",quadrature,,1e-08,not_applicable,,") != std::string::npos);
+  CHECK(out2.str().find(",quadrature,,1e-08,not_applicable,half,,") != std::string::npos);
   CHECK(out2.str().find("nan") == std::string::npos);
 }
