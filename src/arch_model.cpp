@@ -67,11 +67,17 @@ ArchModel::ArchModel(Scene scene, bool whole_arch_domain) : scene_(std::move(sce
     if (s >= length_ * (1 - 1e-12)) return length_;
     return s;
   };
-  auto s_at = [&](double ratio) { return snapped(arc_length_at_x(*scene_.curve, ratio * L) / L); };
+  // x = 0 and x = L are the springings themselves: near a vertical springing x(s) is flat, and inverting it
+  // would place the load a distance of order sqrt(round-off) inside the arch.
+  auto s_at = [&](double ratio) {
+    if (ratio <= 0) return 0.0;
+    if (ratio >= 1) return half_ ? 2.0 * length_ : length_;
+    return snapped(arc_length_at_x(*scene_.curve, ratio * L) / L);
+  };
 
   for (const PointLoad& p : loads.points) {
     const double force = p.force / scales_.force;
-    if (half_ && p.at == 0.5) crown_load_ += 0.5 * force;  // half of it on each half
+    if (half_ && std::abs(p.at - 0.5) <= 1e-14) crown_load_ += 0.5 * force;  // half of it on each half
     else if (!half_ || p.at < 0.5) jumps_.push_back({s_at(p.at), force});
     // Over the half, a load beyond the crown is the mirror of one before it (Scene::symmetric).
   }

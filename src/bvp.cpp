@@ -176,7 +176,9 @@ void PiecewiseField::sample(std::span<const double> s, std::span<StateVector> ou
   for (std::size_t k = 0; k < K && i < s.size(); ++k) {
     const bool last = k + 1 == K;
     std::size_t j = i;
-    while (j < s.size() && (last || s[j] < knots_[k + 1])) ++j;
+    // Left-continuous: a station at a knot belongs to the piece that ends there (the state before a point
+    // load or a hinge), as over the half the crown's state is the left half's.
+    while (j < s.size() && (last || s[j] <= knots_[k + 1])) ++j;
     if (j == i) continue;
     propagate(knots_[k], starts_[k], s.subspan(i, j - i), out.subspan(i, j - i));
     i = j;

@@ -78,7 +78,7 @@ BvpSolution solve_single_segment(const ArchModel& model, const SystemMatrix& Phi
 void finish_solution(Solution& sol, const BvpSolution& bvp, std::shared_ptr<const StateField> field);
 
 // A field made of pieces: the state at every piece's start and a way to carry it to any s inside the
-// piece. Samples at a knot come from the piece that starts there (after a jump).
+// piece. Samples at a knot come from the piece that ends there (the state before a point load or a hinge).
 class PiecewiseField : public StateField {
  public:
   PiecewiseField(std::vector<double> knots, std::vector<StateVector> starts)

@@ -51,10 +51,11 @@ void validate_support(const Support& s, const char* spread, const char* settleme
            s.rotation);
 }
 
-// A's load is B's mirror image (x -> L - x).
-bool mirrored(const PointLoad& a, const PointLoad& b) { return a.force == b.force && a.at == 1.0 - b.at; }
+// A's load is B's mirror image (x -> L - x), positions to round-off (0.8 mirrors to 0.19999999999999996).
+bool same_position(double a, double b) { return std::abs(a - b) <= 1e-14; }
+bool mirrored(const PointLoad& a, const PointLoad& b) { return a.force == b.force && same_position(a.at, 1.0 - b.at); }
 bool mirrored(const LiveLoad& a, const LiveLoad& b) {
-  return a.intensity == b.intensity && a.from == 1.0 - b.to && a.to == 1.0 - b.from;
+  return a.intensity == b.intensity && same_position(a.from, 1.0 - b.to) && same_position(a.to, 1.0 - b.from);
 }
 
 // Every load has a mirror image among the loads (itself for a centred one), counted with multiplicity.

@@ -114,7 +114,7 @@ class StateField {
  public:
   virtual ~StateField() = default;
   // Scaled states at scaled arc lengths s (ascending, within the model's domain [0, S~]) into out (same
-  // size). At a point load, the state after it.
+  // size). At a point load or a hinge, the state before it (on its left); at s = 0 the arch's state.
   virtual void sample(std::span<const double> s, std::span<StateVector> out) const = 0;
 };
 
