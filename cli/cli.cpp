@@ -192,10 +192,17 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--curve-file", o.curve_file,
                  "with --curve points: CSV file with header x,y and the axis points in m, springing (y = 0) to crown; "
                  "- reads it from standard input");
+  // What an option without a default text means when it is not given.
+  auto absent = [](const std::string& flag) -> std::string {
+    if (flag == "--rise-ratio" || flag == "--haunch-angle" || flag == "--crown-angle") return " (default: the curve's)";
+    if (flag == "--left-spread-ratio" || flag == "--right-spread-ratio") return " (default: --support-displacement-ratio)";
+    if (flag == "--point-load-at" || flag == "--live-load-from" || flag == "--live-load-to") return "";
+    return " (default: none)";
+  };
   for (Axis& a : o.axes)
     cmd.add_option(a.flag, a.text,
                    fmt::format("{}; {}; a value, a list a,b,c or a range start:stop:count{}", kAxisMeaning.at(a.flag),
-                               a.rule, a.text.empty() ? " (default: the curve's)" : ""))
+                               a.rule, a.text.empty() ? absent(a.flag) : ""))
         ->capture_default_str();
   cmd.add_flag("--plane-strain", o.plane_strain, "plane strain: E / (1 - nu^2) for axial and bending stiffness");
   cmd.add_option("--supports", o.supports, "both springings: clamped or pinned")->capture_default_str();

@@ -21,13 +21,17 @@ except ImportError:
     sys.exit(2)
 
 OGIVE = sys.argv[1] if len(sys.argv) > 1 else "build/ogive"
-BOOLEAN = {"plane_strain", "thrust_in_kern", "thrust_in_section", "within_tolerance"}
+BOOLEAN = {"plane_strain", "crown_hinge", "thrust_in_kern", "thrust_in_section", "within_tolerance"}
 TEXT = {"curve", "method", "integrator", "status", "message", "warning", "reference_method", "reference_status",
-        "chosen_method", "file", "joints", "weight", "hinges_min", "hinges_max", "hinges_collapse", "state", "hinge"}
+        "chosen_method", "file", "joints", "weight", "hinges_min", "hinges_max", "hinges_collapse", "state", "hinge",
+        "left_support", "right_support", "domain", "loads_file"}
 
 RUNS = [
     (["thrust", "--eccentricity", "0:1:11"], ("eccentricity", 0.3, 1)),
     (["thrust", "--curve", "segmental", "--rise-ratio", "0.1,0.2,0.3"], ("rise_ratio", 0.2, 1)),
+    (["thrust", "--point-load", "1e4", "--point-load-at", "0:1:11", "--supports", "pinned"], ("point_load_at", 0.5, 1)),
+    (["thrust", "--loads-file", "data/loads/quarter-point-and-half-live.csv", "--left-settlement-ratio", "0,1e-4"],
+     ("left_settlement_ratio", 1e-4, 1)),
     (["thrust", "--support-displacement-ratio", "0:0.0003:7"], ("support_displacement_ratio", 5e-05, 1)),
     (["thrust", "--curve", "catenary", "--rise-ratio", "0.5,2", "--thickness-ratio", "0.5"], None),
     (["profile", "--eccentricity", "0,0.5", "--stations", "11"], ("eccentricity", 0.5, 11)),

@@ -97,13 +97,13 @@ bool march(const ArchModel& model, const std::vector<double>& knots, const Advan
   return true;
 }
 
-double boundary_value_condition(const Eigen::MatrixXd& Q) {
-  const Eigen::FullPivLU<Eigen::MatrixXd> lu(Q);
+double boundary_value_condition(const ReducedMatrix& Q) {
+  const Eigen::FullPivLU<ReducedMatrix> lu(Q);
   if (!lu.isInvertible()) return std::numeric_limits<double>::infinity();
   // Skeel's measure, not ||Q|| ||Q^-1||: the rows mix displacement and force conditions whose sizes
   // differ by orders of magnitude, and a norm-wise estimate would report that scaling, not a loss of
   // digits. |Q^-1| |Q| is what partial pivoting's backward error is amplified by, row scaling aside.
-  const Eigen::MatrixXd amplification = lu.inverse().cwiseAbs() * Q.cwiseAbs();
+  const ReducedMatrix amplification = lu.inverse().cwiseAbs() * Q.cwiseAbs();
   const double condition = amplification.rowwise().sum().maxCoeff();
   return std::isfinite(condition) ? condition : std::numeric_limits<double>::infinity();
 }
@@ -111,25 +111,27 @@ double boundary_value_condition(const Eigen::MatrixXd& Q) {
 BvpSolution solve_march(const ArchModel& model, const March& march) {
   const int m = unknown_count(model);
   const BoundaryConditions& bc = model.boundary_conditions();
-  Eigen::MatrixXd Q(m, m);
-  Eigen::VectorXd rhs(m);
+  ReducedMatrix Q(m, m);
+  ReducedVector rhs(m);
   const Eigen::Matrix<double, 3, kStateSize> B = bc.at_end.bottomRows<3>();
-  Q.topRows(3) = B * march.end.leftCols(m);
-  rhs.head(3) = bc.rhs.tail<3>() - B * march.end.col(m);
+  // Coefficient-based products throughout: for these tiny matrices Eigen's GEMM/GEMV kernels (chosen for
+  // dynamic sizes) cost more than the arithmetic.
+  Q.topRows(3) = B.lazyProduct(march.end.leftCols(m));
+  rhs.head(3) = bc.rhs.tail<3>() - B.lazyProduct(march.end.col(m));
   if (m == 4) {
     Q.row(3) = march.hinge_row.leftCols(m);
     rhs(3) = -march.hinge_row(m);
   }
   BvpSolution out;
   out.condition = boundary_value_condition(Q);
-  Eigen::VectorXd z1(m + 1);
+  Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxUnknowns + 1, 1> z1(m + 1);
   z1.head(m) = Q.partialPivLu().solve(rhs);
   z1(m) = 1.0;
   const SpringingSplit split = springing_split(model);
   out.y0 = split.start + split.U * z1.head<3>();
-  out.yS = march.end * z1;
+  out.yS = march.end.lazyProduct(z1);
   out.knots = march.knots;
-  for (const AffineState& Y : march.starts) out.starts.push_back(Y * z1);
+  for (const AffineState& Y : march.starts) out.starts.push_back(Y.lazyProduct(z1));
   if (m == 4) out.hinge_moment = march.hinge_row.dot(z1);
   return out;
 }
@@ -139,7 +141,7 @@ BvpSolution solve_single_segment(const ArchModel& model, const SystemMatrix& Phi
   const std::vector<double> knots{0.0, model.length()};
   march(model, knots,
         [&](std::size_t, AffineState& Y) {
-          const AffineState next = Phi * Y;
+          const AffineState next = Phi.lazyProduct(Y);
           Y = next;
           Y.col(Y.cols() - 1) += p;
           return true;

@@ -20,7 +20,13 @@
 
 namespace ogive {
 
-using AffineState = Eigen::Matrix<double, kStateSize, Eigen::Dynamic>;
+// At most 4 unknowns (+ the constant column): fixed-capacity storage, so that the closed form's and the
+// quadrature's whole solve allocates nothing (dynamic matrices doubled the time of a closed-form scene).
+inline constexpr int kMaxUnknowns = 4;
+using AffineState = Eigen::Matrix<double, kStateSize, Eigen::Dynamic, Eigen::ColMajor, kStateSize, kMaxUnknowns + 1>;
+using AffineRow = Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, kMaxUnknowns + 1>;
+using ReducedMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, kMaxUnknowns, kMaxUnknowns>;
+using ReducedVector = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxUnknowns, 1>;
 
 // The springing's conditions fix three components of y(0) (Ux, Uy and psi or M), so y(0) = start + U u.
 struct SpringingSplit {
@@ -44,7 +50,7 @@ struct March {
   std::vector<double> knots;          // s_0 = 0 < ... < s_K = S~
   std::vector<AffineState> starts;    // K entries
   AffineState end;
-  Eigen::RowVectorXd hinge_row;       // m + 1: the M row just before the hinge; empty without one
+  AffineRow hinge_row;                // m + 1: the M row just before the hinge; empty without one
 };
 
 // Moves Y (= [T | c], m + 1 columns) from knots[k] to knots[k + 1]; false on failure (the method keeps
@@ -65,7 +71,7 @@ struct BvpSolution {
 // Skeel's condition number || |Q^-1| |Q| ||_inf of the m x m matrix Q of the equations in z: the
 // relative error that round-off in the conditions can cause in the solution, whatever the units of the
 // rows. Infinite when Q is singular. Every method reports this one number for a scene.
-double boundary_value_condition(const Eigen::MatrixXd& Q);
+double boundary_value_condition(const ReducedMatrix& Q);
 
 // Solves the end conditions and the hinge's for z; the states follow.
 BvpSolution solve_march(const ArchModel& model, const March& march);

@@ -114,7 +114,7 @@ Solution solve_closed_form(std::shared_ptr<const ArchModel> model, const Options
   march(*model, knots,
         [&](std::size_t k, AffineState& Y) {
           const Transfer t = closed_form_transfer(*model, knots[k], knots[k + 1]);
-          const AffineState next = t.Phi * Y;
+          const AffineState next = t.Phi.lazyProduct(Y);
           Y = next;
           Y.col(Y.cols() - 1) += t.p;
           return true;

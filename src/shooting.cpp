@@ -113,7 +113,7 @@ Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& o
                   options.restart_at_breakpoints);
   std::optional<IntegrationError> failure;
   std::size_t failed_piece = 0;
-  auto integrate = [&](CvodeIntegrator& integrator, std::size_t k, const AffineState& Y0, AffineState& Y1) {
+  auto integrate = [&](CvodeIntegrator& integrator, std::size_t k, const OdeMatrix& Y0, OdeMatrix& Y1) {
     const double end = knots[k + 1];
     failure = integrator.integrate(knots[k], Y0, std::span<const double>(&end, 1),
                                    [&](std::size_t, const CvodeIntegrator::Matrix& Y) { Y1 = Y; });
@@ -123,12 +123,17 @@ Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& o
   March marched;
   const bool ok = march(*model, knots,
                         [&](std::size_t k, AffineState& Y) {
-                          if (!fresh || k == 0) return integrate(carried, k, AffineState(Y), Y);
-                          AffineState start(kStateSize, kStateSize + 1);
+                          if (!fresh || k == 0) {
+                            OdeMatrix end;
+                            if (!integrate(carried, k, OdeMatrix(Y), end)) return false;
+                            Y = end;
+                            return true;
+                          }
+                          OdeMatrix start(kStateSize, kStateSize + 1);
                           start << SystemMatrix::Identity(), StateVector::Zero();
-                          AffineState G;
+                          OdeMatrix G;
                           if (!integrate(*fresh, k, start, G)) return false;
-                          const AffineState next = G.leftCols<kStateSize>() * Y;
+                          const AffineState next = G.leftCols<kStateSize>().lazyProduct(Y);
                           Y = next;
                           Y.col(Y.cols() - 1) += G.col(kStateSize);
                           return true;

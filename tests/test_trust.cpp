@@ -192,7 +192,7 @@ TEST_CASE("trust: the condition estimate is the problem's - multiple shooting wi
 TEST_CASE("trust: a singular boundary-value system is a status - never a number") {
   const ArchModel model(paper_scene(0.5));
   // A transfer that maps every state to zero leaves the end's conditions without the unknowns: Q = 0.
-  const double condition = boundary_value_condition(Eigen::MatrixXd(Eigen::MatrixXd::Zero(3, 3)));
+  const double condition = boundary_value_condition(ReducedMatrix(ReducedMatrix::Zero(3, 3)));
   CHECK(std::isinf(condition));
   Solution sol;
   sol.model = std::make_shared<const ArchModel>(model);
