@@ -5,6 +5,7 @@
 #
 # docs/figures/semicircle.png, equilateral.png (and -limit, with --limit): `ogive draw` (SVG) rendered
 # by rsvg-convert;
+# docs/figures/influence-line.png: the README's influence line (thrust --point-load-at 0:1:101);
 # docs/figures/figure-7.png .. figure-12.png: the paper's Figures 7-12 from the calls of the README's
 # table "The paper's figures, one call each", drawn by gnuplot (pngcairo terminal, which gnuplot-nox has).
 # Needs gnuplot-nox and librsvg2-bin: bash scripts/install-deps.sh --charts.
@@ -105,4 +106,23 @@ rm "$tmp/keys"
 "$ogive" profile --support-displacement-ratio 0,0.0001,0.0002,0.0003 --stations 101 --all-columns | half_blocks support_displacement_ratio > "$tmp/figure-12.dat"
 plot figure-12 "Figure 12: e along the semicircle, t = 0.08 L, outward support displacement d" "s / S (arc length over the half arch)" "e (% of the kern, t/6)" \
   "set yrange [-1000:4000]; set arrow from 0,100 to 1,100 nohead dt 2 lc rgb 'black'; set arrow from 0,-100 to 1,-100 nohead dt 2 lc rgb 'black'"
+# The influence line of a point load (the README's call): what the load adds to the self-weight's
+# reactions, against where it acts.
+"$ogive" thrust --point-load 1e4 --point-load-at 0:1:101 --all-columns > "$tmp/influence.csv"
+read -r H0 V0 M0 < <("$ogive" thrust --columns H_left,V_left,M_left | awk -F, 'NR == 2 { print $1, $2, $3 }')
+gnuplot <<GP
+set terminal pngcairo size 900,560 font ',11'
+set output '$out/influence-line.png'
+set datafile separator ','
+set title "Influence lines: what P = 10 kN/m at x = a L adds to the semicircle's reactions (t = 0.08 L)" noenhanced
+set xlabel 'a = x / L'
+set ylabel 'added reaction / P  (M: / (P L))'
+set grid
+set key below
+P = 1e4; L = 10
+plot '$tmp/influence.csv' using 'point_load_at':((column('H_left') - $H0) / P) with lines lw 2 title 'H (both springings)', \
+     '' using 'point_load_at':((column('V_left') - $V0) / P) with lines lw 2 title 'V left', \
+     '' using 'point_load_at':((column('V_right') - $V0) / P) with lines lw 2 title 'V right', \
+     '' using 'point_load_at':((column('M_left') - $M0) / (P * L)) with lines lw 2 dt 2 title 'M left'
+GP
 ls "$out"
