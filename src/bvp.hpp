@@ -16,7 +16,7 @@
 #include <memory>
 #include <vector>
 
-#include "ogive/solve.hpp"
+#include "ogive/solution.hpp"
 
 namespace ogive {
 
@@ -101,8 +101,5 @@ class PiecewiseField : public StateField {
   std::vector<StateVector> starts_;
 };
 
-// The larger of the relative differences of the reactions and of the profiles (when both carry one):
-// the error estimate of a solution a against a tighter one b. NaN when either has no field.
-double solution_difference(const Solution& a, const Solution& b);
 
 }  // namespace ogive

@@ -18,7 +18,7 @@
 
 #include <Eigen/Dense>
 
-#include "ogive/solve.hpp"
+#include "ogive/solution.hpp"
 
 namespace ogive {
 

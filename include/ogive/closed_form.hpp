@@ -9,7 +9,7 @@
 
 #include <memory>
 
-#include "ogive/solve.hpp"
+#include "ogive/solution.hpp"
 
 namespace ogive {
 

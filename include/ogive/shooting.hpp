@@ -10,7 +10,7 @@
 #include <memory>
 #include <vector>
 
-#include "ogive/solve.hpp"
+#include "ogive/solution.hpp"
 
 namespace ogive {
 

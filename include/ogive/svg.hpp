@@ -31,7 +31,7 @@
 #include <vector>
 
 #include "ogive/scene.hpp"
-#include "ogive/solve.hpp"
+#include "ogive/solution.hpp"
 
 namespace ogive {
 

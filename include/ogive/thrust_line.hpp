@@ -6,7 +6,7 @@
 
 #include <limits>
 
-#include "ogive/solve.hpp"
+#include "ogive/solution.hpp"
 
 namespace ogive {
 
