@@ -16,6 +16,8 @@
 
 #include "fuzz/fuzz_checks.hpp"
 #include "ogive/curve_families.hpp"
+#include "ogive/scene.hpp"
+#include "ogive/solve.hpp"
 #include "tolerances.hpp"
 
 using namespace ogive;
@@ -362,4 +364,34 @@ TEST_CASE("whole points file errors name the line and the rule") {
   std::istringstream rampant_as_half("x,y\n0,0\n1,1\n2,1.5\n3,1\n");
   CHECK_THROWS_WITH_AS(parse_points_curve(rampant_as_half, "h.csv"), doctest::Contains("h.csv:5: y must not fall"),
                        CurveFileError);
+}
+
+TEST_CASE("a whole points curve solves: the symmetric file as its mirrored half, the rampant one in equilibrium") {
+  Scene scene;
+  scene.thickness = 0.5;
+  // The symmetric parabola's whole file and the half fit of its left half, solved over the half arch (the
+  // half's own model): the same arch, so the same thrust to the solves' tolerance.
+  scene.curve = make_points_curve(parabola_points(10, 5, 21, 5));
+  REQUIRE(scene.symmetric());
+  const Solution half = solve(scene);
+  scene.curve = read_whole_points_curve(data_file("parabola-whole-41.csv"));
+  CHECK_FALSE(scene.symmetric());  // a whole curve is solved over the whole arch
+  const Solution whole = solve(scene);
+  REQUIRE(half.ok());
+  REQUIRE(whole.ok());
+  const double rtol = Options{}.rtol;
+  CHECK(relative_difference(whole.H, half.H) <= 10 * rtol);
+  CHECK(relative_difference(whole.V, half.V) <= 10 * rtol);
+  CHECK(relative_difference(whole.reactions.V_right, whole.V) <= 10 * rtol);
+  // The rampant survey under its own weight: the springings carry the weight between them and push
+  // equally (no horizontal load), the lower springing more of the weight (its half of the arch is longer).
+  scene.curve = read_whole_points_curve(data_file("rampant-survey.csv"));
+  const Solution rampant = solve(scene);
+  REQUIRE(rampant.ok());
+  const double weight = scene.weight_per_length() * scene.curve->length();
+  const Reactions& r = rampant.reactions;
+  CHECK(close(r.V_left + r.V_right, weight, kExact));  // measured 1e-15
+  CHECK(close(r.H_left, r.H_right, kExact));
+  CHECK(r.V_left > r.V_right);
+  CHECK(r.H_left > 0);
 }
