@@ -221,10 +221,10 @@ class ParametricCurve : public Curve {
 // every piece (no cusp, as for the half). A vertical springing tangent is at the edge of the first rule:
 // the fit through points sampled exactly on it leans outward, dx/dtau ~ -h^3 / (4 R^3) at the springing
 // (h the spacing, R the radius; measured -3e-3 and -4e-4 on a semicircle of 13 and 25 points), and is
-// refused, the message saying why. crown() is the arc length of the fit's highest point (the root of dy/dtau of the spline
-// itself, to round-off; it need not be a point of the file). breakpoints() are the interior points' arc
-// lengths (restarts, as for the half). Symmetric points mirrored about mid-span give the same spline as the
-// half file of their left half (whole_arch of it), to round-off.
+// refused, the message saying why. crown() is the arc length of the fit's highest point (the root of
+// dy/dtau of the spline itself, to round-off; it need not be a point of the file). breakpoints() are the
+// interior points' arc lengths (restarts, as for the half). Symmetric points give the same spline as the
+// half file of their left half mirrored (whole_arch of it), to round-off (measured 7e-16 L).
 
 // A problem with a points file, located: what() is one line "FILE:LINE: rule broken", or "FILE: rule
 // broken" when the problem is the file as a whole (cannot be opened or read; line() is then 0).
