@@ -1,7 +1,8 @@
 // The classic arch families of docs/model.md ("Generator curves") and the user's surveyed points, as Curves.
 //
 // Every factory takes the span L (m, in [kMinSpan, kMaxSpan] of curve.hpp) and the rise as a ratio
-// rise_ratio = h / L, and returns the LEFT half of a symmetric arch (see curve.hpp). Invalid parameters
+// rise_ratio = h / L, and returns the LEFT half of a symmetric arch (see curve.hpp; the whole points curve
+// below is the one whole arch). Invalid parameters
 // throw std::invalid_argument whose message is "<name>: <rule>, got <value>", <name> being the parameter
 // as the CLI spells it without dashes (span, rise_ratio, haunch_angle, crown_angle), e.g.
 //   "rise_ratio: must lie in (0, 0.5) for a segmental arch, got 0.7".
@@ -156,11 +157,16 @@ class ParametricCurve : public Curve {
 };
 
 // ---------------------------------------------------------------------------------------------------
-// Points: a user's list of axis points, fitted by a C2 curve and re-parameterised by arc length.
+// Points: a user's list of axis points, fitted by a C2 curve and re-parameterised by arc length. Two
+// kinds of file, one syntax (read by one reader): a HALF file (family "points") runs from the springing
+// to the crown of a symmetric arch; a WHOLE file (family "whole-points", extent whole) from the left
+// springing to the right one of any arch, the springings at any heights (a rampant arch, a flying
+// buttress).
 //
-// File format (CSV, UTF-8 or ASCII):
+// File format (CSV, UTF-8 or ASCII), both kinds:
 //   - line 1 is the header "x,y" (case-insensitive; spaces or tabs around the fields allowed);
-//   - then one point per line, "x,y" in metres, from the springing to the crown of a symmetric arch;
+//   - then one point per line, "x,y" in metres, in order along the arch (half: springing to crown;
+//     whole: left springing to right springing);
 //     decimal numbers: an optional sign ('+' too), digits with an optional point, an optional exponent
 //     (1e-3, 1E+2); no hex, inf or nan; values must be finite doubles;
 //   - accepted as ordinary: CRLF line ends, a UTF-8 byte-order mark, spaces/tabs around fields, blank
@@ -168,7 +174,9 @@ class ParametricCurve : public Curve {
 //   - at most 4096 characters a line (without the line end), at least 4 and at most 100000 points.
 // Errors name the physical line (the header is line 1); syntax is checked while reading, then the rules
 // below, so a syntax error anywhere is reported before a broken rule. An empty file is reported at line
-// 1, too few points at the last point's line. Rules for the points (in file order, after the span):
+// 1, too few points at the last point's line.
+//
+// Half files. Rules for the points (in file order, after the span):
 //   - span = 2 (x_last - x_first), the last point being the crown, lies in [kMinSpan, kMaxSpan] of
 //     curve.hpp (checked first, at the last point's line, when x_last > x_first: the rules below are
 //     measured against it);
@@ -194,6 +202,29 @@ class ParametricCurve : public Curve {
 // empty would do for the geometry); its derivative jumps at the points, so breakpoints() returns the
 // interior points' arc lengths: there an integrator of high order must restart, or its error estimate
 // fails (measured: a 25-point survey gave profile errors 30x the asked rtol without the restarts).
+//
+// Whole files. Heights are measured up from the left springing: the points are translated so that the
+// first is (0, 0), x from 0 (left springing) to span() (right springing), right_springing_height() = the
+// last point's y minus the first's (either sign). Rules for the points (in this order; each names the
+// line of the point that breaks it):
+//   - span = x_last - x_first lies in [kMinSpan, kMaxSpan] (checked first, at the last point's line,
+//     when x_last > x_first);
+//   - no point repeats its predecessor; x strictly increases (a file whose points fold back is refused at
+//     the first point whose x does not increase); each point lies at least 1e-9 span from its predecessor;
+//   - |right springing height| <= 100 spans (at the last point's line) and the rise, the highest point's
+//     height above the left springing, <= 100 spans (at that point's line): they bound the coordinates;
+//   - every interior point lies strictly above the chord joining the two springings (an arch, not a sag).
+// The fit: the same parametric cubic spline in cumulative chord length through the points (no mirror),
+// not-a-knot at both springings, so fourth-order accurate up to both ends. It must then be an arch too,
+// or the error names the point that ends the bad piece: x never turns back (dx/dtau > 0 on every piece,
+// checked at the minimum of that quadratic: "the spline folds back"), and its arc length converges on
+// every piece (no cusp, as for the half). A vertical springing tangent is at the edge of the first rule:
+// the fit through points sampled exactly on it leans outward, dx/dtau ~ -h^3 / (4 R^3) at the springing
+// (h the spacing, R the radius; measured -3e-3 and -4e-4 on a semicircle of 13 and 25 points), and is
+// refused, the message saying why. crown() is the arc length of the fit's highest point (the root of
+// dy/dtau of the spline itself, to round-off; it need not be a point of the file). breakpoints() are the
+// interior points' arc lengths (restarts, as for the half). Symmetric points give the same spline as the
+// half file of their left half mirrored (whole_arch of it), to round-off (measured 7e-16 L).
 
 // A problem with a points file, located: what() is one line "FILE:LINE: rule broken", or "FILE: rule
 // broken" when the problem is the file as a whole (cannot be opened or read; line() is then 0).
@@ -221,5 +252,13 @@ std::shared_ptr<const Curve> parse_points_curve(std::istream& in, const std::str
 // The same rules for points given directly (file coordinates); throws std::invalid_argument
 // "points: point K (of N): rule broken", K counted from 1.
 std::shared_ptr<const Curve> make_points_curve(std::vector<std::pair<double, double>> xy);
+
+// The whole-arch counterparts (family "whole-points", extent whole), with the same error conventions:
+// CurveFileError "FILE:LINE: rule" from the file forms, std::invalid_argument "points: point K (of N):
+// rule broken" from make_whole_points_curve. At least kPointsMinCount points (4: not-a-knot at both ends
+// needs one cubic's worth), at most kPointsMaxCount.
+std::shared_ptr<const Curve> read_whole_points_curve(const std::string& path);
+std::shared_ptr<const Curve> parse_whole_points_curve(std::istream& in, const std::string& name_for_messages);
+std::shared_ptr<const Curve> make_whole_points_curve(std::vector<std::pair<double, double>> xy);
 
 }  // namespace ogive

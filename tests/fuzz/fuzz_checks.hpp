@@ -250,20 +250,29 @@ inline void check_values(std::string_view text, bool every_cli = false) {
 // ---------------------------------------------------------------------------------------------------
 // A points file.
 
-// The invariants of curve.hpp, on any curve.
+// The invariants of curve.hpp, on any curve: a half (to the crown at x = L/2) or a whole arch (to the
+// right springing at x = L, y = right_springing_height(); its crown the highest point).
 inline void check_curve(const ogive::Curve& curve) {
+  const bool whole = curve.extent() == ogive::CurveExtent::whole;
   const double L = curve.span(), S = curve.length();
   require(std::isfinite(L) && L > 0, "span {}", L);
-  require(std::isfinite(S) && S > 0, "half length {}", S);
-  // The half arch reaches from x = 0 to x = L/2: it is at least that long (to round-off).
-  require(S >= 0.5 * L * (1 - 1e-12), "half length {} shorter than half the span {}", S, 0.5 * L);
-  const double rise = curve.rise();
+  require(std::isfinite(S) && S > 0, "length {}", S);
+  // The curve reaches from x = 0 to x = L/2 (half) or L (whole): it is at least that long (to round-off).
+  const double end_x = whole ? L : 0.5 * L;
+  require(S >= end_x * (1 - 1e-12), "length {} shorter than its horizontal extent {}", S, end_x);
+  const double rise = curve.rise(), crown = curve.crown();
   require(std::isfinite(rise) && rise > 0, "rise {}", rise);
+  require(crown >= 0 && crown <= S, "crown {} outside [0, {}]", crown, S);
   const double tol = 1e-12 * S;
   const ogive::CurvePoint p0 = curve.at(0), pS = curve.at(S);
   require(std::abs(p0.x) <= tol && std::abs(p0.y) <= tol, "at(0) = ({}, {})", p0.x, p0.y);
-  require(std::abs(pS.x - 0.5 * L) <= tol, "at(S).x = {}, span/2 = {}", pS.x, 0.5 * L);
-  // Arc length: no chord is longer than the arc between its ends (to the accuracy of at(s)).
+  require(std::abs(pS.x - end_x) <= tol, "at(S).x = {}, expected {}", pS.x, end_x);
+  if (whole) {
+    const double h = curve.right_springing_height();
+    require(std::isfinite(h) && std::abs(pS.y - h) <= tol, "at(S).y = {}, right springing height {}", pS.y, h);
+  }
+  // Arc length: no chord is longer than the arc between its ends (to the accuracy of at(s)); x never
+  // decreases; no point is higher than the crown.
   constexpr int kSamples = 16;
   ogive::CurvePoint previous = p0;
   for (int k = 0; k <= kSamples; ++k) {
@@ -272,10 +281,12 @@ inline void check_curve(const ogive::Curve& curve) {
     require(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.theta) && std::isfinite(p.kappa),
             "at({}) = ({}, {}, {}, {})", s, p.x, p.y, p.theta, p.kappa);
     require(std::abs(p.theta) <= std::numbers::pi, "theta({}) = {}", s, p.theta);
+    if (whole) require(p.y <= rise + tol, "y({}) = {} above the crown's {}", s, p.y, rise);
     if (k > 0) {
       const double chord = std::hypot(p.x - previous.x, p.y - previous.y);
       require(chord <= (S / kSamples) * (1 + 1e-9) + tol,
               "chord {} longer than the arc {} before s = {}", chord, S / kSamples, s);
+      if (whole) require(p.x >= previous.x, "x decreases before s = {}: {} after {}", s, p.x, previous.x);
     }
     previous = p;
   }
@@ -294,12 +305,15 @@ inline std::size_t physical_lines(std::string_view bytes) {
   return lines;
 }
 
-inline void check_points_file(std::string_view bytes) {
+// One points file through one parser (half or whole): a CurveFileError FILE:LINE: rule, or a curve of
+// that family that keeps the invariants.
+template <class Parse>
+void check_points_parser(std::string_view bytes, Parse parse, const char* family) {
   const std::string name = "fuzz.csv";
   std::istringstream in{std::string(bytes)};
   std::shared_ptr<const ogive::Curve> curve;
   try {
-    curve = ogive::parse_points_curve(in, name);
+    curve = parse(in, name);
   } catch (const ogive::CurveFileError& e) {
     const std::string_view what = e.what();
     require(e.file() == name, "CurveFileError names another file: {}", e.file());
@@ -309,10 +323,16 @@ inline void check_points_file(std::string_view bytes) {
     require(one_line(e.rule()), "a CurveFileError must be one line: {}", what);
     return;
   }
-  require(curve != nullptr, "parse_points_curve returned no curve");
-  require(curve->family() == "points", "family {}", curve->family());
+  require(curve != nullptr, "the {} parser returned no curve", family);
+  require(curve->family() == family, "family {}, expected {}", curve->family(), family);
   require(curve->arcs().empty(), "a points curve has circular arcs");
   check_curve(*curve);
+}
+
+// The same bytes as a half file and as a whole file.
+inline void check_points_file(std::string_view bytes) {
+  check_points_parser(bytes, ogive::parse_points_curve, "points");
+  check_points_parser(bytes, ogive::parse_whole_points_curve, "whole-points");
 }
 
 }  // namespace ogive::fuzz

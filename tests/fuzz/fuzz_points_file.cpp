@@ -1,6 +1,7 @@
-// libFuzzer target: the input is a points file (CSV "x,y", springing to crown). parse_points_curve
+// libFuzzer target: the input is a points file (CSV "x,y"), read both as a half file (springing to crown,
+// parse_points_curve) and as a whole file (springing to springing, parse_whole_points_curve). Each
 // must either throw CurveFileError "FILE:LINE: rule" or return a curve that keeps the invariants of
-// curve.hpp (finite, arc-length parameterised, breakpoints inside the half arch). See fuzz_checks.hpp.
+// curve.hpp (finite, arc-length parameterised, breakpoints inside the curve). See fuzz_checks.hpp.
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
