@@ -90,6 +90,7 @@ const std::vector<CurveFamily> kFamilies = {
     {"parabolic", false, true, false, false, false, "0.5"},
     {"catenary", false, true, false, false, false, "0.5"},
     {"points", false, false, false, false, true},
+    {"whole-points", false, false, false, false, true},
 };
 
 template <class Enum>
@@ -168,7 +169,7 @@ const std::map<std::string, std::string> kAxisMeaning = {
     {"--support-displacement-ratio", "outward movement of each springing over span d/L (0.0003 = 0.03 %)"},
     {"--haunch-angle", "three- and four-centred: angle the haunch arc turns through, degrees"},
     {"--crown-angle", "four-centred: the tangent's angle above the horizontal at the crown, degrees"},
-    {"--rise-ratio", "rise over span h/L (not for pointed, semicircular, points)"},
+    {"--rise-ratio", "rise over span h/L (not for pointed, semicircular, points, whole-points)"},
     {"--eccentricity", "pointed: the centres' offset beyond mid-span over the span (0 semicircle, 0.5 equilateral)"},
     {"--point-load", "vertical point load P on the axis, N per metre of vault width, downwards"},
     {"--point-load-at", "where the point load acts, x / L from the left springing (default 0.5)"},
@@ -191,7 +192,7 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--curve", o.curve, "generator curve: " + names)->capture_default_str();
   cmd.add_option("--curve-file", o.curve_file,
                  "with --curve points: CSV file with header x,y and the axis points in m, springing (y = 0) to crown; "
-                 "- reads it from standard input");
+                 "with --curve whole-points: springing to springing (any heights); - reads it from standard input");
   // What an option without a default text means when it is not given.
   auto absent = [](const std::string& flag) -> std::string {
     if (flag == "--rise-ratio" || flag == "--haunch-angle" || flag == "--crown-angle") return " (default: the curve's)";
@@ -255,10 +256,15 @@ class ScenePlan {
     refuse_unless(family->file, "--curve-file");
     refuse_unless(!family->file, "--span");  // a points file sets its own span
     if (family->file) {
-      if (o.curve_file.empty()) throw UsageError("--curve-file: --curve points needs a file of axis points");
+      if (o.curve_file.empty())
+        throw UsageError(fmt::format("--curve-file: --curve {} needs a file of axis points", o.curve));
       try {
         // "-": the points come on standard input (a survey piped from another program).
-        o.points = o.curve_file == "-" ? parse_points_curve(std::cin, "<stdin>") : read_points_curve(o.curve_file);
+        const bool whole = o.curve == "whole-points";
+        if (o.curve_file == "-")
+          o.points = whole ? parse_whole_points_curve(std::cin, "<stdin>") : parse_points_curve(std::cin, "<stdin>");
+        else
+          o.points = whole ? read_whole_points_curve(o.curve_file) : read_points_curve(o.curve_file);
       } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
       }
@@ -1606,8 +1612,14 @@ std::string draw_title(const SceneParameters& p) {
   for (const auto& [name, v] : {std::pair{"eccentricity", p.eccentricity}, std::pair{"rise ratio", p.rise_ratio},
                                 std::pair{"haunch angle", p.haunch_angle}, std::pair{"crown angle", p.crown_angle}})
     if (!std::isnan(v)) title += fmt::format(", {} {}", name, v);
-  return title + fmt::format(", span {} m, t/L {}, d/L {}{}", p.span, p.thickness_ratio, p.support_displacement_ratio,
-                             p.plane_strain ? ", plane strain" : "");
+  title += fmt::format(", span {:.6g} m, t/L {}, d/L {}{}", p.span, p.thickness_ratio, p.support_displacement_ratio,
+                       p.plane_strain ? ", plane strain" : "");
+  if (!std::isnan(p.point_load)) title += fmt::format(", P {:g} N/m at x/L {:g}", p.point_load, p.point_load_at);
+  if (!std::isnan(p.live_load))
+    title += fmt::format(", q {:g} N/m^2 over x/L {:g}..{:g}", p.live_load, p.live_load_from, p.live_load_to);
+  if (!std::isnan(p.fill_density)) title += fmt::format(", fill {:g} kg/m^3 to {:g} L", p.fill_density, p.fill_height_ratio);
+  if (p.crown_hinge) title += ", crown hinge";
+  return title;
 }
 
 // The file of one scene in --output-dir: the curve, then each option that varies in the sweep with the

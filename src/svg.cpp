@@ -339,7 +339,9 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
   text(title, {box.x0 + 2.5 * font, legend_y}, 0.8 * font, "start", "elastic line of thrust");
   line(title, {box.x0 + 14 * font, legend_y + 0.3 * font}, {box.x0 + 16 * font, legend_y + 0.3 * font}, axis_style);
   text(title, {box.x0 + 16.5 * font, legend_y}, 0.8 * font, "start",
-       fmt::format("axis; section t = {:g} m; clamped springings", scene.thickness));
+       fmt::format("axis; section t = {:g} m; springings {}, {}", scene.thickness,
+                   scene.left.kind == SupportKind::clamped ? "clamped" : "pinned",
+                   scene.right.kind == SupportKind::clamped ? "clamped" : "pinned"));
   for (std::size_t k = 0; k < options.extra_lines.size(); ++k) {
     const ExtraThrustLine& extra = options.extra_lines[k];
     const double y = legend_y - 1.3 * font * static_cast<double>(k + 1);

@@ -3,6 +3,8 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -438,6 +440,48 @@ TEST_CASE("whole arches: a loads file's errors name the line") {
   CHECK(loads.live.size() == 1);
   CHECK(loads.fills.size() == 1);
   CHECK(loads.live[0].to == 0.5);
+}
+
+}  // namespace ogive
+
+namespace ogive {
+
+TEST_CASE("whole arches: a surveyed rampant arch from the CLI, and whole-arch files refused with their line") {
+  // The rampant survey: springings at different heights, solved over the whole arch; its reactions
+  // balance its weight (w times the axis length) and H_left = H_right.
+  const test::Run r = test::run_command({"thrust", "--curve", "whole-points", "--curve-file",
+                                         OGIVE_DATA_DIR "/curves/rampant-survey.csv", "--columns",
+                                         "status,domain,H_left,H_right,V_left,V_right"});
+  REQUIRE(r.status == 0);
+  CHECK(test::column(r.out, "domain") == "whole");
+  Scene s;
+  s.curve = read_whole_points_curve(OGIVE_DATA_DIR "/curves/rampant-survey.csv");
+  CHECK(s.curve->right_springing_height() > 1.0);
+  s.thickness = 0.08 * s.span();
+  const double weight = s.weight_per_length() * s.curve->length();
+  const double V = std::stod(test::column(r.out, "V_left")) + std::stod(test::column(r.out, "V_right"));
+  CHECK(close(V, weight, 1e-8));  // the rtol asked (auto's default)
+  CHECK(close(std::stod(test::column(r.out, "H_left")), std::stod(test::column(r.out, "H_right")), kExact));
+
+  const std::string dir = std::filesystem::temp_directory_path().string();
+  auto file = [&](const std::string& name, const std::string& text) {
+    const std::string path = dir + "/ogive-test-" + name;
+    std::ofstream(path) << text;
+    return path;
+  };
+  // Folds back: x decreases at line 5.
+  const std::string folds = file("folds.csv", "x,y\n0,0\n1,2\n2,3\n1.5,3.2\n4,2\n5,0\n");
+  const test::Run f = test::run_command({"thrust", "--curve", "whole-points", "--curve-file", folds});
+  CHECK(f.status == 2);
+  CHECK(f.out.empty());
+  CHECK(f.err.find(folds + ":5:") != std::string::npos);
+  // Fewer points than the fit needs: named at the last point's line.
+  const std::string few = file("few.csv", "x,y\n0,0\n1,1\n2,0\n");
+  const test::Run t = test::run_command({"thrust", "--curve", "whole-points", "--curve-file", few});
+  CHECK(t.status == 2);
+  CHECK(t.err.find(few + ":4:") != std::string::npos);
+  test::check_refused({"thrust", "--curve", "whole-points"});  // no file
+  test::check_refused({"thrust", "--curve", "whole-points", "--curve-file", folds, "--span", "10"});
 }
 
 }  // namespace ogive
