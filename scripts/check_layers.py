@@ -8,10 +8,10 @@ import sys
 
 LAYERS = [
     ("geometry", ["curve", "curve_families", "points_curve", "gauss_legendre", "chebyshev"]),
-    ("model", ["scene", "loads_file", "arch_model"]),
+    ("model", ["scene", "loads_file", "arch_model", "section"]),
     ("solution types", ["solution"]),
     ("one BVP solve", ["bvp"]),
-    ("methods", ["closed_form", "shooting", "quadrature", "cvode_integrator", "limit", "limit_internal",
+    ("methods", ["closed_form", "shooting", "quadrature", "cvode_integrator", "no_tension", "limit", "limit_internal",
                  "limit_lp", "voussoirs"]),
     ("dispatcher", ["solve"]),
     ("output", ["csv", "svg", "thrust_line"]),

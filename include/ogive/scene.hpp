@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ogive/curve.hpp"
+#include "ogive/section.hpp"
 
 namespace ogive {
 
@@ -82,6 +83,9 @@ struct Scene {
   Material material;
   Loads loads;
   Support left, right;
+  // The section's law (section.hpp): elastic (linear, the paper's) or no_tension (cracks where the
+  // resultant leaves the kern; solved by Newton shooting, no_tension.hpp).
+  SectionKind section = SectionKind::elastic;
   bool crown_hinge = false;  // a hinge (M = 0, the rotation free to jump) at the crown (Curve::crown)
 
   // Sets both springings' outward spread to d (m): today's "support displacement" of the paper.
