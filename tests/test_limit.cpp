@@ -129,9 +129,9 @@ TEST_CASE("limit: the static collapse load factor equals the virtual-work multip
     for (double a : {0.1, 0.25, 0.4}) {
       CAPTURE(eps);
       CAPTURE(a);
-      LimitOptions o;
-      o.point_load = {5e4, a};
-      const LimitResult r = analyse(eps, 0.12, o);
+      Scene scene = paper_scene(eps, 0.12);
+      scene.loads.points.push_back({5e4, a});
+      const LimitResult r = analyse_limit(scene, {});
       REQUIRE(r.status == LimitStatus::success);
       // Four hinges, or more at a degenerate optimum (two adjacent joints touched along a face's chord).
       REQUIRE(r.collapse_state.hinges.size() >= 4);
@@ -139,31 +139,36 @@ TEST_CASE("limit: the static collapse load factor equals the virtual-work multip
       CHECK(close(r.load_factor(), r.load_factor_mechanism, kVirtualWork));
       // Another mechanism (hinges moved by a joint) is an upper bound: the kinematic theorem.
       std::vector<Hinge> moved = r.collapse_state.hinges;
-      const Ring ring = make_ring(*paper_scene(eps).curve, 1.2, kGamma, o);
+      const Ring ring = make_ring(scene, {});
       const int j = moved[1].joint + 3;
       moved[1] = {j, moved[1].face, moved[1].face == Face::intrados ? ring.joints[j].intrados : ring.joints[j].extrados};
-      CHECK(mechanism_load_factor(ring, o.point_load, moved) > r.load_factor());
+      CHECK(mechanism_load_factor(ring, moved) > r.load_factor());
     }
 }
 
-TEST_CASE("limit: a mirrored load gives mirrored hinges and the same load factor") {
-  LimitOptions left, right;
-  left.point_load = {1.5e5, 0.3};
-  right.point_load = {1.5e5, 0.7};
-  const LimitResult a = analyse(0.25, 0.12, left), b = analyse(0.25, 0.12, right);
-  REQUIRE(a.status == LimitStatus::success);
-  REQUIRE(b.status == LimitStatus::success);
-  CHECK(close(a.load_factor(), b.load_factor(), 1e-9));
-  CHECK(close(a.H_min(), b.H_min(), 1e-9));
-  CHECK(close(a.H_max(), b.H_max(), 1e-9));
-  REQUIRE(a.collapse_state.hinges.size() == b.collapse_state.hinges.size());
-  const int last = kDefaultJointsCount - 1;
-  const std::size_t n = a.collapse_state.hinges.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const Hinge &h = a.collapse_state.hinges[i], &m = b.collapse_state.hinges[n - 1 - i];
-    CHECK(h.joint == last - m.joint);
-    CHECK(h.face == m.face);
-    CHECK(std::abs(h.point.x() - (10.0 - m.point.x())) <= kExact * 10.0);
+TEST_CASE("limit: a point load at a and one at 1 - a give mirrored hinges and the same load factor") {
+  for (double a : {0.1, 0.3, 0.45}) {
+    CAPTURE(a);
+    Scene left = paper_scene(0.25, 0.12), right = left;
+    left.loads.points.push_back({1.5e5, a});
+    right.loads.points.push_back({1.5e5, 1.0 - a});
+    const LimitResult l = analyse_limit(left, {}), r = analyse_limit(right, {});
+    REQUIRE(l.status == LimitStatus::success);
+    REQUIRE(r.status == LimitStatus::success);
+    CHECK(close(l.load_factor(), r.load_factor(), 1e-9));
+    CHECK(close(l.H_min(), r.H_min(), 1e-9));
+    CHECK(close(l.H_max(), r.H_max(), 1e-9));
+    // The reactions swap sides.
+    CHECK(close(l.min_state.V_left, r.min_state.V_right, 1e-9));
+    REQUIRE(l.collapse_state.hinges.size() == r.collapse_state.hinges.size());
+    const int last = kDefaultJointsCount - 1;
+    const std::size_t n = l.collapse_state.hinges.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Hinge &h = l.collapse_state.hinges[i], &m = r.collapse_state.hinges[n - 1 - i];
+      CHECK(h.joint == last - m.joint);
+      CHECK(h.face == m.face);
+      CHECK(std::abs(h.point.x() - (10.0 - m.point.x())) <= kExact * 10.0);
+    }
   }
 }
 
@@ -268,9 +273,14 @@ TEST_CASE("limit: misuse throws naming the field") {
   LimitOptions o;
   o.joints_count = 4;
   CHECK_THROWS_WITH_AS(analyse(0.0, 0.1, o), doctest::Contains("joints_count"), std::invalid_argument);
-  o = {};
-  o.point_load = {1e5, 1.2};
-  CHECK_THROWS_WITH_AS(analyse(0.0, 0.1, o), doctest::Contains("point_load_at"), std::invalid_argument);
+  Scene outside = paper_scene(0.0, 0.1);
+  outside.loads.points.push_back({1e5, 1.2});
+  CHECK_THROWS_WITH_AS(analyse_limit(outside, {}), doctest::Contains("point_load_at"), std::invalid_argument);
+  // Density 0 and a fill that lies below the extrados everywhere: nothing loads the ring.
+  Scene empty = paper_scene(0.0, 0.1);
+  empty.material.density = 0;
+  empty.loads.fills.push_back({1800.0, 0.01});
+  CHECK_THROWS_WITH_AS(analyse_limit(empty, {}), doctest::Contains("loads"), std::invalid_argument);
   o = {};
   o.friction = -0.1;
   CHECK_THROWS_WITH_AS(analyse(0.0, 0.1, o), doctest::Contains("friction"), std::invalid_argument);
@@ -376,14 +386,14 @@ TEST_CASE("cli: limit refuses bad input with one line and exit 2") {
       {"--joints-count", "x"},
       {"--joints", "diagonal"},
       {"--weight", "lumped"},
-      {"--point-load", "0"},
-      {"--point-load", "-1e5"},
       {"--point-load", "1e5", "--point-load-at", "1.5"},
       {"--point-load", "1e5", "--point-load-at", "-0.1"},
       {"--point-load-at", "0.3"},
       {"--thrust-line", "collapse"},
       {"--thrust-line", "middle"},
       {"--support-displacement-ratio", "0.0001"},
+      {"--left-spread-ratio", "0.0001"},
+      {"--thrust-line", "collapse", "--fill-density", "1800", "--fill-height-ratio", "0.5"},
       {"--thickness-ratio", "1.2"},
       {"--repeats", "-1"},
   };
