@@ -635,6 +635,26 @@ std::string field(const std::string& csv, const std::string& name, std::size_t r
 
 }  // namespace
 
+TEST_CASE("limit: the three-hinged arch with the axis weight carries the elastic model's thrust (statically determinate: stiffness does not enter)") {
+  for (double eps : {0.0, 0.5, 1.0}) {
+    CAPTURE(eps);
+    Scene scene = paper_scene(eps, 0.15);
+    scene.crown_hinge = true;
+    scene.left.kind = scene.right.kind = SupportKind::pinned;
+    LimitOptions o;
+    o.weight = WeightModel::axis;  // the elastic model's rho g t per axis length
+    const LimitResult r = analyse_limit(scene, o);
+    REQUIRE(r.status == LimitStatus::success);
+    // The elastic solve's success promises its numbers to its rtol; the LP's are exact to 1e-9 or better.
+    const Solution elastic = solve(scene);
+    REQUIRE(elastic.status == Status::success);
+    const double tolerance = Options{}.rtol + kSameRing;
+    CHECK(close(r.H_min(), elastic.H, tolerance));
+    CHECK(close(r.H_max(), elastic.H, tolerance));
+    CHECK(close(r.V, elastic.V, tolerance));
+  }
+}
+
 TEST_CASE("cli: limit prints one row per scene, inadmissible arches as rows, hinges as x/L:face") {
   const Run r = limit_cli({"--eccentricity", "0,0.5", "--thickness-ratio", "0.03,0.15"});
   REQUIRE(r.status == 0);
