@@ -26,7 +26,7 @@ namespace {
 
 enum Column { kH = 0, kV = 1, kM = 2, kLambda = 3, kMu = 4, kUnknowns = 5 };
 
-// Bounds that keep every program bounded (in units of the self-weight W and the span L, far beyond any
+// Bounds that keep every program bounded (in units of the total load W and the span L, far beyond any
 // arch's real values); an optimum on one of them means "no finite answer".
 constexpr double kCap = 1e6;
 

@@ -75,6 +75,9 @@ class SideView {
   const std::vector<double>& breaks() const { return breaks_; }
   // The curve's coordinates of a view's abscissa, and the whole arch's arc length of a view's.
   double curve_x(double x) const { return right_ ? 2.0 * crown_x_ - x : x; }
+  // The moment about the curve's origin (sum of F curve_x(x)) of forces with total `force` and moment
+  // `moment` about the view's origin.
+  double curve_moment(double force, double moment) const { return right_ ? 2.0 * crown_x_ * force - moment : moment; }
   double whole_s(double s) const { return right_ ? whole_length_ - s : s; }
 
  private:
@@ -192,9 +195,9 @@ struct SideRing {
 // as a force and its moment about the side's origin: int rho_f g max(0, h_f - y_e) dx. On the axis
 // y_e = y + t / (2 cos theta), integrated as max(0, (h_f - y) cos theta - t/2) per axis length (finite
 // at a vertical springing). The integrand's kink where the fill's level meets y_e is a knot.
-VerticalLoad fill_load(const SideView& side, const FillLoad& fill, double unit_weight, double thickness, double n,
+VerticalLoad fill_load(const SideView& side, const FillLoad& fill, double gravity, double thickness, double n,
                        double x_min, double a, double b, double span) {
-  const double level = fill.height_ratio * span, half_t = 0.5 * thickness;
+  const double level = fill.height_ratio * span, half_t = 0.5 * thickness, unit_weight = fill.density * gravity;
   if (!(unit_weight > 0) || !(b > a)) return {};
   if (face_at(side, n, b).p.x() <= x_min) return {};
   if (face_at(side, n, a).p.x() < x_min) a = face_at_x(side, n, x_min, a, b, span);
@@ -236,7 +239,7 @@ VerticalLoad fill_load(const SideView& side, const FillLoad& fill, double unit_w
 
 // The joints and voussoirs of one side, with their self-weight and fill.
 SideRing make_side(const SideView& side, double thickness, double unit_weight, const std::vector<FillLoad>& fills,
-                   double fill_gravity, const LimitOptions& options, double span) {
+                   double gravity, const LimitOptions& options, double span) {
   const double S = side.length(), half_t = 0.5 * thickness, xc = side.crown_x();
   const int m = (options.joints_count - 1) / 2;  // voussoirs per side
 
@@ -312,9 +315,9 @@ SideRing make_side(const SideView& side, double thickness, double unit_weight, c
     // axis model (the elastic model's convention).
     for (const FillLoad& f : fills) {
       if (options.weight == WeightModel::voussoir)
-        v.fill += fill_load(side, f, f.density * fill_gravity, thickness, half_t, x_min, a.s_extrados, b.s_extrados, span);
+        v.fill += fill_load(side, f, gravity, thickness, half_t, x_min, a.s_extrados, b.s_extrados, span);
       else
-        v.fill += fill_load(side, f, f.density * fill_gravity, thickness, 0.0, x_min, a.s_axis, b.s_axis, span);
+        v.fill += fill_load(side, f, gravity, thickness, 0.0, x_min, a.s_axis, b.s_axis, span);
     }
   }
   return out;
@@ -329,8 +332,7 @@ Joint to_curve(const SideView& side, const Joint& j) {
 Voussoir to_curve(const SideView& side, const Voussoir& v) {
   Voussoir out = v;
   out.centroid.x() = side.curve_x(v.centroid.x());
-  // x -> 2 x_c - x: the moment F x becomes 2 x_c F - F x (the identity on the left side).
-  out.fill.moment = v.fill.force * side.curve_x(0.0) + (side.curve_x(1.0) - side.curve_x(0.0)) * v.fill.moment;
+  out.fill.moment = side.curve_moment(v.fill.force, v.fill.moment);
   return out;
 }
 
