@@ -532,15 +532,15 @@ const std::vector<ColumnDoc> kColumnDocs = {
     {"H_max_over_V", "", "limit: H_max / V"},
     {"thickness_min_ratio", "", "limit: t_min / span, the thinnest arch of the same axis that stands"},
     {"geometric_safety_factor", "", "limit: t / t_min"},
-    {"hinges_min", "", "limit: hinges of the minimum-thrust state, x/L:face joined by ';'"},
+    {"hinges_min", "", "limit: hinges of the minimum-thrust state, x/L:face joined by ';' (face: intrados, extrados, or axis for a pin)"},
     {"hinges_max", "", "limit: hinges of the maximum-thrust state, x/L:face joined by ';'"},
-    {"load_factor", "", "limit: multiplier on the point load at collapse (static LP)"},
+    {"load_factor", "", "limit: multiplier on the live load (every point and live load) at collapse (static LP)"},
     {"load_factor_mechanism", "", "limit: the same from the mechanism of those hinges by virtual work"},
     {"hinges_collapse", "", "limit: hinges of the collapse mechanism, x/L:face joined by ';'"},
     {"lp_solves", "", "limit: linear programs solved for the row"},
     {"state", "", "limit --thrust-line: min, max or collapse"},
     {"joint", "", "limit --thrust-line: joint index from the left springing"},
-    {"hinge", "", "limit --thrust-line: intrados or extrados where the joint is a hinge, else empty"},
+    {"hinge", "", "limit --thrust-line: intrados, extrados (a hinge) or axis (a pin), else empty"},
 };
 
 const ColumnDoc* find_column_doc(std::string_view name) {
@@ -1324,24 +1324,15 @@ LimitOptions limit_options(const LimitText& t, const CLI::App& cmd) {
   if (cmd.count("--friction") > 0 && !(t.friction > 0))
     throw UsageError(fmt::format("--friction: must be > 0 (omit it for no sliding check), got {}", t.friction));
   o.friction = t.friction;
-  if (cmd.count("--point-load") > 0) {
-    // Until the limit analysis reads the scene's loads: one point load, > 0, not swept.
-    const std::vector<double> P = parse_values(cmd.get_option("--point-load")->as<std::string>(), "--point-load");
-    const std::vector<double> a = cmd.count("--point-load-at") > 0
-                                      ? parse_values(cmd.get_option("--point-load-at")->as<std::string>(), "--point-load-at")
-                                      : std::vector<double>{0.5};
-    if (P.size() != 1 || a.size() != 1) throw UsageError("--point-load: limit takes one point load, not a sweep");
-    if (!(P[0] > 0)) throw UsageError(fmt::format("--point-load: must be > 0 (N/m, downward), got {}", P[0]));
-    o.point_load = {P[0], a[0]};
-  }
-  for (const char* flag : {"--live-load", "--fill-density", "--loads-file", "--crown-hinge"})
-    if (cmd.count(flag) > 0) throw UsageError(fmt::format("{}: does not apply to limit yet (one point load)", flag));
-  if (cmd.count("--support-displacement-ratio") > 0)
-    throw UsageError("--support-displacement-ratio: does not apply to limit (rigid voussoirs: a spreading support "
-                     "brings the arch to H_min)");
-  const bool collapse = !t.thrust_line.empty() && lookup(kThrustLines, t.thrust_line, "--thrust-line") == ThrustLine::collapse;
-  if (collapse && !o.point_load.present())
-    throw UsageError("--thrust-line collapse: a load factor needs a live load (--point-load)");
+  // The loads are the scene's (--point-load, --live-load, --fill-density, --loads-file) and so are the
+  // pins (--supports pinned, --crown-hinge); the supports' movements do not enter rigid voussoirs.
+  for (const char* flag : {"--support-displacement-ratio", "--left-spread-ratio", "--right-spread-ratio",
+                           "--left-settlement-ratio", "--right-settlement-ratio", "--left-rotation", "--right-rotation"})
+    if (cmd.count(flag) > 0)
+      throw UsageError(fmt::format("{}: does not apply to limit (rigid voussoirs ignore the supports' movements: a "
+                                   "spreading support brings the arch to H_min)",
+                                   flag));
+  if (!t.thrust_line.empty()) lookup(kThrustLines, t.thrust_line, "--thrust-line");
   if (t.repeats < 0 || t.repeats > 100000)
     throw UsageError(fmt::format("--repeats: must lie in [0, 100000] (0: no timing), got {}", t.repeats));
   std::string why;
@@ -1355,7 +1346,7 @@ std::string hinge_text(const std::vector<Hinge>& hinges, double span) {
   std::string text;
   for (const Hinge& h : hinges) {
     if (!text.empty()) text += ';';
-    text += fmt::format("{:.6g}:{}", h.point.x() / span, h.face == Face::intrados ? "intrados" : "extrados");
+    text += fmt::format("{:.6g}:{}", h.point.x() / span, to_string(h.face));
   }
   return text;
 }
@@ -1393,6 +1384,10 @@ int run_limit(SceneOptions& so, const CLI::App& cmd, const LimitText& text, cons
   const LimitOptions o = limit_options(text, cmd);
   const ScenePlan plan(so, cmd);
   const bool lines = !text.thrust_line.empty();
+  if (lines && kThrustLines.at(text.thrust_line) == ThrustLine::collapse && cmd.count("--point-load") == 0 &&
+      cmd.count("--live-load") == 0 && so.file_loads.points.empty() && so.file_loads.live.empty())
+    throw UsageError("--thrust-line collapse: a load factor needs a live load (--point-load, --live-load or a "
+                     "--loads-file with point or live rows)");
   if (lines) check_rows(plan.size(), o.joints_count);
   Columns columns = limit_columns(lines, text.repeats > 0);
   columns.select(ct, plan.varying_inputs());
@@ -1433,7 +1428,7 @@ int run_limit(SceneOptions& so, const CLI::App& cmd, const LimitText& text, cons
             const Joint& joint = ring.joints[j];
             std::string hinge;
             for (const Hinge& h : st.hinges)
-              if (h.joint == static_cast<int>(j)) hinge = h.face == Face::intrados ? "intrados" : "extrados";
+              if (h.joint == static_cast<int>(j)) hinge = to_string(h.face);
             row.add(static_cast<std::int64_t>(j)).add(joint.s).add(joint.intrados.x()).add(joint.intrados.y());
             row.add(joint.extrados.x()).add(joint.extrados.y()).add(st.crossing[j].x()).add(st.crossing[j].y()).add(hinge);
             text_rows += row.take_to_mark();

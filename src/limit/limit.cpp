@@ -26,10 +26,9 @@ constexpr double kThicknessTolerance = 1e-10;
 // negative number for the root-finder, which needs only the sign.
 constexpr double kNoMargin = -1.0;
 
-// The feasibility margin of the arch of the same axis with thickness t (see analyse_limit).
+// The feasibility margin of the arch of the same axis and loads with thickness t (see analyse_limit).
 struct MarginFunction {
-  const Curve& curve;
-  double unit_weight;
+  Scene scene;  // a copy whose thickness changes
   const LimitOptions& options;
   double load_factor;
   int solves = 0;
@@ -37,8 +36,9 @@ struct MarginFunction {
   std::vector<int> basis;  // the last margin's optimal basis: the next thickness starts from it
 
   double operator()(double t) {
-    const Ring ring = make_ring(curve, t, unit_weight, options);
-    LimitLp lp(ring, options.point_load, options.friction);
+    scene.thickness = t;
+    const Ring ring = make_ring(scene, options);
+    LimitLp lp(ring, options.friction);
     LimitLp::Answer a = lp.margin(load_factor, basis.empty() ? nullptr : &basis);
     solves += lp.solves();
     basis = std::move(a.basis);
@@ -88,26 +88,32 @@ const char* to_string(LimitStatus s) {
   return "unknown";
 }
 
-ThrustState thrust_state(const Ring& ring, const CollapseLoad& load, double H, double V_left, double M_left,
-                         double load_factor, double hinge_tolerance) {
-  const limit_detail::LoadsLeftOfJoints left = limit_detail::loads_left_of_joints(ring, load);
+ThrustState thrust_state(const Ring& ring, double H, double V_left, double M_left, double load_factor,
+                         double hinge_tolerance) {
+  const limit_detail::LoadsLeftOfJoints left = limit_detail::loads_left_of_joints(ring);
+  const bool live = ring.has_live_load();
+  const double lambda = live ? load_factor : 0.0;
   ThrustState st;
   st.H = H;
   st.V_left = V_left;
-  st.load_factor = load.present() ? load_factor : kNaN;
-  const double live = load.present() ? load_factor * load.force : 0.0;
-  st.V_right = ring.total_weight() + live - V_left;
+  st.load_factor = live ? load_factor : kNaN;
+  st.V_right = ring.total_dead() + lambda * ring.total_live() - V_left;
   st.crossing.reserve(ring.joints.size());
+  std::size_t pin = 0;
   for (std::size_t j = 0; j < ring.joints.size(); ++j) {
     const Joint& joint = ring.joints[j];
-    const double lambda = load.present() ? load_factor : 0.0;
     // The force of the part left of the joint on the part right of it, and its moment about the origin.
-    const Eigen::Vector2d F(H, V_left - left.dead[j] - lambda * left.live[j]);
-    const double moment = M_left - left.dead_moment[j] - lambda * left.live_moment[j];
+    const Eigen::Vector2d F(H, V_left - left.dead[j].force - lambda * left.live[j].force);
+    const double moment = M_left - left.dead[j].moment - lambda * left.live[j].moment;
     // Its line meets the joint I + u (E - I) where (I + u d) x F = moment.
     const Eigen::Vector2d d = joint.extrados - joint.intrados;
     const double u = (moment - cross(joint.intrados, F)) / cross(d, F);
     st.crossing.push_back(joint.intrados + u * d);
+    if (pin < ring.pins.size() && ring.pins[pin] == static_cast<int>(j)) {
+      st.hinges.push_back({static_cast<int>(j), Face::axis, joint.axis});
+      ++pin;
+      continue;
+    }
     if (u <= hinge_tolerance) st.hinges.push_back({static_cast<int>(j), Face::intrados, joint.intrados});
     if (u >= 1.0 - hinge_tolerance) st.hinges.push_back({static_cast<int>(j), Face::extrados, joint.extrados});
   }
@@ -117,9 +123,9 @@ ThrustState thrust_state(const Ring& ring, const CollapseLoad& load, double H, d
 namespace {
 
 // The multiplier of one mechanism with hinges h (sorted by joint, distinct joints): NaN unless it has
-// exactly one degree of freedom, the point load does work in it, and it is kinematically admissible
-// (each hinge opens on the face opposite to its own).
-double one_mechanism(const Ring& ring, const CollapseLoad& load, const std::vector<Hinge>& h) {
+// exactly one degree of freedom, the live load does work in it, and it is kinematically admissible
+// (each face hinge opens on the face opposite to its own; a pin turns either way).
+double one_mechanism(const Ring& ring, const std::vector<Hinge>& h) {
   // Bodies b = 0 .. k-2 between consecutive hinges, each with a rigid velocity (u, v, omega): a point p
   // moves with (u - omega p_y, v + omega p_x). The parts outside the first and last hinges stay put.
   const int k = static_cast<int>(h.size()), bodies = k - 1;
@@ -141,16 +147,19 @@ double one_mechanism(const Ring& ring, const CollapseLoad& load, const std::vect
   lu.setThreshold(1e-10);
   Eigen::VectorXd mode = lu.kernel();
   if (lu.dimensionOfKernel() != 1) return kNaN;
-  auto vertical_velocity = [&](int voussoir, double x) {
+  // The work of downward forces on a voussoir: minus force times the vertical velocity v + omega x of
+  // its body, summed over the forces: -(v F + omega sum x F).
+  auto work = [&](int voussoir, const VerticalLoad& load) {
     for (int b = 0; b < bodies; ++b)
-      if (voussoir >= h[b].joint && voussoir < h[b + 1].joint) return mode(3 * b + 1) + mode(3 * b + 2) * x / L;
+      if (voussoir >= h[b].joint && voussoir < h[b + 1].joint)
+        return -(mode(3 * b + 1) * load.force + mode(3 * b + 2) * load.moment / L);
     return 0.0;
   };
-  const int loaded = limit_detail::loaded_voussoir(ring, load);
-  double live_work = -load.force * vertical_velocity(loaded, load.position * L);
-  double dead_work = 0;
-  for (std::size_t v = 0; v < ring.voussoirs.size(); ++v)
-    dead_work -= ring.voussoirs[v].weight * vertical_velocity(static_cast<int>(v), ring.voussoirs[v].centroid.x());
+  double live_work = 0, dead_work = 0;
+  for (std::size_t v = 0; v < ring.voussoirs.size(); ++v) {
+    live_work += work(static_cast<int>(v), ring.voussoirs[v].live);
+    dead_work += work(static_cast<int>(v), ring.voussoirs[v].dead());
+  }
   if (!(std::abs(live_work) > 1e-12 * std::abs(dead_work))) return kNaN;
   if (live_work < 0) {  // the sense in which the load does positive work
     mode = -mode;
@@ -161,6 +170,7 @@ double one_mechanism(const Ring& ring, const CollapseLoad& load, const std::vect
   // (omega_right - omega_left < 0); on the extrados, counter-clockwise.
   const double scale = mode.tail(1).cwiseAbs().maxCoeff() + mode.cwiseAbs().maxCoeff();
   for (int i = 0; i < k; ++i) {
+    if (h[i].face == Face::axis) continue;
     const double right = i < bodies ? mode(3 * i + 2) : 0.0, left = i > 0 ? mode(3 * (i - 1) + 2) : 0.0;
     const double turn = (right - left) * (h[i].face == Face::intrados ? 1.0 : -1.0);
     if (turn > 1e-9 * scale) return kNaN;
@@ -170,13 +180,13 @@ double one_mechanism(const Ring& ring, const CollapseLoad& load, const std::vect
 
 }  // namespace
 
-double mechanism_load_factor(const Ring& ring, const CollapseLoad& load, const std::vector<Hinge>& hinges) {
-  if (!load.present() || hinges.size() < 3) return kNaN;
+double mechanism_load_factor(const Ring& ring, const std::vector<Hinge>& hinges) {
+  if (!ring.has_live_load() || hinges.size() < 3) return kNaN;
   std::vector<Hinge> h = hinges;
   std::sort(h.begin(), h.end(), [](const Hinge& a, const Hinge& b) { return a.joint < b.joint; });
   for (std::size_t i = 1; i < h.size(); ++i)
     if (h[i].joint == h[i - 1].joint) return kNaN;
-  if (h.size() <= 4) return one_mechanism(ring, load, h);
+  if (h.size() <= 4) return one_mechanism(ring, h);
   // More hinges than a one-degree mechanism has (a degenerate optimum: e.g. the thrust line along an
   // intrados chord touches two adjacent joints): every admissible mechanism of four of them is an upper
   // bound (the kinematic theorem); the least is the multiplier of these hinges.
@@ -186,7 +196,7 @@ double mechanism_load_factor(const Ring& ring, const CollapseLoad& load, const s
     for (std::size_t b = a + 1; b < n; ++b)
       for (std::size_t c = b + 1; c < n; ++c)
         for (std::size_t d = c + 1; d < n; ++d) {
-          const double m = one_mechanism(ring, load, {h[a], h[b], h[c], h[d]});
+          const double m = one_mechanism(ring, {h[a], h[b], h[c], h[d]});
           if (!std::isnan(m) && !(m >= best)) best = m;
         }
   return best;
@@ -197,21 +207,23 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
   const Curve& curve = *scene.curve;
-  const double unit_weight = scene.material.density * scene.material.gravity;
-  const Ring ring = make_ring(curve, scene.thickness, unit_weight, options);
-  const CollapseLoad& load = options.point_load;
-  const double load_factor = load.present() ? 1.0 : 0.0;  // the H range and t_min: under the loads as given
+  const Ring ring = make_ring(scene, options);
+  if (!(ring.total_dead() != 0.0 || ring.has_live_load()))
+    throw std::invalid_argument(
+        "loads: the ring carries no load (density 0, and the fills lie below the extrados over the whole span)");
+  const bool live = ring.has_live_load();
+  const double load_factor = live ? 1.0 : 0.0;  // the H range and t_min: under the loads as given
 
   LimitResult r;
-  r.V = 0.5 * (ring.total_weight() + load.force);
-  LimitLp lp(ring, load, options.friction);
+  r.V = 0.5 * (ring.total_dead() + ring.total_live());
+  LimitLp lp(ring, options.friction);
   auto fail = [&](const char* problem) {
     r.status = LimitStatus::lp_failure;
     r.message = fmt::format("the LP of {} stopped without an answer", problem);
     r.lp_solves += lp.solves();
     return r;
   };
-  auto state = [&](const LimitLp::Answer& a) { return thrust_state(ring, load, a.H, a.V, a.M, a.load_factor); };
+  auto state = [&](const LimitLp::Answer& a) { return thrust_state(ring, a.H, a.V, a.M, a.load_factor); };
 
   LimitLp::Answer margin = lp.margin(load_factor);
   if (margin.outcome == LimitLp::Outcome::infeasible) margin.margin = kNoMargin;
@@ -231,20 +243,20 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
       else unbounded_thrust = true;
     }
   }
-  if (load.present()) {
+  if (live) {
     const LimitLp::Answer c = lp.collapse();
     if (c.outcome == LimitLp::Outcome::optimal) {
       r.collapse_state = state(c);
-      r.load_factor_mechanism = mechanism_load_factor(ring, load, r.collapse_state.hinges);
+      r.load_factor_mechanism = mechanism_load_factor(ring, r.collapse_state.hinges);
     } else if (c.outcome == LimitLp::Outcome::failure) {
       return fail("the collapse load");
     }
-    // infeasible: the self-weight alone cannot stand; unbounded: the point load cannot make a mechanism.
+    // infeasible: the dead loads alone cannot stand; unbounded: the live load cannot make a mechanism.
   }
   r.lp_solves += lp.solves();
 
   // t_min: bracket the root of the margin, then Illinois.
-  MarginFunction f{curve, unit_weight, options, load_factor, 0, false, margin.basis};
+  MarginFunction f{scene, options, load_factor, 0, false, margin.basis};
   const double t = scene.thickness;
   const double t_cap = 0.99 * max_thickness(curve);
   double lo = t, f_lo = margin.margin, hi = t, f_hi = margin.margin;
@@ -293,8 +305,8 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
   if (!bracketed) r.message = fmt::format("t_min below {} m: not searched further", hi);
   auto note = [&](const std::string& text) { r.message += (r.message.empty() ? "" : "; ") + text; };
   if (unbounded_thrust) note("no largest thrust: a thrust line of any H fits inside the arch (H_max absent)");
-  if (load.present() && std::isnan(r.load_factor()))
-    note("the point load cannot turn the arch into a mechanism (no finite load factor)");
+  if (live && std::isnan(r.load_factor()))
+    note("the live load cannot turn the arch into a mechanism (no finite load factor)");
   if (!std::isnan(r.load_factor()) && std::isnan(r.load_factor_mechanism))
     note(options.friction > 0 ? "no rotational mechanism through the collapse hinges: joints slide at collapse"
                               : "no one-degree rotational mechanism through the collapse hinges");

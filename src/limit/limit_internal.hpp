@@ -9,26 +9,22 @@
 
 namespace ogive::limit_detail {
 
-// The voussoir that carries the point load: the one whose extrados holds x = a L (the first of two at a
-// shared joint). -1 without a point load.
-int loaded_voussoir(const Ring& ring, const CollapseLoad& load);
-
-// What lies to the left of each joint j (voussoirs 0 .. j-1), for the equilibrium of that part:
-// the self-weight and its moment about the origin (sum of x W), and the point load's share (P or 0)
-// and moment (x_P P or 0). Every vector has one entry per joint.
+// What lies to the left of each joint j (voussoirs 0 .. j-1), for the equilibrium of that part: the
+// dead and the live loads (at factor 1), each with its moment about the origin. One entry per joint.
 struct LoadsLeftOfJoints {
-  std::vector<double> dead, dead_moment, live, live_moment;
+  std::vector<VerticalLoad> dead, live;
 };
-LoadsLeftOfJoints loads_left_of_joints(const Ring& ring, const CollapseLoad& load);
+LoadsLeftOfJoints loads_left_of_joints(const Ring& ring);
 
-// The linear programs of one ring and load. Unknowns: the thrust H, the left support's vertical
+// The linear programs of one ring and its loads. Unknowns: the thrust H, the left support's vertical
 // reaction V and moment M about the origin, the load factor lambda and the margin mu. Joint j carries
 // F_j = (H, V - D_j - lambda P_j) with moment m_j = M - MD_j - lambda MP_j about the origin; the
 // resultant crosses the joint between its intrados point I and extrados point E (in compression) iff
-// m_j - I x F_j <= -mu h_j and m_j - E x F_j >= mu h_j, h_j = |E - I| W (W the self-weight).
+// m_j - I x F_j <= -mu h_j and m_j - E x F_j >= mu h_j, h_j = |E - I| W (W the total load, dead plus
+// live, in magnitude). At a pin (Ring::pins) also m_j - A x F_j = 0, A the joint's axis point.
 class LimitLp {
  public:
-  LimitLp(const Ring& ring, const CollapseLoad& load, double friction);
+  LimitLp(const Ring& ring, double friction);
   ~LimitLp();
   LimitLp(const LimitLp&) = delete;
   LimitLp& operator=(const LimitLp&) = delete;
@@ -39,9 +35,9 @@ class LimitLp {
     double H = 0, V = 0, M = 0, load_factor = 0, margin = 0;  // SI units; margin dimensionless
     std::vector<int> basis;  // the optimal basis (which joint inequalities are tight), to warm-start
   };
-  // The smallest or largest H of an admissible state under self-weight + load_factor * P (mu = 0).
+  // The smallest or largest H of an admissible state under dead + load_factor * live (mu = 0).
   Answer extreme_thrust(double load_factor, bool largest);
-  // The largest margin mu under self-weight + load_factor * P: >= 0 iff the arch is admissible.
+  // The largest margin mu under dead + load_factor * live: >= 0 iff the arch is admissible.
   // `warm`: the basis of the margin of a ring with the same joints count (another thickness), to start
   // from.
   Answer margin(double load_factor, const std::vector<int>* warm = nullptr);

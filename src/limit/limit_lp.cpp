@@ -26,7 +26,7 @@ namespace {
 
 enum Column { kH = 0, kV = 1, kM = 2, kLambda = 3, kMu = 4, kUnknowns = 5 };
 
-// Bounds that keep every program bounded (in units of the self-weight W and the span L, far beyond any
+// Bounds that keep every program bounded (in units of the total load W and the span L, far beyond any
 // arch's real values); an optimum on one of them means "no finite answer".
 constexpr double kCap = 1e6;
 
@@ -37,10 +37,12 @@ constexpr double kMaxMargin = 1.0;
 // Feasibility and optimality tolerances of the scaled programs (coefficients of order one).
 constexpr double kFeasibility = 1e-11;
 
-// One inequality a . z <= b in the scaled unknowns z = (H/W, V/W, M/(W L), lambda, mu).
+// One inequality a . z <= b (or, for a pin, an equality a . z = b) in the scaled unknowns
+// z = (H/W, V/W, M/(W L), lambda, mu).
 struct Inequality {
   std::array<double, kUnknowns> a;
   double b;
+  bool equality = false;
 };
 
 }  // namespace
@@ -54,21 +56,31 @@ struct LimitLp::Impl {
                   const std::vector<int>* warm = nullptr) const;
 };
 
-LimitLp::LimitLp(const Ring& ring, const CollapseLoad& load, double friction) : impl_(std::make_unique<Impl>()) {
-  const double W = ring.total_weight(), L = ring.span;
+LimitLp::LimitLp(const Ring& ring, double friction) : impl_(std::make_unique<Impl>()) {
+  // The force scale: every load in magnitude (1 for a ring loaded with nothing, where any scale will do).
+  double W = 0;
+  for (const Voussoir& v : ring.voussoirs) W += std::abs(v.dead().force) + std::abs(v.live.force);
+  if (!(W > 0)) W = 1;
+  const double L = ring.span;
   impl_->weight = W;
   impl_->span = L;
   std::vector<Inequality>& rows = impl_->rows;
-  const LoadsLeftOfJoints left = loads_left_of_joints(ring, load);
+  const LoadsLeftOfJoints left = loads_left_of_joints(ring);
+  std::size_t pin = 0;
   for (std::size_t j = 0; j < ring.joints.size(); ++j) {
     const Eigen::Vector2d I = ring.joints[j].intrados / L, E = ring.joints[j].extrados / L;
-    const double D = left.dead[j] / W, MD = left.dead_moment[j] / (W * L);
-    const double P = left.live[j] / W, MP = left.live_moment[j] / (W * L);
+    const double D = left.dead[j].force / W, MD = left.dead[j].moment / (W * L);
+    const double P = left.live[j].force / W, MP = left.live[j].moment / (W * L);
     const double h = (E - I).norm();
     // Moment of the joint's force about Q: H Qy - V Qx + M + lambda (Qx P - MP) + (Qx D - MD);
-    // <= -mu h about the intrados point, >= mu h about the extrados point.
+    // <= -mu h about the intrados point, >= mu h about the extrados point, 0 about a pin's axis point.
     rows.push_back({{I.y(), -I.x(), 1.0, I.x() * P - MP, h}, -(I.x() * D - MD)});
     rows.push_back({{-E.y(), E.x(), -1.0, -(E.x() * P - MP), h}, E.x() * D - MD});
+    if (pin < ring.pins.size() && ring.pins[pin] == static_cast<int>(j)) {
+      const Eigen::Vector2d A = ring.joints[j].axis / L;
+      rows.push_back({{A.y(), -A.x(), 1.0, A.x() * P - MP, 0.0}, -(A.x() * D - MD), true});
+      ++pin;
+    }
     if (friction > 0) {
       // Normal n (towards the right-hand part) and direction d of the joint; F = (H, V - D - lambda P).
       const Eigen::Vector2d d = (E - I) / h, n(d.y(), -d.x());
@@ -100,7 +112,7 @@ LimitLp::Answer LimitLp::Impl::optimise(Column target, bool maximise, const std:
   const int m = static_cast<int>(free.size());
   std::vector<CoinBigIndex> start{0};
   std::vector<int> index;
-  std::vector<double> value, cost;
+  std::vector<double> value, cost, column_lower;
   std::vector<int> kept;  // the inequality of each column
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const Inequality& row = rows[r];
@@ -116,7 +128,7 @@ LimitLp::Answer LimitLp::Impl::optimise(Column target, bool maximise, const std:
       }
     if (!any) {
       // A row of held unknowns only: it holds or the program is infeasible.
-      if (b < -1e-12) {
+      if (b < -1e-12 || (row.equality && b > 1e-12)) {
         Answer infeasible;
         infeasible.outcome = Outcome::infeasible;
         return infeasible;
@@ -124,11 +136,13 @@ LimitLp::Answer LimitLp::Impl::optimise(Column target, bool maximise, const std:
       continue;
     }
     cost.push_back(b);
+    // An equality of the program is a free variable of its dual.
+    column_lower.push_back(row.equality ? -COIN_DBL_MAX : 0.0);
     kept.push_back(static_cast<int>(r));
     start.push_back(static_cast<CoinBigIndex>(index.size()));
   }
   const int columns = static_cast<int>(cost.size());
-  const std::vector<double> column_lower(columns, 0.0), column_upper(columns, COIN_DBL_MAX);
+  const std::vector<double> column_upper(columns, COIN_DBL_MAX);
   std::vector<double> rhs(m, 0.0);  // A^T y = c: c is +-1 on the target
   for (int k = 0; k < m; ++k)
     if (free[k] == target) rhs[k] = maximise ? 1.0 : -1.0;
@@ -146,9 +160,10 @@ LimitLp::Answer LimitLp::Impl::optimise(Column target, bool maximise, const std:
   model.setOptimizationDirection(1.0);
   if (warm && static_cast<int>(warm->size()) == m) {
     // Start from the given basic columns (the same inequalities tight as in the previous program),
-    // every other column at its bound of 0, every row out of the basis.
+    // every other column at its bound of 0 (a free one at 0), every row out of the basis.
     model.createStatus();
-    for (int c = 0; c < columns; ++c) model.setColumnStatus(c, ClpSimplex::atLowerBound);
+    for (int c = 0; c < columns; ++c)
+      model.setColumnStatus(c, column_lower[c] == 0.0 ? ClpSimplex::atLowerBound : ClpSimplex::isFree);
     for (int k = 0; k < m; ++k) model.setRowStatus(k, ClpSimplex::isFixed);
     int c = 0;
     for (int r : *warm) {

@@ -1,8 +1,9 @@
 // The ring of voussoirs: joints, and the weight of each voussoir with where it acts.
 #include <algorithm>
 #include <array>
-#include <utility>
 #include <cmath>
+#include <optional>
+#include <utility>
 #include <stdexcept>
 #include <string>
 
@@ -15,20 +16,84 @@
 namespace ogive {
 namespace {
 
-// A point of the line at signed distance n from the axis of the left half (n > 0 towards the extrados),
-// at axis arc length s, and its derivative d/ds. Beyond the crown (s > S; only the extrados of a pointed
-// crown goes there, up to mid-span) the face is continued: along the last arc for a piecewise-circular
-// curve (Curve::at extrapolates its end arcs), otherwise along the crown's tangent.
+// One side of the arch, springing to crown, seen as the left half of a symmetric arch: the left side
+// as it is, the right side run from its springing towards the crown and mirrored about the vertical
+// through the crown (x -> 2 x_c - x), so that one construction serves both sides of a whole curve; a half
+// curve has only its left side (the right is its mirror image about mid-span). Beyond the crown (s > S;
+// only the extrados of a pointed crown goes there, up to the crown's vertical) the side's axis is
+// continued: along its last arc for a piecewise-circular curve, otherwise along its tangent at the crown.
+class SideView {
+ public:
+  SideView(const Curve& curve, bool right) : curve_(curve), right_(right) {
+    const bool whole = curve.extent() == CurveExtent::whole;
+    whole_length_ = curve.whole_length();
+    const double C = whole ? curve.crown() : curve.length();
+    const double tiny = 1e-12 * whole_length_;
+    S_ = right ? whole_length_ - C : C;
+    const CurvePoint crown = curve.at(C);  // from the left at a kink (Curve's contract)
+    crown_x_ = whole ? crown.x : 0.5 * curve.span();  // a half's crown is at mid-span (to round-off: exactly)
+    const auto arcs = curve.arcs();
+    if (!right) {
+      crown_ = crown;
+      for (const CircularArc& a : arcs)
+        if (a.s_start < C - tiny) end_arc_ = a;
+      for (double b : curve.breakpoints())
+        if (b < C - tiny) breaks_.push_back(b);
+    } else {
+      // The arc holding the crown from the right, reversed and mirrored (as MirroredCurve mirrors arcs).
+      for (const CircularArc& a : arcs)
+        if (a.s_start + a.length > C + tiny) {
+          const CurvePoint end = mirror(point_on_arc(a, a.length), 2.0 * crown_x_);
+          end_arc_ = CircularArc{whole_length_ - (a.s_start + a.length), a.length, end.x, end.y, end.theta, a.kappa};
+          break;
+        }
+      if (end_arc_) {
+        crown_ = point_on_arc(*end_arc_, S_ - end_arc_->s_start);
+      } else {
+        // The tangent just past a kink (a curve without arcs gives only the left one at the crown itself).
+        const CurvePoint past = curve.at(std::min(C + 1e-10 * whole_length_, whole_length_));
+        crown_ = {crown_x_, crown.y, -past.theta, past.kappa};
+      }
+      crown_.x = crown_x_;
+      crown_.y = crown.y;
+      const std::vector<double> b = curve.breakpoints();
+      for (auto it = b.rbegin(); it != b.rend(); ++it)
+        if (*it > C + tiny) breaks_.push_back(whole_length_ - *it);
+    }
+    breaks_.push_back(S_);
+  }
+
+  double length() const { return S_; }         // m, springing to crown
+  double crown_x() const { return crown_x_; }  // m, in the view's (and the curve's) coordinates
+  // The axis' point at arc length s from this side's springing (continued beyond the crown).
+  CurvePoint at(double s) const {
+    if (right_ ? s < S_ : s <= S_) return right_ ? mirror(curve_.at(whole_length_ - s), 2.0 * crown_x_) : curve_.at(s);
+    if (end_arc_) return point_on_arc(*end_arc_, s - end_arc_->s_start);
+    return {crown_.x + (s - S_) * std::cos(crown_.theta), crown_.y + (s - S_) * std::sin(crown_.theta), crown_.theta, 0.0};
+  }
+  // Interior breakpoints of the side and the crown, ascending: where the faces' integrands are not smooth.
+  const std::vector<double>& breaks() const { return breaks_; }
+  // The curve's coordinates of a view's abscissa, and the whole arch's arc length of a view's.
+  double curve_x(double x) const { return right_ ? 2.0 * crown_x_ - x : x; }
+  // The moment about the curve's origin (sum of F curve_x(x)) of forces with total `force` and moment
+  // `moment` about the view's origin.
+  double curve_moment(double force, double moment) const { return right_ ? 2.0 * crown_x_ * force - moment : moment; }
+  double whole_s(double s) const { return right_ ? whole_length_ - s : s; }
+
+ private:
+  const Curve& curve_;
+  bool right_;
+  double whole_length_ = 0, S_ = 0, crown_x_ = 0;
+  CurvePoint crown_;  // the crown with this side's tangent
+  std::optional<CircularArc> end_arc_;
+  std::vector<double> breaks_;
+};
+
+// A point of the line at signed distance n from the axis (n > 0 towards the extrados), at arc length s
+// of a side, and its derivative d/ds.
 struct FacePoint {
   Eigen::Vector2d p, dp;
 };
-
-CurvePoint axis_at(const Curve& curve, double s) {
-  const double S = curve.length();
-  if (s <= S || !curve.arcs().empty()) return curve.at(s);
-  const CurvePoint c = curve.at(S);
-  return {c.x + (s - S) * std::cos(c.theta), c.y + (s - S) * std::sin(c.theta), c.theta, 0.0};
-}
 
 FacePoint offset(const CurvePoint& q, double n) {
   const Eigen::Vector2d tangent(std::cos(q.theta), std::sin(q.theta));
@@ -37,21 +102,42 @@ FacePoint offset(const CurvePoint& q, double n) {
   return {Eigen::Vector2d(q.x, q.y) + n * normal, (1.0 - n * q.kappa) * tangent};
 }
 
-FacePoint face_at(const Curve& curve, double n, double s) { return offset(axis_at(curve, s), n); }
+FacePoint face_at(const SideView& side, double n, double s) { return offset(side.at(s), n); }
 
 // The arc length s in [lo, hi] where the face at n reaches abscissa x. x grows with s on every face of
 // a valid ring (dx/ds = cos theta (1 - n kappa) >= 0), so a safeguarded Newton iteration converges.
-double face_at_x(const Curve& curve, double n, double x, double lo, double hi) {
+double face_at_x(const SideView& side, double n, double x, double lo, double hi, double span) {
   double s = 0.5 * (lo + hi);
   for (int it = 0; it < 100; ++it) {
-    const FacePoint f = face_at(curve, n, s);
+    const FacePoint f = face_at(side, n, s);
     const double r = f.p.x() - x;
     if (r > 0) hi = s; else lo = s;
-    if (std::abs(r) <= 1e-15 * curve.span() || hi - lo <= 1e-15 * curve.span()) break;
+    if (std::abs(r) <= 1e-15 * span || hi - lo <= 1e-15 * span) break;
     const double newton = f.dp.x() > 0 ? s - r / f.dp.x() : 0.5 * (lo + hi);
     s = (newton > lo && newton < hi) ? newton : 0.5 * (lo + hi);
   }
   return s;
+}
+
+// The integral of f from a to b (either order) by the 8-point rule, piece by piece between the knots
+// (ascending) that lie strictly between a and b, where f is smooth.
+template <class Result, class F>
+Result integral_between_knots(const std::vector<double>& knots, double a, double b, F&& f) {
+  Result sum = Result::Zero();
+  double from = a;
+  auto piece = [&](double to) {
+    sum += gauss_legendre_integral<8>(f, from, to);
+    from = to;
+  };
+  if (a < b) {
+    for (double k : knots)
+      if (k > a && k < b) piece(k);
+  } else {
+    for (auto k = knots.rbegin(); k != knots.rend(); ++k)
+      if (*k < a && *k > b) piece(*k);
+  }
+  piece(b);
+  return sum;
 }
 
 // Area, and its first moments (integral of x dA and of y dA), of a region, from its boundary run
@@ -79,44 +165,264 @@ struct RegionMoments {
   }
 
   // The faces at each n of `faces`, all from arc length a to b (either order) and each counted with its
-  // sign (+1 along a -> b, -1 back), piece by piece between the knots (the curve's breakpoints and the
-  // crown), where the integrand is smooth; one evaluation of the axis per node serves every face.
+  // sign (+1 along a -> b, -1 back); one evaluation of the axis per node serves every face.
   template <std::size_t N>
-  void add_faces(const Curve& curve, const std::vector<double>& breaks, const std::array<std::pair<double, double>, N>& faces,
-                 double a, double b) {
-    double from = a;
-    auto piece = [&](double to) {
-      add(gauss_legendre_integral<8>(
-          [&](double s) -> Eigen::Vector3d {
-            const CurvePoint q = axis_at(curve, s);
-            Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-            for (const auto& [n, sign] : faces) sum += sign * integrand(offset(q, n));
-            return sum;
-          },
-          from, to));
-      from = to;
-    };
-    if (a < b) {
-      for (double k : breaks)
-        if (k > a && k < b) piece(k);
-    } else {
-      for (auto k = breaks.rbegin(); k != breaks.rend(); ++k)
-        if (*k < a && *k > b) piece(*k);
-    }
-    piece(b);
+  void add_faces(const SideView& side, const std::array<std::pair<double, double>, N>& faces, double a, double b) {
+    add(integral_between_knots<Eigen::Vector3d>(side.breaks(), a, b, [&](double s) {
+      const CurvePoint q = side.at(s);
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      for (const auto& [n, sign] : faces) sum += sign * integrand(offset(q, n));
+      return sum;
+    }));
   }
 };
 
-// One joint of the left half with the arc lengths at which it meets the intrados and extrados faces.
-struct HalfJoint {
+// One joint of a side with the arc lengths (of the side) at which it meets the intrados, the extrados
+// and the axis.
+struct SideJoint {
   Joint joint;
-  double s_intrados = 0, s_extrados = 0;
+  double s_intrados = 0, s_extrados = 0, s_axis = 0;
 };
+
+// One side's joints (springing to crown, crown included) and voussoirs in the side's coordinates.
+struct SideRing {
+  std::vector<SideJoint> joints;
+  std::vector<Voussoir> voussoirs;
+};
+
+// The fill's load on the stretch of a side between arc lengths a < b of the line at offset n (the
+// extrados, n = t/2, or the axis, n = 0) that lies over the span (x >= x_min, the side's springing),
+// as a force and its moment about the side's origin: int rho_f g max(0, h_f - y_e) dx. On the axis
+// y_e = y + t / (2 cos theta), integrated as max(0, (h_f - y) cos theta - t/2) per axis length (finite
+// at a vertical springing). The integrand's kink where the fill's level meets y_e is a knot.
+VerticalLoad fill_load(const SideView& side, const FillLoad& fill, double gravity, double thickness, double n,
+                       double x_min, double a, double b, double span) {
+  const double level = fill.height_ratio * span, half_t = 0.5 * thickness, unit_weight = fill.density * gravity;
+  if (!(unit_weight > 0) || !(b > a)) return {};
+  if (face_at(side, n, b).p.x() <= x_min) return {};
+  if (face_at(side, n, a).p.x() < x_min) a = face_at_x(side, n, x_min, a, b, span);
+  // (h_f - y_e) dx/ds: its sign is that of the fill's depth (dx/ds >= 0), its positive part the load.
+  auto excess = [&](double s, Eigen::Vector2d* point) {
+    if (n == 0.0) {
+      const CurvePoint q = side.at(s);
+      if (point) *point = {q.x, q.y};
+      return (level - q.y) * std::cos(q.theta) - half_t;
+    }
+    const FacePoint f = face_at(side, n, s);
+    if (point) *point = f.p;
+    return (level - f.p.y()) * f.dp.x();
+  };
+  std::vector<double> knots;
+  double from = a;
+  auto add_root = [&](double to) {
+    double lo = from, hi = to, f_lo = excess(lo, nullptr);
+    if (f_lo * excess(hi, nullptr) < 0) {
+      for (int it = 0; it < 200 && hi - lo > 1e-15 * span; ++it) {
+        const double mid = 0.5 * (lo + hi), f_mid = excess(mid, nullptr);
+        if ((f_mid < 0) == (f_lo < 0)) lo = mid, f_lo = f_mid; else hi = mid;
+      }
+      knots.push_back(0.5 * (lo + hi));
+    }
+    if (to < b) knots.push_back(to);
+    from = to;
+  };
+  for (double k : side.breaks())
+    if (k > a && k < b) add_root(k);
+  add_root(b);
+  const Eigen::Vector2d load = integral_between_knots<Eigen::Vector2d>(knots, a, b, [&](double s) {
+    Eigen::Vector2d p;
+    const double q = unit_weight * std::max(0.0, excess(s, &p));
+    return Eigen::Vector2d(q, q * p.x());
+  });
+  return {load.x(), load.y()};
+}
+
+// The joints and voussoirs of one side, with their self-weight and fill.
+SideRing make_side(const SideView& side, double thickness, double unit_weight, const std::vector<FillLoad>& fills,
+                   double gravity, const LimitOptions& options, double span) {
+  const double S = side.length(), half_t = 0.5 * thickness, xc = side.crown_x();
+  const int m = (options.joints_count - 1) / 2;  // voussoirs per side
+
+  // The crown joint is vertical through the crown. At a pointed crown the intrados reaches the crown's
+  // vertical before the axis does and the extrados after it: find where.
+  const bool pointed = side.at(S).theta > 1e-12;
+  double s_intrados_crown = S, s_extrados_crown = S;
+  if (pointed) {
+    s_intrados_crown = face_at_x(side, -half_t, xc, 0.0, S, span);
+    double hi = S + thickness;
+    while (face_at(side, half_t, hi).p.x() < xc) hi = S + 2.0 * (hi - S);
+    s_extrados_crown = face_at_x(side, half_t, xc, S, hi, span);
+  }
+
+  auto make_joint = [&](double s_in, double s_ex, double s_axis) {
+    SideJoint h;
+    h.joint.intrados = face_at(side, -half_t, s_in).p;
+    h.joint.extrados = face_at(side, half_t, s_ex).p;
+    h.joint.axis = face_at(side, 0.0, s_axis).p;
+    h.joint.s = side.whole_s(s_axis);
+    h.s_intrados = s_in;
+    h.s_extrados = s_ex;
+    h.s_axis = s_axis;
+    return h;
+  };
+  SideRing out;
+  std::vector<SideJoint>& joints = out.joints;
+  joints.reserve(m + 1);
+  joints.push_back(make_joint(0.0, 0.0, 0.0));  // the springing bed, normal to the axis
+  for (int j = 1; j < m; ++j) {
+    // Both orientations space the joints over the part of the arch whose joints cut it in two: radial
+    // joints over the axis up to where the intrados reaches the crown's vertical, vertical ones over
+    // the intrados.
+    const double s = s_intrados_crown * j / m;
+    if (options.joints == JointOrientation::radial) {
+      joints.push_back(make_joint(s, s, s));
+    } else {
+      const double x = face_at(side, -half_t, s).p.x();
+      joints.push_back(make_joint(s, face_at_x(side, half_t, x, 0.0, s_extrados_crown, span),
+                                  face_at_x(side, 0.0, x, 0.0, S, span)));
+    }
+  }
+  SideJoint crown = make_joint(s_intrados_crown, s_extrados_crown, S);
+  crown.joint.intrados.x() = crown.joint.extrados.x() = crown.joint.axis.x() = xc;  // exactly vertical
+  joints.push_back(crown);
+
+  const double x_min = side.at(0.0).x;  // the springing's axis point: the span starts there
+  out.voussoirs.resize(m);
+  for (int k = 0; k < m; ++k) {
+    const SideJoint &a = joints[k], &b = joints[k + 1];
+    Voussoir& v = out.voussoirs[k];
+    if (options.weight == WeightModel::voussoir) {
+      RegionMoments r;
+      if (a.s_intrados == a.s_extrados && b.s_intrados == b.s_extrados) {  // radial joints: one band
+        r.add_faces<2>(side, {{{-half_t, 1.0}, {half_t, -1.0}}}, a.s_intrados, b.s_intrados);
+      } else {
+        r.add_faces<1>(side, {{{-half_t, 1.0}}}, a.s_intrados, b.s_intrados);
+        r.add_faces<1>(side, {{{half_t, 1.0}}}, b.s_extrados, a.s_extrados);
+      }
+      r.add_segment(b.joint.intrados, b.joint.extrados);
+      r.add_segment(a.joint.extrados, a.joint.intrados);
+      v.weight = unit_weight * r.area;
+      v.centroid = Eigen::Vector2d(r.sx / r.area, r.sy / r.area);
+    } else {
+      // rho g t per length of axis, at the centroid of the voussoir's piece of axis.
+      const Eigen::Vector2d first = gauss_legendre_integral<8>(
+          [&](double s) -> Eigen::Vector2d { return face_at(side, 0.0, s).p; }, a.s_axis, b.s_axis);
+      const double length = b.s_axis - a.s_axis;
+      v.weight = unit_weight * thickness * length;
+      v.centroid = first / length;
+    }
+    // The fills over the voussoir's stretch: of the extrados with the true ring, of the axis with the
+    // axis model (the elastic model's convention).
+    for (const FillLoad& f : fills) {
+      if (options.weight == WeightModel::voussoir)
+        v.fill += fill_load(side, f, gravity, thickness, half_t, x_min, a.s_extrados, b.s_extrados, span);
+      else
+        v.fill += fill_load(side, f, gravity, thickness, 0.0, x_min, a.s_axis, b.s_axis, span);
+    }
+  }
+  return out;
+}
+
+// A joint or a voussoir of one side in the curve's coordinates.
+Joint to_curve(const SideView& side, const Joint& j) {
+  auto flip = [&](const Eigen::Vector2d& p) { return Eigen::Vector2d(side.curve_x(p.x()), p.y()); };
+  return {flip(j.intrados), flip(j.extrados), flip(j.axis), j.s};
+}
+
+Voussoir to_curve(const SideView& side, const Voussoir& v) {
+  Voussoir out = v;
+  out.centroid.x() = side.curve_x(v.centroid.x());
+  out.fill.moment = side.curve_moment(v.fill.force, v.fill.moment);
+  return out;
+}
+
+// The boundaries over the span of each voussoir's stretch (see limit.hpp): its joints' extrados or
+// axis abscissae.
+double stretch_end(const Joint& j, WeightModel w) { return w == WeightModel::voussoir ? j.extrados.x() : j.axis.x(); }
+
+// Adds the point and live loads of `loads` to the ring's voussoirs (at load factor 1).
+void add_live_loads(Ring& ring, const Loads& loads, WeightModel w) {
+  const double L = ring.span;
+  const std::size_t n = ring.voussoirs.size();
+  for (const PointLoad& p : loads.points) {
+    const double x = p.at * L;
+    std::size_t k = 0;
+    while (k + 1 < n && x > stretch_end(ring.joints[k + 1], w)) ++k;
+    ring.voussoirs[k].live += {p.force, p.force * x};
+  }
+  for (const LiveLoad& q : loads.live)
+    for (std::size_t k = 0; k < n; ++k) {
+      const double lo = std::max({stretch_end(ring.joints[k], w), q.from * L, 0.0});
+      const double hi = std::min({stretch_end(ring.joints[k + 1], w), q.to * L, L});
+      if (hi > lo) ring.voussoirs[k].live += {q.intensity * (hi - lo), q.intensity * (hi - lo) * 0.5 * (lo + hi)};
+    }
+}
+
+// The ring of any curve with the self-weight and fills (make_ring's two forms).
+Ring build_ring(const Curve& curve, double thickness, double unit_weight, const std::vector<FillLoad>& fills,
+                double gravity, const LimitOptions& options) {
+  std::string why;
+  if (!options.is_valid(&why)) throw std::invalid_argument(why);
+  if (!std::isfinite(unit_weight) || !(unit_weight >= 0))
+    throw std::invalid_argument(fmt::format("unit_weight: must be finite and >= 0 (N/m^3), got {}", unit_weight));
+  if (!std::isfinite(thickness) || !(thickness > 0) || thickness >= max_thickness(curve))
+    throw std::invalid_argument(fmt::format(
+        "thickness: must be > 0 and less than twice the smallest radius of curvature ({} m), got {} m",
+        max_thickness(curve), thickness));
+  const double L = curve.span();
+  const SideView left_view(curve, false);
+  const SideRing left = make_side(left_view, thickness, unit_weight, fills, gravity, options, L);
+  Ring ring;
+  ring.span = L;
+  const int m = static_cast<int>(left.voussoirs.size());
+  ring.joints.reserve(2 * m + 1);
+  ring.voussoirs.reserve(2 * m);
+  for (const SideJoint& h : left.joints) ring.joints.push_back(h.joint);
+  ring.voussoirs = left.voussoirs;
+  if (curve.extent() == CurveExtent::half) {
+    // The right half: the mirror image of the left one about mid-span.
+    const double S = curve.length();
+    for (int j = m - 1; j >= 0; --j) {
+      const Joint& h = left.joints[j].joint;
+      auto flip = [&](const Eigen::Vector2d& p) { return Eigen::Vector2d(L - p.x(), p.y()); };
+      ring.joints.push_back({flip(h.intrados), flip(h.extrados), flip(h.axis), 2.0 * S - h.s});
+    }
+    for (int k = m - 1; k >= 0; --k) {
+      Voussoir v = left.voussoirs[k];
+      v.centroid.x() = L - v.centroid.x();
+      v.fill.moment = v.fill.force * L - v.fill.moment;
+      ring.voussoirs.push_back(v);
+    }
+    return ring;
+  }
+  const SideView right_view(curve, true);
+  const SideRing right = make_side(right_view, thickness, unit_weight, fills, gravity, options, L);
+  // Both sides end on the crown's vertical; at a kink the two sides' faces meet there only when the
+  // kink is symmetric (else the vertical joint would not cut the arch in two).
+  const Joint a = left.joints.back().joint, b = to_curve(right_view, right.joints.back().joint);
+  const double mismatch = std::max((a.intrados - b.intrados).norm(), (a.extrados - b.extrados).norm());
+  if (mismatch > 1e-7 * L)
+    throw std::invalid_argument(fmt::format(
+        "curve: the crown (s = {} m) is a kink whose two sides are not mirror images: the faces of the two sides "
+        "meet the crown's vertical {} m apart, so no vertical crown joint cuts the arch in two",
+        curve.crown(), mismatch));
+  for (int j = m - 1; j >= 0; --j) ring.joints.push_back(to_curve(right_view, right.joints[j].joint));
+  for (int k = m - 1; k >= 0; --k) ring.voussoirs.push_back(to_curve(right_view, right.voussoirs[k]));
+  return ring;
+}
 
 }  // namespace
 
 const char* to_string(JointOrientation j) { return j == JointOrientation::radial ? "radial" : "vertical"; }
 const char* to_string(WeightModel w) { return w == WeightModel::voussoir ? "voussoir" : "axis"; }
+const char* to_string(Face f) {
+  switch (f) {
+    case Face::intrados: return "intrados";
+    case Face::extrados: return "extrados";
+    case Face::axis: return "axis";
+  }
+  return "unknown";
+}
 
 bool LimitOptions::is_valid(std::string* why) const {
   auto fail = [&](std::string reason) {
@@ -128,133 +434,55 @@ bool LimitOptions::is_valid(std::string* why) const {
                             kMinJointsCount, kMaxJointsCount, joints_count));
   if (!std::isfinite(friction) || friction < 0)
     return fail(fmt::format("friction: must be finite and >= 0 (0: no sliding check), got {}", friction));
-  if (!std::isfinite(point_load.force) || point_load.force < 0)
-    return fail(fmt::format("point_load: must be finite and >= 0 (N/m, downward), got {}", point_load.force));
-  if (!std::isfinite(point_load.position) || point_load.position < 0 || point_load.position > 1)
-    return fail(fmt::format("point_load_at: must lie in [0, 1] (x/L: within the span), got {}", point_load.position));
   return true;
 }
 
-double Ring::total_weight() const {
-  double w = 0;
-  for (const Voussoir& v : voussoirs) w += v.weight;
-  return w;
+namespace {
+template <class F>
+double sum_over(const std::vector<Voussoir>& voussoirs, F f) {
+  double total = 0;
+  for (const Voussoir& v : voussoirs) total += f(v);
+  return total;
+}
+}  // namespace
+
+double Ring::total_weight() const { return sum_over(voussoirs, [](const Voussoir& v) { return v.weight; }); }
+double Ring::total_fill() const { return sum_over(voussoirs, [](const Voussoir& v) { return v.fill.force; }); }
+double Ring::total_dead() const { return total_weight() + total_fill(); }
+double Ring::total_live() const { return sum_over(voussoirs, [](const Voussoir& v) { return v.live.force; }); }
+bool Ring::has_live_load() const {
+  for (const Voussoir& v : voussoirs)
+    if (v.live.force != 0.0 || v.live.moment != 0.0) return true;
+  return false;
 }
 
 Ring make_ring(const Curve& curve, double thickness, double unit_weight, const LimitOptions& options) {
-  std::string why;
-  if (!options.is_valid(&why)) throw std::invalid_argument(why);
-  if (!std::isfinite(unit_weight) || !(unit_weight > 0))
-    throw std::invalid_argument(fmt::format("unit_weight: must be finite and > 0 (N/m^3), got {}", unit_weight));
-  if (!std::isfinite(thickness) || !(thickness > 0) || thickness >= max_thickness(curve))
-    throw std::invalid_argument(fmt::format(
-        "thickness: must be > 0 and less than twice the smallest radius of curvature ({} m), got {} m",
-        max_thickness(curve), thickness));
-  const double L = curve.span(), S = curve.length(), half_t = 0.5 * thickness;
-  const int m = (options.joints_count - 1) / 2;  // voussoirs per half
+  return build_ring(curve, thickness, unit_weight, {}, 0.0, options);
+}
 
-  // The crown joint is vertical at mid-span. At a pointed crown the intrados reaches mid-span before the
-  // axis does and the extrados after it: find where.
-  const bool pointed = curve.at(S).theta > 1e-12;
-  double s_intrados_crown = S, s_extrados_crown = S;
-  if (pointed) {
-    s_intrados_crown = face_at_x(curve, -half_t, 0.5 * L, 0.0, S);
-    double hi = S + thickness;
-    while (face_at(curve, half_t, hi).p.x() < 0.5 * L) hi = S + 2.0 * (hi - S);
-    s_extrados_crown = face_at_x(curve, half_t, 0.5 * L, S, hi);
-  }
-
-  auto make_joint = [&](double s_in, double s_ex, double s_axis) {
-    HalfJoint h;
-    h.joint.intrados = face_at(curve, -half_t, s_in).p;
-    h.joint.extrados = face_at(curve, half_t, s_ex).p;
-    h.joint.s = s_axis;
-    h.s_intrados = s_in;
-    h.s_extrados = s_ex;
-    return h;
-  };
-  std::vector<HalfJoint> half;
-  half.reserve(m + 1);
-  half.push_back(make_joint(0.0, 0.0, 0.0));  // the springing bed, normal to the axis
-  for (int j = 1; j < m; ++j) {
-    // Both orientations space the joints over the part of the arch whose joints cut it in two: radial
-    // joints over the axis up to where the intrados reaches mid-span, vertical ones over the intrados.
-    const double s = s_intrados_crown * j / m;
-    if (options.joints == JointOrientation::radial) {
-      half.push_back(make_joint(s, s, s));
-    } else {
-      const double x = face_at(curve, -half_t, s).p.x();
-      half.push_back(make_joint(s, face_at_x(curve, half_t, x, 0.0, s_extrados_crown), face_at_x(curve, 0.0, x, 0.0, S)));
-    }
-  }
-  HalfJoint crown = make_joint(s_intrados_crown, s_extrados_crown, S);
-  crown.joint.intrados.x() = crown.joint.extrados.x() = 0.5 * L;  // exactly vertical
-  half.push_back(crown);
-
-  // Where the faces' integrands are not smooth: the curve's breakpoints and the crown (sorted).
-  std::vector<double> breaks = curve.breakpoints();
-  breaks.push_back(S);
-  std::vector<Voussoir> left(m);
-  for (int k = 0; k < m; ++k) {
-    const HalfJoint &a = half[k], &b = half[k + 1];
-    if (options.weight == WeightModel::voussoir) {
-      RegionMoments r;
-      if (a.s_intrados == a.s_extrados && b.s_intrados == b.s_extrados) {  // radial joints: one band
-        r.add_faces<2>(curve, breaks, {{{-half_t, 1.0}, {half_t, -1.0}}}, a.s_intrados, b.s_intrados);
-      } else {
-        r.add_faces<1>(curve, breaks, {{{-half_t, 1.0}}}, a.s_intrados, b.s_intrados);
-        r.add_faces<1>(curve, breaks, {{{half_t, 1.0}}}, b.s_extrados, a.s_extrados);
-      }
-      r.add_segment(b.joint.intrados, b.joint.extrados);
-      r.add_segment(a.joint.extrados, a.joint.intrados);
-      left[k] = {unit_weight * r.area, Eigen::Vector2d(r.sx / r.area, r.sy / r.area)};
-    } else {
-      // rho g t per length of axis, at the centroid of the voussoir's piece of axis.
-      const Eigen::Vector2d first = gauss_legendre_integral<8>(
-          [&](double s) -> Eigen::Vector2d { return face_at(curve, 0.0, s).p; }, a.joint.s, b.joint.s);
-      const double length = b.joint.s - a.joint.s;
-      left[k] = {unit_weight * thickness * length, first / length};
-    }
-  }
-
-  Ring ring;
-  ring.span = L;
-  ring.joints.reserve(2 * m + 1);
-  for (const HalfJoint& h : half) ring.joints.push_back(h.joint);
-  for (int j = m - 1; j >= 0; --j) {
-    const Joint& h = half[j].joint;
-    ring.joints.push_back({Eigen::Vector2d(L - h.intrados.x(), h.intrados.y()),
-                           Eigen::Vector2d(L - h.extrados.x(), h.extrados.y()), 2.0 * S - h.s});
-  }
-  ring.voussoirs = left;
-  for (int k = m - 1; k >= 0; --k)
-    ring.voussoirs.push_back({left[k].weight, Eigen::Vector2d(L - left[k].centroid.x(), left[k].centroid.y())});
+Ring make_ring(const Scene& scene, const LimitOptions& options) {
+  if (!scene.curve) throw std::invalid_argument("curve: a scene needs a generator curve");
+  const Material& m = scene.material;
+  Ring ring = build_ring(*scene.curve, scene.thickness, m.density * m.gravity, scene.loads.fills, m.gravity, options);
+  add_live_loads(ring, scene.loads, options.weight);
+  const int last = static_cast<int>(ring.joints.size()) - 1;
+  if (scene.left.kind == SupportKind::pinned) ring.pins.push_back(0);
+  if (scene.crown_hinge) ring.pins.push_back(ring.crown_joint());
+  if (scene.right.kind == SupportKind::pinned) ring.pins.push_back(last);
   return ring;
 }
 
 namespace limit_detail {
 
-int loaded_voussoir(const Ring& ring, const CollapseLoad& load) {
-  if (!load.present()) return -1;
-  const double x = load.position * ring.span;
-  for (std::size_t k = 0; k + 1 < ring.joints.size(); ++k)
-    if (x <= ring.joints[k + 1].extrados.x()) return static_cast<int>(k);
-  return static_cast<int>(ring.voussoirs.size()) - 1;
-}
-
-LoadsLeftOfJoints loads_left_of_joints(const Ring& ring, const CollapseLoad& load) {
+LoadsLeftOfJoints loads_left_of_joints(const Ring& ring) {
   const std::size_t n = ring.joints.size();
-  LoadsLeftOfJoints out{std::vector<double>(n, 0.0), std::vector<double>(n, 0.0), std::vector<double>(n, 0.0),
-                        std::vector<double>(n, 0.0)};
-  const int loaded = loaded_voussoir(ring, load);
+  LoadsLeftOfJoints out{std::vector<VerticalLoad>(n), std::vector<VerticalLoad>(n)};
   for (std::size_t j = 1; j < n; ++j) {
     const Voussoir& v = ring.voussoirs[j - 1];
-    out.dead[j] = out.dead[j - 1] + v.weight;
-    out.dead_moment[j] = out.dead_moment[j - 1] + v.weight * v.centroid.x();
-    if (loaded >= 0 && static_cast<int>(j) > loaded) {
-      out.live[j] = load.force;
-      out.live_moment[j] = load.force * load.position * ring.span;
-    }
+    out.dead[j] = out.dead[j - 1];
+    out.dead[j] += v.dead();
+    out.live[j] = out.live[j - 1];
+    out.live[j] += v.live;
   }
   return out;
 }
