@@ -54,6 +54,7 @@ struct SceneParameters {
       right_rotation;
   const char* left_support = "clamped";
   const char* right_support = "clamped";
+  const char* section = "elastic";
   bool crown_hinge = false;
   std::string loads_file;
 };
@@ -113,6 +114,7 @@ struct SceneOptions {
   bool plane_strain = false;
   std::shared_ptr<const Curve> points;  // read once from curve_file
   std::string supports = "clamped", left_support, right_support;
+  std::string section = "elastic";
   bool crown_hinge = false;
   std::string loads_file;
   Loads file_loads;  // read once from loads_file
@@ -209,6 +211,10 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--supports", o.supports, "both springings: clamped or pinned")->capture_default_str();
   cmd.add_option("--left-support", o.left_support, "left springing: clamped or pinned (default: --supports)");
   cmd.add_option("--right-support", o.right_support, "right springing: clamped or pinned (default: --supports)");
+  cmd.add_option("--section", o.section,
+                 "elastic (linear) or no-tension (cracks where the resultant leaves the kern; Newton shooting; a "
+                 "sweep of support movements is traced in order)")
+      ->capture_default_str();
   cmd.add_flag("--crown-hinge", o.crown_hinge, "a hinge at the crown (M = 0): the three-hinged arch with --supports pinned");
   cmd.add_option("--loads-file", o.loads_file,
                  "CSV of loads, header kind,value,a,b: point,P,a, | live,q,a,b | fill,rho_f,h_f/L, (README: Loads)");
@@ -216,6 +222,8 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
 
 const std::map<std::string, SupportKind> kSupportKinds = {{"clamped", SupportKind::clamped},
                                                           {"pinned", SupportKind::pinned}};
+const std::map<std::string, SectionKind> kSectionKinds = {{"elastic", SectionKind::elastic},
+                                                          {"no-tension", SectionKind::no_tension}};
 
 // "rise_ratio: rule" from the library becomes "--rise-ratio: rule"; the scene's lengths are given
 // as ratios of the span on the command line, so "thickness: ..." names --thickness-ratio.
@@ -288,6 +296,7 @@ class ScenePlan {
     right_kind_ = o.right_support.empty() ? lookup(kSupportKinds, o.supports, "--supports")
                                           : lookup(kSupportKinds, o.right_support, "--right-support");
     if (!o.left_support.empty() || !o.right_support.empty()) lookup(kSupportKinds, o.supports, "--supports");
+    section_ = lookup(kSectionKinds, o.section, "--section");
     for (const auto& [flag, kind] : {std::pair{"--left-rotation", left_kind_}, {"--right-rotation", right_kind_}})
       if (kind == SupportKind::pinned && cmd.count(flag) > 0)
         throw UsageError(fmt::format("{}: does not apply to a pinned springing (it turns freely: its rotation is a "
@@ -359,6 +368,7 @@ class ScenePlan {
     p.right_support = right_kind_ == SupportKind::clamped ? "clamped" : "pinned";
     p.crown_hinge = options_.crown_hinge;
     p.loads_file = options_.loads_file;
+    p.section = section_ == SectionKind::elastic ? "elastic" : "no-tension";
     return p;
   }
 
@@ -380,6 +390,7 @@ class ScenePlan {
       scene.left = {left_kind_, p.left_spread_ratio * p.span, p.left_settlement_ratio * p.span, p.left_rotation};
       scene.right = {right_kind_, p.right_spread_ratio * p.span, p.right_settlement_ratio * p.span, p.right_rotation};
       scene.crown_hinge = options_.crown_hinge;
+      scene.section = section_;
       scene.loads = options_.file_loads;
       if (!std::isnan(p.point_load)) scene.loads.points.push_back({p.point_load, p.point_load_at});
       if (!std::isnan(p.live_load)) scene.loads.live.push_back({p.live_load, p.live_load_from, p.live_load_to});
@@ -421,7 +432,11 @@ class ScenePlan {
   const SceneOptions& options_;
   const CurveFamily* family_ = nullptr;
   SupportKind left_kind_ = SupportKind::clamped, right_kind_ = SupportKind::clamped;
+  SectionKind section_ = SectionKind::elastic;
   std::size_t size_ = 1;
+
+ public:
+  bool no_tension() const { return section_ == SectionKind::no_tension; }
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -448,6 +463,7 @@ const std::vector<ColumnDoc> kColumnDocs = {
     {"gravity", "m/s^2", "gravitational acceleration g"},
     {"shear_coefficient", "", "Timoshenko shear coefficient k"},
     {"plane_strain", "", "true: plane strain, E / (1 - nu^2); false: plane stress"},
+    {"section", "", "elastic (linear) or no-tension (cracks beyond the kern)"},
     {"left_support", "", "left springing: clamped (rotation given) or pinned (M = 0)"},
     {"right_support", "", "right springing: clamped or pinned"},
     {"crown_hinge", "", "true: a hinge at the crown (M = 0 there)"},
@@ -486,6 +502,7 @@ const std::vector<ColumnDoc> kColumnDocs = {
     {"steps", "", "CVODE steps, all solves of the row"},
     {"rhs_evaluations", "", "CVODE right-hand-side evaluations"},
     {"segments", "", "shooting segments (arcs for the closed form)"},
+    {"newton_iterations", "", "no-tension section: Newton iterations, all solves of the row (0 for the elastic section)"},
     {"condition_estimate", "", "Skeel condition number of the boundary-value problem"},
     {"error_estimate", "", "estimated relative error of the row's numbers (thrust eccentricities in units of the kern)"},
     {"boundary_residual", "", "largest residual of the six boundary conditions (and a hinge's M = 0), scaled units"},
@@ -509,6 +526,8 @@ const std::vector<ColumnDoc> kColumnDocs = {
     {"thrust_eccentricity", "%", "e = 600 M / (N t): offset of the compression in per cent of the kern half-width t/6; < 0 towards the extrados"},
     {"thrust_x", "m", "where the resultant crosses the section or joint (line of thrust), horizontal"},
     {"thrust_y", "m", "where the resultant crosses the section (line of thrust), vertical"},
+    {"compressed_depth", "", "no-tension section: the compressed depth c over t (1 while the resultant is in the kern; 0 at a hinge); empty for the elastic section"},
+    {"cracked", "", "no-tension section: true where the resultant lies beyond the kern (the section is cracked); empty for the elastic section"},
     {"warning", "", "tension, outside_section (|e| > 300 %), outside_kern (|e| > 100 %), no_normal_force, or empty"},
     {"reference_method", "", "check: what the row is compared with"},
     {"reference_status", "", "check: the reference's own status"},
@@ -552,7 +571,7 @@ const ColumnDoc* find_column_doc(std::string_view name) {
 const std::vector<std::string> kSceneColumns = {
     "scene", "curve", "eccentricity", "rise_ratio", "haunch_angle", "crown_angle", "span", "thickness_ratio",
     "support_displacement_ratio", "youngs_modulus", "poisson_ratio", "density", "gravity", "shear_coefficient",
-    "plane_strain", "left_support", "right_support", "crown_hinge", "left_spread_ratio", "right_spread_ratio",
+    "plane_strain", "section", "left_support", "right_support", "crown_hinge", "left_spread_ratio", "right_spread_ratio",
     "left_settlement_ratio", "right_settlement_ratio", "left_rotation", "right_rotation", "point_load",
     "point_load_at", "live_load", "live_load_from", "live_load_to", "fill_density", "fill_height_ratio", "loads_file"};
 
@@ -691,7 +710,7 @@ void add_scene_columns(CsvRow& row, const SceneParameters& p, const Curve* curve
   row.add(p.span).add(p.thickness_ratio).add(p.support_displacement_ratio);
   row.add(p.youngs_modulus).add(p.poisson_ratio).add(p.density).add(p.gravity).add(p.shear_coefficient);
   row.add_bool(p.plane_strain);
-  row.add(p.left_support).add(p.right_support).add_bool(p.crown_hinge);
+  row.add(p.section).add(p.left_support).add(p.right_support).add_bool(p.crown_hinge);
   for (double v : {p.left_spread_ratio, p.right_spread_ratio, p.left_settlement_ratio, p.right_settlement_ratio,
                    p.left_rotation, p.right_rotation, p.point_load, p.point_load_at, p.live_load, p.live_load_from,
                    p.live_load_to, p.fill_density, p.fill_height_ratio})
@@ -1023,7 +1042,7 @@ const Columns kThrustColumns(
     {"method", "integrator", "rtol", "status", "domain", "H", "V", "H_over_V", "H_left", "V_left", "M_left", "H_right",
      "V_right", "M_right", "max_thrust_eccentricity",
      "max_thrust_eccentricity_at", "thrust_in_kern", "thrust_in_section", "steps", "rhs_evaluations", "segments",
-     "condition_estimate", "error_estimate", "boundary_residual", "equilibrium_residual", "message"},
+     "newton_iterations", "condition_estimate", "error_estimate", "boundary_residual", "equilibrium_residual", "message"},
     // The thrust line's summary is asked for by name (or --all-columns): it samples the whole field,
     // about 50 times the cost of the reactions in closed form, which a sweep of 10^6 scenes would feel.
     {"method", "status", "domain", "H", "V", "H_over_V", "H_left", "V_left", "M_left", "H_right", "V_right", "M_right",
@@ -1042,6 +1061,9 @@ int run_thrust(SceneOptions& so, const CLI::App& cmd, SolverSweep sweep, const C
   // The summary prints eccentricities: their accuracy must be part of the error estimate.
   if (summary)
     for (Options& o : sweep.combinations) o.stations = kSummaryStations;
+  // No-tension scenes are traced in order, each from the previous one (continuation): one thread.
+  if (plan.no_tension()) threads = 1;
+  std::vector<Solution> previous(sweep.combinations.size());
   RowWriter writer(out);
   writer.write(columns.header());
   const bool all_ok = for_each_scene(
@@ -1049,9 +1071,11 @@ int run_thrust(SceneOptions& so, const CLI::App& cmd, SolverSweep sweep, const C
       [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
         bool ok = true;
         std::string text;
-        for (const Options& o : sweep.combinations) {
+        for (std::size_t c = 0; c < sweep.combinations.size(); ++c) {
+          const Options& o = sweep.combinations[c];
           CsvRow row(columns.keep());
-          const Solution sol = solve(scene, o);
+          const Solution sol = solve(scene, o, plan.no_tension() ? &previous[c] : nullptr);
+          if (plan.no_tension() && sol.field) previous[c] = sol;
           const ThrustLineSummary line = summary ? summarize_thrust_line(sol) : ThrustLineSummary{};
           add_scene_columns(row, p, scene.curve.get());
           row.add(to_string(sol.method)).add(integrator_of(sol.method, o)).add(o.rtol);
@@ -1063,7 +1087,8 @@ int run_thrust(SceneOptions& so, const CLI::App& cmd, SolverSweep sweep, const C
           if (line.ok) row.add_bool(line.in_kern).add_bool(line.in_section);
           else row.add(std::string_view{}).add(std::string_view{});
           const Diagnostics& d = sol.diagnostics;
-          row.add(d.steps).add(d.rhs_evaluations).add(d.segments).add(d.condition_estimate).add(d.error_estimate);
+          row.add(d.steps).add(d.rhs_evaluations).add(d.segments).add(d.newton_iterations);
+          row.add(d.condition_estimate).add(d.error_estimate);
           row.add(d.boundary_residual).add(d.equilibrium_residual).add(sol.message);
           text += row.take();
           ok = ok && sol.ok();
@@ -1091,9 +1116,10 @@ const Columns kProfileColumns(
     {"method", "integrator", "rtol", "status", "H_over_V", "error_estimate", "message", "s", "x", "y", "theta",
      "intrados_x", "intrados_y",
      "extrados_x", "extrados_y", "Ux", "Uy", "psi", "N", "shear_force", "M", "thrust_eccentricity", "thrust_x",
-     "thrust_y", "warning"},
+     "thrust_y", "compressed_depth", "cracked", "warning"},
     {"status", "message", "s", "x", "y", "theta", "intrados_x", "intrados_y", "extrados_x", "extrados_y", "Ux", "Uy",
-     "psi", "N", "shear_force", "M", "thrust_eccentricity", "thrust_x", "thrust_y", "warning"});
+     "psi", "N", "shear_force", "M", "thrust_eccentricity", "thrust_x", "thrust_y", "compressed_depth", "cracked",
+     "warning"});
 constexpr int kProfilePiece = 4096;  // stations sampled and written at a time
 
 int run_profile(SceneOptions& so, const CLI::App& cmd, SolverSweep sweep, int stations, const ColumnText& ct,
@@ -1109,14 +1135,19 @@ int run_profile(SceneOptions& so, const CLI::App& cmd, SolverSweep sweep, int st
   // A scene's rows wait in the reorder window while other threads work: beyond one piece of stations
   // per scene, scenes are solved one after another instead, to keep memory bounded.
   if (stations * sweep.combinations.size() > static_cast<std::size_t>(kProfilePiece)) threads = 1;
+  // No-tension scenes are traced in order, each from the previous one (continuation): one thread.
+  if (plan.no_tension()) threads = 1;
+  std::vector<Solution> previous(sweep.combinations.size());
   RowWriter writer(out);
   writer.write(columns.header());
   const bool all_ok = for_each_scene(
       plan, writer, threads,
       [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
         bool ok = true;
-        for (const Options& o : sweep.combinations) {
-          const Solution sol = solve(scene, o);
+        for (std::size_t c = 0; c < sweep.combinations.size(); ++c) {
+          const Options& o = sweep.combinations[c];
+          const Solution sol = solve(scene, o, plan.no_tension() ? &previous[c] : nullptr);
+          if (plan.no_tension() && sol.field) previous[c] = sol;
           const std::string integrator(integrator_of(sol.method, o));
           if (!sol.field) {  // unsolved: one row that says so, no numbers
             emit(sparse_row(columns, p, scene.curve.get(),
@@ -1145,7 +1176,11 @@ int run_profile(SceneOptions& so, const CLI::App& cmd, SolverSweep sweep, int st
               row.add(st.s).add(st.x).add(st.y).add(st.theta);
               row.add(faces.intrados.x).add(faces.intrados.y).add(faces.extrados.x).add(faces.extrados.y);
               row.add(st.Ux).add(st.Uy).add(st.psi);
-              row.add(st.N).add(st.V).add(st.M).add(st.e).add(st.thrust_x).add(st.thrust_y).add(section_warning(st));
+              row.add(st.N).add(st.V).add(st.M).add(st.e).add(st.thrust_x).add(st.thrust_y);
+              add_parameter(row, st.compressed_depth);
+              if (std::isnan(st.compressed_depth)) row.add(std::string_view{});
+              else row.add_bool(st.cracked);
+              row.add(section_warning(st));
               text += row.take_to_mark();
             }
             emit(text);

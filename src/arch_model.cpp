@@ -253,6 +253,11 @@ ArchState ArchModel::to_physical(double s, const StateVector& y, bool mirrored) 
     return st;
   }
   st.e = 600.0 * st.M / (st.N * t);
+  if (scene_.section == SectionKind::no_tension) {
+    const SectionStrain ss = section_strain(SectionKind::no_tension, st.N / scales_.force, st.M / scales_.moment, t / L);
+    st.compressed_depth = ss.compressed_depth;
+    st.cracked = ss.cracked;
+  }
   // F acting at offset a along the extrados normal n = (-sn, c) has moment -a N about the axis point,
   // so the resultant crosses the section at a = -M / N.
   const PlanePoint thrust = along_normal(p, -st.M / st.N);

@@ -165,6 +165,7 @@ void finish_solution(Solution& sol, const BvpSolution& bvp, std::shared_ptr<cons
   d.boundary_residual = model.boundary_residual(bvp.y0, bvp.yS, bvp.hinge_moment);
   d.equilibrium_residual = model.equilibrium_residual(bvp.y0, bvp.yS);
   sol.reactions = model.reactions(bvp.y0, bvp.yS);
+  sol.springing_state = bvp.y0;
   sol.H = sol.reactions.H_left;
   sol.V = sol.reactions.V_left;
   sol.H_over_V = sol.H / sol.V;

@@ -438,8 +438,7 @@ struct CvodeIntegrator::Impl {
     const int n = self->columns;
     Eigen::Map<const Matrix> Y(N_VGetArrayPointer(y), kStateSize, n);
     Eigen::Map<Matrix> dY(N_VGetArrayPointer(ydot), kStateSize, n);
-    self->system.rhs(self->inside(s), Y, dY);
-    return 0;
+    return self->system.rhs(self->inside(s), Y, dY) ? 0 : 1;  // 1: recoverable, CVODE tries a smaller step
   }
 
   // The Jacobian's one block (the block matrix type above stores only that).

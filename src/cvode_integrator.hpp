@@ -43,7 +43,9 @@ using OdeMatrix = Eigen::Matrix<double, kStateSize, Eigen::Dynamic>;
 class OdeSystem {
  public:
   virtual ~OdeSystem() = default;
-  virtual void rhs(double s, const Eigen::Ref<const OdeMatrix>& Y, Eigen::Ref<OdeMatrix> dY) const = 0;
+  // false: Y lies outside the system's domain (a no-tension section whose resultant left it): CVODE
+  // retries a smaller step, and reports CV_REPTD_RHSFUNC_ERR or CV_RHSFUNC_FAIL if it cannot.
+  virtual bool rhs(double s, const Eigen::Ref<const OdeMatrix>& Y, Eigen::Ref<OdeMatrix> dY) const = 0;
   virtual SystemMatrix jacobian_block(double s, const Eigen::Ref<const OdeMatrix>& Y) const = 0;
   // Interior points where f is not smooth, ascending: integration restarts there.
   virtual const std::vector<double>& breakpoints() const = 0;

@@ -27,10 +27,11 @@ std::string failure_message(const IntegrationError& e, const ArchModel& model, s
 class ArchSystem final : public OdeSystem {
  public:
   explicit ArchSystem(const ArchModel& model) : model_(model) {}
-  void rhs(double s, const Eigen::Ref<const OdeMatrix>& Y, Eigen::Ref<OdeMatrix> dY) const override {
+  bool rhs(double s, const Eigen::Ref<const OdeMatrix>& Y, Eigen::Ref<OdeMatrix> dY) const override {
     const SystemMatrix A = model_.system_matrix(model_.theta(s));
     dY.noalias() = A * Y;
     dY(kFy, Y.cols() - 1) += model_.load(s);
+    return true;
   }
   SystemMatrix jacobian_block(double s, const Eigen::Ref<const OdeMatrix>&) const override {
     return model_.system_matrix(model_.theta(s));

@@ -31,6 +31,8 @@ const char* to_string(Status s) {
     case Status::ill_conditioned: return "ill_conditioned";
     case Status::tolerance_not_met: return "tolerance_not_met";
     case Status::unverified: return "unverified";
+    case Status::not_converged: return "not_converged";
+    case Status::inadmissible: return "inadmissible";
   }
   return "?";
 }

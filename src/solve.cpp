@@ -4,12 +4,15 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <tuple>
+#include <vector>
 
 #include <Eigen/LU>
 #include <fmt/format.h>
 
 #include "bvp.hpp"
 #include "ogive/closed_form.hpp"
+#include "ogive/no_tension.hpp"
 #include "ogive/quadrature.hpp"
 #include "ogive/shooting.hpp"
 
@@ -123,10 +126,179 @@ Solution solve_with(const std::shared_ptr<const ArchModel>& model, const Options
 
 }  // namespace
 
-Solution solve(const Scene& scene, const Options& options) {
+namespace {
+
+// Whether two scenes differ at most in their supports' movements (the continuation's path).
+bool same_but_movements(const Scene& a, const Scene& b) {
+  auto same_support = [](const Support& x, const Support& y) { return x.kind == y.kind; };
+  auto same_loads = [](const Loads& x, const Loads& y) {
+    if (x.points.size() != y.points.size() || x.live.size() != y.live.size() || x.fills.size() != y.fills.size())
+      return false;
+    for (std::size_t i = 0; i < x.points.size(); ++i)
+      if (x.points[i].force != y.points[i].force || x.points[i].at != y.points[i].at) return false;
+    for (std::size_t i = 0; i < x.live.size(); ++i)
+      if (x.live[i].intensity != y.live[i].intensity || x.live[i].from != y.live[i].from || x.live[i].to != y.live[i].to)
+        return false;
+    for (std::size_t i = 0; i < x.fills.size(); ++i)
+      if (x.fills[i].density != y.fills[i].density || x.fills[i].height_ratio != y.fills[i].height_ratio) return false;
+    return true;
+  };
+  // Curves are rebuilt for every scene of a sweep: the same curve has the same family and lengths.
+  const bool same_curve = a.curve == b.curve ||
+                          (a.curve->family() == b.curve->family() && a.curve->extent() == b.curve->extent() &&
+                           a.curve->span() == b.curve->span() && a.curve->length() == b.curve->length() &&
+                           a.curve->rise() == b.curve->rise() && a.curve->max_curvature() == b.curve->max_curvature());
+  const Material &m = a.material, &n = b.material;
+  return same_curve && a.thickness == b.thickness && a.section == b.section && a.crown_hinge == b.crown_hinge &&
+         m.youngs_modulus == n.youngs_modulus && m.poisson_ratio == n.poisson_ratio && m.density == n.density &&
+         m.gravity == n.gravity && m.shear_coefficient == n.shear_coefficient && m.plane_strain == n.plane_strain &&
+         same_support(a.left, b.left) && same_support(a.right, b.right) && same_loads(a.loads, b.loads) &&
+         a.symmetric() == b.symmetric();
+}
+
+// The scene with movements (1 - lambda) of `from`'s plus lambda of `to`'s.
+Scene between(const Scene& from, const Scene& to, double lambda) {
+  Scene s = to;
+  auto mix = [lambda](double a, double b) { return lambda == 1 ? b : (1 - lambda) * a + lambda * b; };
+  for (auto [out, a, b] : {std::tuple{&s.left, &from.left, &to.left}, std::tuple{&s.right, &from.right, &to.right}}) {
+    out->spread = mix(a->spread, b->spread);
+    out->settlement = mix(a->settlement, b->settlement);
+    out->rotation = mix(a->rotation, b->rotation);
+  }
+  return s;
+}
+
+// One no-tension solve, raw (no verification), from the given guesses; the linear solution is the last.
+Solution no_tension_once(const Scene& scene, const Options& options, int segments, std::vector<StateVector> guesses) {
+  auto model = std::make_shared<const ArchModel>(scene, options.whole_arch);
+  Scene elastic = scene;
+  elastic.section = SectionKind::elastic;
+  Options linear = options;
+  linear.method = Method::automatic;
+  const Solution lin = solve(elastic, linear);
+  if (lin.field) guesses.push_back(lin.springing_state);
+  return solve_no_tension(model, options, segments, guesses);
+}
+
+// The no-tension scene at its movements, traced from `from` (solved, with springing state y) in steps
+// that double after a success and halve after a failure. The raw solve at the target, or the last failure.
+Solution trace_movements(const Scene& from, StateVector y, const Scene& to, const Options& options, int segments,
+                         int& newton_iterations) {
+  double lambda = 0, step = 1;
+  Solution last;
+  while (lambda < 1) {
+    const double next = std::min(1.0, lambda + step);
+    last = no_tension_once(between(from, to, next), options, segments, {y});
+    newton_iterations += last.diagnostics.newton_iterations;
+    if (last.status == Status::success) {
+      lambda = next;
+      y = last.springing_state;
+      step = std::min(1.0, 2 * step);
+    } else {
+      step /= 2;
+      if (step < 1e-6) return last;
+    }
+  }
+  return last;
+}
+
+Solution solve_no_tension_scene(const Scene& scene, const Options& options, const Solution* previous) {
+  if (options.method == Method::closed_form || options.method == Method::quadrature) {
+    Solution sol;
+    sol.method = options.method;
+    sol.model = std::make_shared<const ArchModel>(scene, options.whole_arch);
+    sol.status = Status::not_applicable;
+    sol.message = "the no-tension section is solved by Newton shooting (shooting, multiple-shooting or auto)";
+    return sol;
+  }
+  const bool continues = previous && previous->field && previous->model &&
+                         same_but_movements(previous->model->scene(), scene) &&
+                         previous->model->half() == ArchModel(scene, options.whole_arch).half();
+  // (segments, the factor on rtol given to the solver): auto tries single shooting, then 8 segments, then
+  // 8 segments with CVODE 10 times tighter (a profile through hinges needs it); judged against the rtol
+  // asked, always.
+  std::vector<std::pair<int, double>> tries;
+  if (options.method == Method::shooting) tries = {{1, 1.0}};
+  else if (options.method == Method::multiple_shooting) tries = {{options.segments, 1.0}};
+  else tries = {{1, 1.0}, {8, 1.0}, {8, 0.1}};
+  Solution sol;
+  int iterations = 0;
+  Diagnostics spent;
+  for (auto [segments, factor] : tries) {
+    Options raw = options;
+    raw.verify = false;
+    raw.rtol = std::max(options.rtol * factor, 1e-14);
+    std::vector<StateVector> guesses;
+    if (continues) guesses.push_back(previous->springing_state);
+    Solution coarse = no_tension_once(scene, raw, segments, guesses);
+    iterations += coarse.diagnostics.newton_iterations;
+    if (coarse.status == Status::not_converged || coarse.status == Status::integrator_failure) {
+      // Trace the movements from the previous scene's, or from none.
+      Scene from = scene;
+      StateVector y;
+      bool have_start = false;
+      if (continues) {
+        from = previous->model->scene();
+        y = previous->springing_state;
+        have_start = true;
+      } else {
+        from = between(scene, scene, 0);
+        from.left.spread = from.left.settlement = from.left.rotation = 0;
+        from.right.spread = from.right.settlement = from.right.rotation = 0;
+        const Solution start = no_tension_once(from, raw, segments, {});
+        iterations += start.diagnostics.newton_iterations;
+        if (start.status == Status::success) {
+          y = start.springing_state;
+          have_start = true;
+        } else {
+          coarse = start;
+        }
+      }
+      if (have_start) coarse = trace_movements(from, y, scene, raw, segments, iterations);
+    }
+    add_work(spent, coarse.diagnostics);
+    if (coarse.status != Status::success) {
+      sol = coarse;
+      continue;
+    }
+    // Verified as every CVODE solve: again 16 times tighter, from the coarse solution.
+    if (options.verify && verifiable(raw)) {
+      Options fine = verifying_options(raw);
+      fine.verify = false;
+      sol = no_tension_once(scene, fine, segments, {coarse.springing_state});
+      iterations += sol.diagnostics.newton_iterations;
+      add_work(spent, sol.diagnostics);
+      if (sol.status == Status::success) {
+        if (options.stations > 0) {
+          sample_profile(coarse, std::min(options.stations, kVerificationStations));
+          sample_profile(sol, std::min(options.stations, kVerificationStations));
+        }
+        sol.diagnostics.error_estimate = solution_difference(coarse, sol);
+      }
+    } else {
+      sol = coarse;
+      if (options.verify) sol.message = "rtol below what a 16 times tighter CVODE solve can verify";
+    }
+    sol.diagnostics.steps = spent.steps;
+    sol.diagnostics.rhs_evaluations = spent.rhs_evaluations;
+    sol.diagnostics.error_test_failures = spent.error_test_failures;
+    sol.diagnostics.jacobian_evaluations = spent.jacobian_evaluations;
+    judge_solution(sol, options.rtol);
+    if (sol.field && options.stations > 0 && static_cast<int>(sol.profile.size()) != options.stations)
+      sample_profile(sol, options.stations);
+    if (sol.status == Status::success) break;
+  }
+  sol.diagnostics.newton_iterations = iterations;
+  return sol;
+}
+
+}  // namespace
+
+Solution solve(const Scene& scene, const Options& options, const Solution* previous) {
   scene.validate();
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
+  if (scene.section == SectionKind::no_tension) return solve_no_tension_scene(scene, options, previous);
   auto model = std::make_shared<const ArchModel>(scene, options.whole_arch);
   switch (options.method) {
     case Method::closed_form: return solve_with(model, options, Method::closed_form, 0, options.rtol);

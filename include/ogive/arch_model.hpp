@@ -24,6 +24,7 @@
 // A point load P at s_P makes Fy jump by P / (w L): Fy(s_P+) = Fy(s_P-) + P~.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -83,6 +84,10 @@ struct ArchState {
                                  // edge (t/6), 300 at the section's face; NaN where N = 0
   double thrust_x = 0, thrust_y = 0;  // m, where the resultant crosses the section (the thrust line);
                                       // NaN where N = 0
+  // No-tension section (section.hpp): the compressed depth over t (1 in the kern) and whether the
+  // section is cracked (the resultant beyond the kern); NaN and false for the elastic section.
+  double compressed_depth = std::numeric_limits<double>::quiet_NaN();
+  bool cracked = false;
 };
 
 class ArchModel {

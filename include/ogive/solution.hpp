@@ -42,6 +42,10 @@ enum class Status {
   tolerance_not_met,   // solved, but the error estimate, or the boundary or equilibrium residual, exceeds rtol
   unverified,          // solved by CVODE without an error estimate: Options::verify was off, or rtol lies
                        // below what a second, 16 times tighter CVODE solve can reach (kCvodeRtolFloor)
+  not_converged,       // no-tension section: Newton did not reach the boundary conditions (the iterations
+                       // are in Diagnostics::newton_iterations, the message says where it stopped)
+  inadmissible,        // no-tension section: no state keeps the resultant inside every section (the arch
+                       // cannot stand as a no-tension arch: too thin for its loads)
 };
 
 // The one definition of "within tolerance", used by the status, `auto`, `check`, the stability map and
@@ -92,6 +96,7 @@ struct Diagnostics {
   std::int64_t error_test_failures = 0;  // CVODE local error test failures
   std::int64_t jacobian_evaluations = 0; // CVODE Jacobian evaluations (BDF)
   int segments = 0;                      // shooting segments used (arcs for the closed form, panels for the quadrature)
+  int newton_iterations = 0;             // no-tension section: Newton iterations, all solves of the row
   // Skeel's condition number cond(Q) = || |Q^-1| |Q| ||_inf of the boundary-value matrix Q of the
   // scaled problem in its m unknowns (the springing state's three unknown components, and psi's jump at
   // a hinge inside the domain): Q = B_end Phi(S) U without a hinge. Invariant to the scaling of its rows. Every method reports the condition
@@ -138,6 +143,9 @@ struct Solution {
 
   std::shared_ptr<const ArchModel> model;
   std::shared_ptr<const StateField> field;
+  // The scaled state at the left springing (before a point load there), when a field exists: what a
+  // neighbouring scene's nonlinear solve starts from (continuation).
+  StateVector springing_state = StateVector::Constant(std::numeric_limits<double>::quiet_NaN());
 };
 
 

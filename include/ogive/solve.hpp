@@ -6,7 +6,9 @@
 // Options::whole_arch, else the whole), runs the method asked for or, for Method::automatic, the
 // smallest that meets rtol (the closed form where it applies, the quadrature method, then verified
 // shooting with 1, 2, 4 ... 64 segments and tighter CVODE tolerances), verifies CVODE solves by a 16
-// times tighter one, and judges every solution against rtol (within_tolerance).
+// times tighter one, and judges every solution against rtol (within_tolerance). A no-tension scene is
+// solved by Newton shooting (no_tension.hpp): single shooting for auto, multiple shooting with 8
+// segments if that is not verified; the closed form and the quadrature do not apply.
 #pragma once
 
 #include "ogive/arch_model.hpp"
@@ -15,6 +17,11 @@
 
 namespace ogive {
 
-Solution solve(const Scene& scene, const Options& options = {});
+// `previous`: a solved neighbouring scene, for the no-tension section (Scene::section): its springing state
+// is Newton's first guess, and when Newton fails from it the support movements are traced from the
+// previous scene's to this one's in steps that halve until each converges (continuation; the other
+// fields of the two scenes must be equal for the tracing, else it starts from no movement). Ignored for
+// the elastic section, whose solution is unique and direct.
+Solution solve(const Scene& scene, const Options& options = {}, const Solution* previous = nullptr);
 
 }  // namespace ogive
