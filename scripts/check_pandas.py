@@ -21,10 +21,10 @@ except ImportError:
     sys.exit(2)
 
 OGIVE = sys.argv[1] if len(sys.argv) > 1 else "build/ogive"
-BOOLEAN = {"plane_strain", "crown_hinge", "thrust_in_kern", "thrust_in_section", "within_tolerance"}
+BOOLEAN = {"plane_strain", "crown_hinge", "cracked", "thrust_in_kern", "thrust_in_section", "within_tolerance"}
 TEXT = {"curve", "method", "integrator", "status", "message", "warning", "reference_method", "reference_status",
         "chosen_method", "file", "joints", "weight", "hinges_min", "hinges_max", "hinges_collapse", "state", "hinge",
-        "left_support", "right_support", "domain", "loads_file"}
+        "left_support", "right_support", "domain", "loads_file", "section"}
 
 RUNS = [
     (["thrust", "--eccentricity", "0:1:11"], ("eccentricity", 0.3, 1)),
@@ -36,6 +36,8 @@ RUNS = [
     (["thrust", "--curve", "catenary", "--rise-ratio", "0.5,2", "--thickness-ratio", "0.5"], None),
     (["profile", "--eccentricity", "0,0.5", "--stations", "11"], ("eccentricity", 0.5, 11)),
     (["profile", "--method", "shooting", "--max-steps", "3"], None),
+    (["profile", "--section", "no-tension", "--support-displacement-ratio", "0,1e-4", "--stations", "9"],
+     ("support_displacement_ratio", 1e-4, 9)),
     (["check", "--curve", "parabolic", "--rise-ratio", "0.2,0.4"], ("rise_ratio", 0.2, 3)),  # quadrature, shooting, multiple shooting
     (["curve", "--curve", "elliptical", "--rise-ratio", "0.2:0.4:3", "--stations", "5"], ("rise_ratio", 0.3, 5)),
     (["bench", "--eccentricity", "0.5", "--method", "closed-form,shooting", "--rtol", "1e-6,1e-8", "--repeats", "1"], None),
