@@ -128,6 +128,31 @@ void clamped_support(std::string& out, const char* id, const SectionFaces& faces
   out += "</g>\n";
 }
 
+// A pinned springing: a pin (circle) at the axis point, on a triangle standing on a hatched base beyond
+// the springing, so that the section visibly turns freely.
+void pinned_support(std::string& out, const char* id, const SectionFaces& faces, PlanePoint away, double reach,
+                    double stroke) {
+  const PlanePoint pin{0.5 * (faces.intrados.x + faces.extrados.x), 0.5 * (faces.intrados.y + faces.extrados.y)};
+  const double size = 1.5 * reach;
+  const PlanePoint normal{-away.y, away.x};  // across the support's direction
+  const PlanePoint base{pin.x + size * away.x, pin.y + size * away.y};
+  const PlanePoint left{base.x + 0.6 * size * normal.x, base.y + 0.6 * size * normal.y};
+  const PlanePoint right{base.x - 0.6 * size * normal.x, base.y - 0.6 * size * normal.y};
+  out += fmt::format("<g id=\"{}\" stroke=\"black\" stroke-linecap=\"round\" fill=\"none\">\n", id);
+  for (auto [a, b] : {std::pair{pin, left}, std::pair{pin, right}, std::pair{left, right}})
+    line(out, a, b, fmt::format("stroke-width=\"{}\"", 2 * stroke));
+  out += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{}\" stroke-width=\"{}\" fill=\"white\"/>\n", pin.x, -pin.y,
+                     0.25 * size, 1.5 * stroke);
+  const int hatches = 6;
+  for (int k = 0; k <= hatches; ++k) {
+    const double f = 1.2 * size * (static_cast<double>(k) / hatches - 0.5);
+    const PlanePoint q{base.x + f * normal.x, base.y + f * normal.y};
+    line(out, q, {q.x + 0.3 * size * (away.x - normal.x), q.y + 0.3 * size * (away.y - normal.y)},
+         fmt::format("stroke-width=\"{}\"", stroke));
+  }
+  out += "</g>\n";
+}
+
 }  // namespace
 
 double drawing_unit(double span) { return std::pow(10.0, std::floor(std::log10(span)) - 2); }
@@ -217,8 +242,12 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
   const PlanePoint right_away{std::cos(right.theta), std::sin(right.theta)};
   const double reach = 0.3 * std::max(t, 0.05 * L);
   std::string supports;
-  clamped_support(supports, "support-left", left_faces, left_away, reach, stroke);
-  clamped_support(supports, "support-right", right_faces, right_away, reach, stroke);
+  for (const auto& [kind, id, faces, away] :
+       {std::tuple{scene.left.kind, "support-left", left_faces, left_away},
+        std::tuple{scene.right.kind, "support-right", right_faces, right_away}}) {
+    if (kind == SupportKind::clamped) clamped_support(supports, id, faces, away, reach, stroke);
+    else pinned_support(supports, id, faces, away, reach, stroke);
+  }
   Box drawn = box;
   for (const SectionFaces& f : {left_faces, right_faces})
     for (PlanePoint p : {f.intrados, f.extrados}) {
@@ -287,6 +316,12 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
     body += "</g>\n";
   }
   body += supports;
+  if (scene.crown_hinge) {  // the hinge: a pin at the crown's axis point
+    const PlanePoint c = to_drawing({curve.at(curve.crown()).x, curve.at(curve.crown()).y});
+    body += fmt::format("<circle id=\"crown-hinge\" cx=\"{}\" cy=\"{}\" r=\"{}\" stroke=\"black\" stroke-width=\"{}\" "
+                        "fill=\"white\"/>\n",
+                        c.x, -c.y, 0.4 * reach, 1.5 * stroke);
+  }
 
   // Support movement: each springing's horizontal spread, outwards for d > 0.
   double bottom = drawn.y0;
