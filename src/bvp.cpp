@@ -97,15 +97,69 @@ bool march(const ArchModel& model, const std::vector<double>& knots, const Advan
   return true;
 }
 
-double boundary_value_condition(const ReducedMatrix& Q) {
-  const Eigen::FullPivLU<ReducedMatrix> lu(Q);
+namespace {
+
+// The reduced problem is 3 x 3 or 4 x 4, so it is solved with fixed sizes: Eigen's dynamic-size LU and
+// products took their blocked paths (and allocated) on these tiny matrices and doubled a closed-form
+// scene's reduced solve. The sums are written out in the order the dynamic-size code took them
+// (sequential, column by column), so that every result is the same to the last bit as before.
+template <int M>
+using Square = Eigen::Matrix<double, M, M>;
+template <int M>
+using Column = Eigen::Matrix<double, M, 1>;
+
+template <int M>
+double skeel_condition(const Square<M>& Q) {
+  const Eigen::FullPivLU<Square<M>> lu(Q);
   if (!lu.isInvertible()) return std::numeric_limits<double>::infinity();
   // Skeel's measure, not ||Q|| ||Q^-1||: the rows mix displacement and force conditions whose sizes
   // differ by orders of magnitude, and a norm-wise estimate would report that scaling, not a loss of
   // digits. |Q^-1| |Q| is what partial pivoting's backward error is amplified by, row scaling aside.
-  const ReducedMatrix amplification = lu.inverse().cwiseAbs() * Q.cwiseAbs();
-  const double condition = amplification.rowwise().sum().maxCoeff();
+  const Square<M> inverse = lu.inverse();
+  double condition = 0;
+  for (int i = 0; i < M; ++i) {
+    double row = 0;  // row i of |Q^-1| |Q|, summed
+    for (int j = 0; j < M; ++j) {
+      double a = std::abs(inverse(i, 0)) * std::abs(Q(0, j));
+      for (int k = 1; k < M; ++k) a += std::abs(inverse(i, k)) * std::abs(Q(k, j));
+      row = j == 0 ? a : row + a;
+    }
+    condition = i == 0 ? row : std::max(condition, row);
+  }
   return std::isfinite(condition) ? condition : std::numeric_limits<double>::infinity();
+}
+
+// z from Q z = rhs: LU with partial pivoting, then the unit-lower and the upper solve column by column.
+template <int M>
+Column<M> solve_reduced(const Square<M>& Q, const Column<M>& rhs) {
+  const Eigen::PartialPivLU<Square<M>> lu(Q);
+  const Square<M>& LU = lu.matrixLU();
+  Column<M> z = lu.permutationP() * rhs;
+  for (int i = 0; i < M; ++i)
+    if (z[i] != 0)
+      for (int j = i + 1; j < M; ++j) z[j] -= z[i] * LU(j, i);
+  for (int i = M - 1; i >= 0; --i)
+    if (z[i] != 0) {
+      z[i] /= LU(i, i);
+      for (int j = 0; j < i; ++j) z[j] -= z[i] * LU(j, i);
+    }
+  return z;
+}
+
+// The reduced problem's solution z and its condition, for M unknowns.
+template <int M>
+Column<M> solve_with_condition(const ReducedMatrix& Q, const ReducedVector& rhs, double& condition) {
+  const Square<M> QM = Q;
+  condition = skeel_condition<M>(QM);
+  return solve_reduced<M>(QM, rhs);
+}
+
+}  // namespace
+
+double boundary_value_condition(const ReducedMatrix& Q) {
+  if (Q.rows() == 3 && Q.cols() == 3) return skeel_condition<3>(Q);
+  if (Q.rows() == 4 && Q.cols() == 4) return skeel_condition<4>(Q);
+  throw std::logic_error("boundary_value_condition: the reduced matrix is 3 x 3 or 4 x 4");
 }
 
 BvpSolution solve_march(const ArchModel& model, const March& march) {
@@ -123,14 +177,15 @@ BvpSolution solve_march(const ArchModel& model, const March& march) {
     rhs(3) = -march.hinge_row(m);
   }
   BvpSolution out;
-  out.condition = boundary_value_condition(Q);
   Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxUnknowns + 1, 1> z1(m + 1);
-  z1.head(m) = Q.partialPivLu().solve(rhs);
+  if (m == 4) z1.head<4>() = solve_with_condition<4>(Q, rhs, out.condition);
+  else z1.head<3>() = solve_with_condition<3>(Q, rhs, out.condition);
   z1(m) = 1.0;
   const SpringingSplit split = springing_split(model);
   out.y0 = split.start + split.U * z1.head<3>();
   out.yS = march.end.lazyProduct(z1);
   out.knots = march.knots;
+  out.starts.reserve(march.starts.size());
   for (const AffineState& Y : march.starts) out.starts.push_back(Y.lazyProduct(z1));
   if (m == 4) out.hinge_moment = march.hinge_row.dot(z1);
   return out;
