@@ -44,8 +44,10 @@ class ArchSystem final : public OdeSystem {
 // The shooting solution's field: integrates the solved state from the start of its piece.
 class ShootingField final : public PiecewiseField {
  public:
-  ShootingField(std::shared_ptr<const ArchModel> model, const Options& options, const BvpSolution& bvp)
-      : PiecewiseField(bvp.knots, bvp.starts), model_(std::move(model)), system_(*model_), options_(options) {}
+  ShootingField(std::shared_ptr<const ArchModel> model, const Options& options, std::vector<double> knots,
+                std::vector<StateVector> starts)
+      : PiecewiseField(std::move(knots), std::move(starts)), model_(std::move(model)), system_(*model_),
+        options_(options) {}
 
  protected:
   void propagate(double s_k, const StateVector& y_k, std::span<const double> s,
@@ -155,8 +157,9 @@ Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& o
   // The condition of the boundary-value problem, not of a discretisation of it: the equations in the
   // unknowns are condensed through every segment's transfer, and judged by the same function as the
   // closed form's.
-  const BvpSolution bvp = solve_march(*model, marched);
-  finish_solution(sol, bvp, std::make_shared<ShootingField>(model, options, bvp));
+  BvpSolution bvp = solve_march(*model, std::move(marched));
+  auto field = std::make_shared<ShootingField>(model, options, std::move(bvp.knots), std::move(bvp.starts));
+  finish_solution(sol, bvp, std::move(field));
   return sol;
 }
 
