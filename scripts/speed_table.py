@@ -37,6 +37,8 @@ RAW_ROWS = [
                                      "--no-verify"]),
     ("raw shooting bdf, eps 0.5", ["--eccentricity", "0.5", "--methods", "shooting", "--integrators", "bdf",
                                    "--no-verify"]),
+    ("raw multiple shooting adams 8 segments, eps 0.5", ["--eccentricity", "0.5", "--methods", "multiple-shooting",
+                                                         "--segments", "8", "--integrators", "adams", "--no-verify"]),
     ("raw shooting adams, ellipse rise 0.3", ["--curve", "elliptical", "--rise-ratio", "0.3", "--methods", "shooting",
                                               "--integrators", "adams", "--no-verify"]),
 ]

@@ -32,7 +32,9 @@ SpringingSplit springing_split(const ArchModel& model) {
 int unknown_count(const ArchModel& model) { return model.hinge() ? 4 : 3; }
 
 std::vector<double> required_knots(const ArchModel& model) {
-  std::vector<double> knots{0.0};
+  std::vector<double> knots;
+  knots.reserve(model.jumps().size() + 3);
+  knots.push_back(0.0);
   for (const PointJump& j : model.jumps())
     if (j.s > 0 && j.s < model.length()) knots.push_back(j.s);
   if (model.hinge()) knots.push_back(*model.hinge());
@@ -43,11 +45,18 @@ std::vector<double> required_knots(const ArchModel& model) {
 }
 
 std::vector<double> merge_knots(const ArchModel& model, std::vector<double> extra) {
-  const std::vector<double> required = required_knots(model);
+  std::vector<double> required = required_knots(model);
   const double S = model.length(), close = 1e-9 * S;
+  // Only the extra knots inside (0, S~) count; without any, and with the required ones farther apart than
+  // `close` (the merging below would change nothing), those are the answer: one allocation, not four, for
+  // a circular arc's single arc or single shooting.
+  std::erase_if(extra, [&](double e) { return !(e > close && e < S - close); });
+  const bool apart = std::adjacent_find(required.begin(), required.end(),
+                                        [&](double a, double b) { return b - a < close; }) == required.end();
+  if (extra.empty() && apart) return required;
   std::vector<double> out = required;
+  out.reserve(required.size() + extra.size());
   for (double e : extra) {
-    if (!(e > close && e < S - close)) continue;
     const bool near = std::any_of(required.begin(), required.end(), [&](double r) { return std::abs(r - e) < close; });
     if (!near) out.push_back(e);
   }
@@ -67,10 +76,10 @@ std::vector<double> merge_knots(const ArchModel& model, std::vector<double> extr
 
 bool march(const ArchModel& model, const std::vector<double>& knots, const Advance& advance, March& out) {
   const int m = unknown_count(model);
-  const SpringingSplit split = springing_split(model);
+  out.split = springing_split(model);
   AffineState Y = AffineState::Zero(kStateSize, m + 1);
-  Y.leftCols<3>() = split.U;
-  Y.col(m) = split.start;
+  Y.leftCols<3>() = out.split.U;
+  Y.col(m) = out.split.start;
   const auto& jumps = model.jumps();
   // The point loads at s (a knot): Fy jumps by their force.
   auto apply_jumps = [&](double s) {
@@ -82,6 +91,7 @@ bool march(const ArchModel& model, const std::vector<double>& knots, const Advan
   out.hinge_row.resize(0);
   apply_jumps(0.0);
   const std::size_t K = knots.size() - 1;
+  out.starts.reserve(K);
   for (std::size_t k = 0; k < K; ++k) {
     out.starts.push_back(Y);
     if (!advance(k, Y)) return false;
@@ -97,18 +107,72 @@ bool march(const ArchModel& model, const std::vector<double>& knots, const Advan
   return true;
 }
 
-double boundary_value_condition(const ReducedMatrix& Q) {
-  const Eigen::FullPivLU<ReducedMatrix> lu(Q);
+namespace {
+
+// The reduced problem is 3 x 3 or 4 x 4, so it is solved with fixed sizes: Eigen's dynamic-size LU and
+// products took their blocked paths (and allocated) on these tiny matrices and doubled a closed-form
+// scene's reduced solve. The sums are written out in the order the dynamic-size code took them
+// (sequential, column by column), so that every result is the same to the last bit as before.
+template <int M>
+using Square = Eigen::Matrix<double, M, M>;
+template <int M>
+using Column = Eigen::Matrix<double, M, 1>;
+
+template <int M>
+double skeel_condition(const Square<M>& Q) {
+  const Eigen::FullPivLU<Square<M>> lu(Q);
   if (!lu.isInvertible()) return std::numeric_limits<double>::infinity();
   // Skeel's measure, not ||Q|| ||Q^-1||: the rows mix displacement and force conditions whose sizes
   // differ by orders of magnitude, and a norm-wise estimate would report that scaling, not a loss of
   // digits. |Q^-1| |Q| is what partial pivoting's backward error is amplified by, row scaling aside.
-  const ReducedMatrix amplification = lu.inverse().cwiseAbs() * Q.cwiseAbs();
-  const double condition = amplification.rowwise().sum().maxCoeff();
+  const Square<M> inverse = lu.inverse();
+  double condition = 0;
+  for (int i = 0; i < M; ++i) {
+    double row = 0;  // row i of |Q^-1| |Q|, summed
+    for (int j = 0; j < M; ++j) {
+      double a = std::abs(inverse(i, 0)) * std::abs(Q(0, j));
+      for (int k = 1; k < M; ++k) a += std::abs(inverse(i, k)) * std::abs(Q(k, j));
+      row = j == 0 ? a : row + a;
+    }
+    condition = i == 0 ? row : std::max(condition, row);
+  }
   return std::isfinite(condition) ? condition : std::numeric_limits<double>::infinity();
 }
 
-BvpSolution solve_march(const ArchModel& model, const March& march) {
+// z from Q z = rhs: LU with partial pivoting, then the unit-lower and the upper solve column by column.
+template <int M>
+Column<M> solve_reduced(const Square<M>& Q, const Column<M>& rhs) {
+  const Eigen::PartialPivLU<Square<M>> lu(Q);
+  const Square<M>& LU = lu.matrixLU();
+  Column<M> z = lu.permutationP() * rhs;
+  for (int i = 0; i < M; ++i)
+    if (z[i] != 0)
+      for (int j = i + 1; j < M; ++j) z[j] -= z[i] * LU(j, i);
+  for (int i = M - 1; i >= 0; --i)
+    if (z[i] != 0) {
+      z[i] /= LU(i, i);
+      for (int j = 0; j < i; ++j) z[j] -= z[i] * LU(j, i);
+    }
+  return z;
+}
+
+// The reduced problem's solution z and its condition, for M unknowns.
+template <int M>
+Column<M> solve_with_condition(const ReducedMatrix& Q, const ReducedVector& rhs, double& condition) {
+  const Square<M> QM = Q;
+  condition = skeel_condition<M>(QM);
+  return solve_reduced<M>(QM, rhs);
+}
+
+}  // namespace
+
+double boundary_value_condition(const ReducedMatrix& Q) {
+  if (Q.rows() == 3 && Q.cols() == 3) return skeel_condition<3>(Q);
+  if (Q.rows() == 4 && Q.cols() == 4) return skeel_condition<4>(Q);
+  throw std::logic_error("boundary_value_condition: the reduced matrix is 3 x 3 or 4 x 4");
+}
+
+BvpSolution solve_march(const ArchModel& model, March&& march) {
   const int m = unknown_count(model);
   const BoundaryConditions& bc = model.boundary_conditions();
   ReducedMatrix Q(m, m);
@@ -123,14 +187,14 @@ BvpSolution solve_march(const ArchModel& model, const March& march) {
     rhs(3) = -march.hinge_row(m);
   }
   BvpSolution out;
-  out.condition = boundary_value_condition(Q);
   Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxUnknowns + 1, 1> z1(m + 1);
-  z1.head(m) = Q.partialPivLu().solve(rhs);
+  if (m == 4) z1.head<4>() = solve_with_condition<4>(Q, rhs, out.condition);
+  else z1.head<3>() = solve_with_condition<3>(Q, rhs, out.condition);
   z1(m) = 1.0;
-  const SpringingSplit split = springing_split(model);
-  out.y0 = split.start + split.U * z1.head<3>();
+  out.y0 = march.split.start + march.split.U * z1.head<3>();
   out.yS = march.end.lazyProduct(z1);
-  out.knots = march.knots;
+  out.knots = std::move(march.knots);
+  out.starts.reserve(march.starts.size());
   for (const AffineState& Y : march.starts) out.starts.push_back(Y.lazyProduct(z1));
   if (m == 4) out.hinge_moment = march.hinge_row.dot(z1);
   return out;
@@ -147,7 +211,7 @@ BvpSolution solve_single_segment(const ArchModel& model, const SystemMatrix& Phi
           return true;
         },
         m);
-  return solve_march(model, m);
+  return solve_march(model, std::move(m));
 }
 
 void finish_solution(Solution& sol, const BvpSolution& bvp, std::shared_ptr<const StateField> field) {

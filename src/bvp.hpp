@@ -51,6 +51,7 @@ struct March {
   std::vector<AffineState> starts;    // K entries
   AffineState end;
   AffineRow hinge_row;                // m + 1: the M row just before the hinge; empty without one
+  SpringingSplit split;               // the springing's, for the solve
 };
 
 // Moves Y (= [T | c], m + 1 columns) from knots[k] to knots[k + 1]; false on failure (the method keeps
@@ -73,13 +74,14 @@ struct BvpSolution {
 // rows. Infinite when Q is singular. Every method reports this one number for a scene.
 double boundary_value_condition(const ReducedMatrix& Q);
 
-// Solves the end conditions and the hinge's for z; the states follow.
-BvpSolution solve_march(const ArchModel& model, const March& march);
+// Solves the end conditions and the hinge's for z; the states follow (the march's knots move into it).
+BvpSolution solve_march(const ArchModel& model, March&& march);
 
 // The whole transfer y(S~) = Phi y(0) + p of a model without jumps or hinge, solved (the quadrature's).
 BvpSolution solve_single_segment(const ArchModel& model, const SystemMatrix& Phi, const StateVector& p);
 
-// Fills reactions, residuals and the condition estimate. Status success (provisional: solve() judges
+// Fills reactions, residuals and the condition estimate from bvp's ends, hinge moment and condition (its
+// knots and starts may have been moved into the field). Status success (provisional: solve() judges
 // it against rtol with judge_solution), or singular_system when the condition exceeds 1 / round-off.
 void finish_solution(Solution& sol, const BvpSolution& bvp, std::shared_ptr<const StateField> field);
 

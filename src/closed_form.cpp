@@ -61,8 +61,8 @@ Transfer arc_transfer(const ArchModel& model, const CircularArc& arc, double ds0
 // stations).
 class ClosedFormField final : public PiecewiseField {
  public:
-  ClosedFormField(std::shared_ptr<const ArchModel> model, const BvpSolution& bvp)
-      : PiecewiseField(bvp.knots, bvp.starts), model_(std::move(model)) {}
+  ClosedFormField(std::shared_ptr<const ArchModel> model, std::vector<double> knots, std::vector<StateVector> starts)
+      : PiecewiseField(std::move(knots), std::move(starts)), model_(std::move(model)) {}
 
  protected:
   void propagate(double s_k, const StateVector& y_k, std::span<const double> s,
@@ -108,6 +108,7 @@ Solution solve_closed_form(std::shared_ptr<const ArchModel> model, const Options
   // Pieces: the arcs, cut at the point loads and the hinge; one exponential each.
   const double L = model->scales().length;
   std::vector<double> arc_starts;
+  arc_starts.reserve(arcs.size());
   for (const CircularArc& arc : arcs) arc_starts.push_back(arc.s_start / L);
   const std::vector<double> knots = merge_knots(*model, arc_starts);
   March m;
@@ -120,9 +121,10 @@ Solution solve_closed_form(std::shared_ptr<const ArchModel> model, const Options
           return true;
         },
         m);
-  const BvpSolution bvp = solve_march(*model, m);
+  BvpSolution bvp = solve_march(*model, std::move(m));
   sol.diagnostics.segments = static_cast<int>(knots.size() - 1);
-  finish_solution(sol, bvp, std::make_shared<ClosedFormField>(model, bvp));
+  auto field = std::make_shared<ClosedFormField>(model, std::move(bvp.knots), std::move(bvp.starts));
+  finish_solution(sol, bvp, std::move(field));
   return sol;
 }
 

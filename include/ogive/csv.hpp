@@ -2,6 +2,7 @@
 // quoted), numbers in their shortest round-trip decimal form so that output is exact and deterministic.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -47,6 +48,17 @@ class CsvRow {
     std::size_t size = 0, index = 0;
     int fields = 0;
   };
+  // The last few numbers formatted into line_ (their magnitude and where its digits are): a row often
+  // repeats one (H and H_left, a symmetric arch's right springing mirroring the left), and formatting a
+  // double costs more than copying its text. Entries beyond line_'s end or a rewind are dropped.
+  struct Recent {
+    double magnitude = 0;
+    std::uint32_t offset = 0, length = 0;
+  };
+  static constexpr std::size_t kRecent = 4;
+  Recent recent_[kRecent];
+  std::size_t recent_count_ = 0, recent_next_ = 0;
+  void forget_recent_beyond(std::size_t size);
   const std::vector<bool>* keep_ = nullptr;
   std::size_t index_ = 0;
   std::string line_;
