@@ -17,7 +17,7 @@
 namespace ogive {
 namespace {
 
-constexpr int kMaxNewtonIterations = 60;
+constexpr int kMaxNewtonIterations = 30;  // beyond, a path of smaller movements is cheaper (solve.cpp)
 constexpr int kMaxHalvings = 40;
 constexpr int kStations = 513;  // the admissibility check's and the first guess' stations
 

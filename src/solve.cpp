@@ -169,14 +169,17 @@ Scene between(const Scene& from, const Scene& to, double lambda) {
 }
 
 // One no-tension solve, raw (no verification), from the given guesses; the linear solution is the last.
+// (The linear solution is computed only when no guess is given: along a path every step has one.)
 Solution no_tension_once(const Scene& scene, const Options& options, int segments, std::vector<StateVector> guesses) {
   auto model = std::make_shared<const ArchModel>(scene, options.whole_arch);
-  Scene elastic = scene;
-  elastic.section = SectionKind::elastic;
-  Options linear = options;
-  linear.method = Method::automatic;
-  const Solution lin = solve(elastic, linear);
-  if (lin.field) guesses.push_back(lin.springing_state);
+  if (guesses.empty()) {
+    Scene elastic = scene;
+    elastic.section = SectionKind::elastic;
+    Options linear = options;
+    linear.method = Method::automatic;
+    const Solution lin = solve(elastic, linear);
+    if (lin.field) guesses.push_back(lin.springing_state);
+  }
   return solve_no_tension(model, options, segments, guesses);
 }
 
@@ -231,6 +234,7 @@ Solution solve_no_tension_scene(const Scene& scene, const Options& options, cons
     std::vector<StateVector> guesses;
     if (continues) guesses.push_back(previous->springing_state);
     Solution coarse = no_tension_once(scene, raw, segments, guesses);
+    if (continues && coarse.status != Status::success) coarse = no_tension_once(scene, raw, segments, {});
     iterations += coarse.diagnostics.newton_iterations;
     if (coarse.status == Status::not_converged || coarse.status == Status::integrator_failure) {
       // Trace the movements from the previous scene's, or from none.
