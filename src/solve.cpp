@@ -339,7 +339,7 @@ Solution solve(const Scene& scene, const Options& options, const Solution* previ
   Solution sol;
   Diagnostics spent;  // the work of the rejected tries counts too
   int segments = 1;
-  double previous = std::numeric_limits<double>::infinity();
+  double previous_estimate = std::numeric_limits<double>::infinity();
   for (int attempt = 0; attempt < 16; ++attempt) {
     sol = solve_with(model, solver, segments == 1 ? Method::shooting : Method::multiple_shooting, segments,
                      options.rtol);
@@ -347,8 +347,8 @@ Solution solve(const Scene& scene, const Options& options, const Solution* previ
     spent = sol.diagnostics;
     if (sol.status != Status::tolerance_not_met && sol.status != Status::integrator_failure) break;
     const double estimate = sol.diagnostics.error_estimate;
-    const bool improving = !(estimate > previous / 2);  // also true after an integrator failure (NaN)
-    previous = estimate;
+    const bool improving = !(estimate > previous_estimate / 2);  // also true after an integrator failure (NaN)
+    previous_estimate = estimate;
     if (segments < 64 && improving) {
       segments *= 2;
       continue;
