@@ -94,6 +94,14 @@ inline const std::vector<CliCase>& cli_cases() {
       {{"curve", "--stations", "3", "--curve", "catenary"}, "--rise-ratio"},
       {{"curve", "--stations", "3", "--curve", "catenary"}, "--span"},
       {{"curve", "--stations", "3", "--curve", "three-centred"}, "--haunch-angle"},
+      // The loads and movements of whole arches (closed form: a live load or fill is not_applicable for it,
+      // a row without numbers; the options' rules and Scene::validate still judge every value).
+      {{"thrust", "--method", "closed-form"}, "--point-load"},
+      {{"thrust", "--method", "closed-form", "--point-load", "1e4"}, "--point-load-at"},
+      {{"thrust", "--method", "closed-form", "--live-load", "1e3"}, "--live-load-to"},
+      {{"thrust", "--method", "closed-form", "--fill-height-ratio", "0.5"}, "--fill-density"},
+      {{"thrust", "--method", "closed-form", "--supports", "pinned"}, "--right-settlement-ratio"},
+      {{"thrust", "--method", "closed-form", "--eccentricity", "0.5"}, "--left-rotation"},
   };
   return cases;
 }
