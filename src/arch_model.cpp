@@ -159,7 +159,7 @@ ArchModel::ArchModel(Scene scene, bool whole_arch_domain) : scene_(std::move(sce
         const Eigen::Vector2d part = gauss_legendre_integral<16>(
             [&](double s) {
               const CurvePoint p = curve_->at(s * L);
-              const double q = distributed_load(s, p);
+              const double q = distributed_load(p);
               return Eigen::Vector2d(q, q * p.x / L);
             },
             a, b);
@@ -171,8 +171,7 @@ ArchModel::ArchModel(Scene scene, bool whole_arch_domain) : scene_(std::move(sce
 
 double ArchModel::theta(double s) const { return curve_->angle(s * scales_.length); }
 
-double ArchModel::distributed_load(double s, const CurvePoint& p) const {
-  (void)s;
+double ArchModel::distributed_load(const CurvePoint& p) const {
   const double L = scales_.length, w = scales_.force / L;
   const double x = p.x / L, c = std::cos(p.theta);
   double q = 0;
@@ -185,7 +184,7 @@ double ArchModel::distributed_load(double s, const CurvePoint& p) const {
 
 double ArchModel::load(double s) const {
   if (uniform_) return self_weight_;
-  return self_weight_ + distributed_load(s, curve_->at(s * scales_.length));
+  return self_weight_ + distributed_load(curve_->at(s * scales_.length));
 }
 
 SystemMatrix ArchModel::system_matrix(double theta) const {

@@ -246,7 +246,7 @@ Solution solve_no_tension_scene(const Scene& scene, const Options& options, cons
         y = previous->springing_state;
         have_start = true;
       } else {
-        from = between(scene, scene, 0);
+        // from = scene (assigned above), its movements taken away
         from.left.spread = from.left.settlement = from.left.rotation = 0;
         from.right.spread = from.right.settlement = from.right.rotation = 0;
         const Solution start = no_tension_once(from, raw, segments, {});

@@ -162,7 +162,7 @@ class ArchModel {
   std::optional<double> hinge_;
   BoundaryConditions bc_;
   double total_load_ = 0, load_moment_ = 0;
-  double distributed_load(double s, const CurvePoint& p) const;
+  double distributed_load(const CurvePoint& p) const;  // b beyond the self-weight at the axis point p
 };
 
 // The six equations of the header comment.
