@@ -118,8 +118,12 @@ class Geometry {
     for (int degree = 16;; degree *= 2) {
       const ChebyshevRule& rule = chebyshev_rule(degree);
       Eigen::VectorXd load(degree + 1), cosine(degree + 1);
+      // The ends' values are the one-sided limits from inside the piece (a live load starts or stops at
+      // a knot, a pointed crown turns there): taken 1e-9 of the piece inside, where b and theta are
+      // smooth, which moves the integrals by about 1e-9 of a node's weight times the change of b there.
+      const double inside = 1e-9 * (b - a);
       for (int i = 0; i <= degree; ++i) {
-        const double s = i == 0 ? a : i == degree ? b : 0.5 * (a + b) + h * rule.node[i];
+        const double s = i == 0 ? a + inside : i == degree ? b - inside : 0.5 * (a + b) + h * rule.node[i];
         load[i] = model_.load(s);
         cosine[i] = std::cos(model_.theta(s));
       }
