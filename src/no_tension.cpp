@@ -102,6 +102,34 @@ struct Statics {
       B_prev = Bi, C_prev = Ci, s_prev = s, c_prev = ci;
     }
   }
+  // The margin as a function of M0 alone at fixed (Fx, Fy0), the same number as margin(Fx, Fy0, M0):
+  // the stations' P and their moments but M0 formed once, so that a search over M0 costs one
+  // multiplication per station (the first guess' nested searches spend their time here).
+  struct MomentMargin {
+    bool tension = false;
+    double tension_margin = 0;
+    Eigen::ArrayXd moment, inverse;  // M - M0 and 1 / (P t / 2) at every station
+    double operator()(double M0) const {
+      if (tension) return tension_margin;
+      return (1 - (moment + M0).abs() * inverse).minCoeff();  // (Eigen vectorises the minimum)
+    }
+  };
+  MomentMargin moment_margin(double Fx, double Fy0) const {
+    MomentMargin out;
+    out.moment.resize(static_cast<Eigen::Index>(c.size()));
+    out.inverse.resize(static_cast<Eigen::Index>(c.size()));
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      const double P = -(c[i] * Fx + sn[i] * (Fy0 + B[i]));
+      if (!(P > 0)) {  // under tension the margin does not depend on M0
+        out.tension = true;
+        out.tension_margin = margin(Fx, Fy0, 0.0);
+        return out;
+      }
+      out.moment[static_cast<Eigen::Index>(i)] = Fx * y[i] - Fy0 * x[i] - C[i];
+      out.inverse[static_cast<Eigen::Index>(i)] = 1 / (P * (t / 2));
+    }
+    return out;
+  }
   // The smallest (t/2 - |M/N|) / (t/2) over the stations; where N >= 0, -10 + min(-N) / scale instead
   // (below every admissible value and increasing as the compression grows: a direction for the search).
   double margin(double Fx, double Fy0, double M0) const {
@@ -348,7 +376,8 @@ AdmissibleStart most_admissible_start(const ArchModel& model) {
   auto best_M0 = [&](double Fx, double Fy0) {
     if (!M0_free) return 0.0;
     const double P0 = std::max(-(st.c[0] * Fx + st.sn[0] * Fy0), 0.0);
-    return scan_max([&](double M0) { return st.margin(Fx, Fy0, M0); }, -0.5 * t * P0, 0.5 * t * P0, 21);
+    const Statics::MomentMargin margin = st.moment_margin(Fx, Fy0);
+    return scan_max(margin, -0.5 * t * P0, 0.5 * t * P0, 21);
   };
   auto best_Fy = [&](double Fx) {
     if (Fy_fixed) return Fy_half;
