@@ -1,5 +1,6 @@
 // The no-tension arch (section.hpp: SectionKind::no_tension): a nonlinear two-point problem solved by
-// Newton shooting with CVODE (methods layer).
+// Newton, either shooting with CVODE (solve_no_tension) or in the quadrature form of the force method
+// (solve_no_tension_quadrature, below), the independent checks of each other (methods layer).
 //
 // The state and the six equations are the linear model's (arch_model.hpp), but for the section's law:
 // eps and kappa follow from N and M by section_strain, so that Ux', Uy' and psi' are nonlinear in the
