@@ -212,7 +212,8 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--left-support", o.left_support, "left springing: clamped or pinned (default: --supports)");
   cmd.add_option("--right-support", o.right_support, "right springing: clamped or pinned (default: --supports)");
   cmd.add_option("--section", o.section,
-                 "elastic (linear) or no-tension (cracks where the resultant leaves the kern; Newton shooting; a "
+                 "elastic (linear) or no-tension (cracks where the resultant leaves the kern; Newton on explicit forces "
+                 "by quadrature, or shooting; a "
                  "sweep of support movements is traced in order)")
       ->capture_default_str();
   cmd.add_flag("--crown-hinge", o.crown_hinge, "a hinge at the crown (M = 0): the three-hinged arch with --supports pinned");

@@ -11,7 +11,7 @@ LAYERS = [
     ("model", ["scene", "loads_file", "arch_model", "section"]),
     ("solution types", ["solution"]),
     ("one BVP solve", ["bvp"]),
-    ("methods", ["closed_form", "shooting", "quadrature", "cvode_integrator", "no_tension", "limit", "limit_internal",
+    ("methods", ["closed_form", "shooting", "quadrature", "cvode_integrator", "no_tension", "no_tension_quadrature", "damped_newton", "limit", "limit_internal",
                  "limit_lp", "voussoirs"]),
     ("dispatcher", ["solve"]),
     ("output", ["csv", "svg", "thrust_line"]),

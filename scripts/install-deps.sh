@@ -5,7 +5,7 @@
 # libxml2-utils (xmllint) lets the tests check that `ogive draw` writes well-formed SVG. --charts adds
 # librsvg2-bin (rsvg-convert, SVG to PNG) for scripts/figures.sh.
 set -euo pipefail
-packages=(cmake g++ make libsundials-dev libeigen3-dev libfmt-dev libcli11-dev doctest-dev coinor-libclp-dev pkg-config clang libclang-rt-14-dev libxml2-utils)
+packages=(cmake g++ make libsundials-dev libeigen3-dev libfmt-dev libcli11-dev doctest-dev coinor-libclp-dev libboost-dev pkg-config clang libclang-rt-14-dev libxml2-utils)
 if [[ "${1:-}" == "--charts" ]]; then packages+=(gnuplot-nox python3-scipy python3-numpy python3-pandas librsvg2-bin); fi
 missing=()
 for p in "${packages[@]}"; do

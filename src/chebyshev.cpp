@@ -1,5 +1,6 @@
 #include "chebyshev.hpp"
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <mutex>
@@ -70,14 +71,30 @@ const ChebyshevRule& chebyshev_rule(int degree) {
   return *rules[level];
 }
 
-double chebyshev_series(const double* a, int degree, double x) {
-  double b1 = 0, b2 = 0;
+namespace {
+
+// Clenshaw's recurrence for M series of the same degree at once (independent chains: the processor
+// overlaps them).
+template <int M>
+Eigen::Array<double, M, 1> clenshaw(const std::array<const double*, M>& a, int degree, double x) {
+  using Value = Eigen::Array<double, M, 1>;
+  Value b1 = Value::Zero(), b2 = Value::Zero(), ak;
   for (int k = degree; k >= 1; --k) {
-    const double b0 = a[k] + 2 * x * b1 - b2;
+    for (int m = 0; m < M; ++m) ak[m] = a[static_cast<std::size_t>(m)][k];
+    const Value b0 = ak + 2 * x * b1 - b2;
     b2 = b1;
     b1 = b0;
   }
-  return a[0] + x * b1 - b2;
+  for (int m = 0; m < M; ++m) ak[m] = a[static_cast<std::size_t>(m)][0];
+  return ak + x * b1 - b2;
+}
+
+}  // namespace
+
+double chebyshev_series(const double* a, int degree, double x) { return clenshaw<1>({a}, degree, x)[0]; }
+
+Eigen::Array2d chebyshev_series(const double* a, const double* b, int degree, double x) {
+  return clenshaw<2>({a, b}, degree, x);
 }
 
 Eigen::VectorXd chebyshev_interpolate(const ChebyshevRule& rule, const Eigen::Ref<const Eigen::MatrixXd>& values,

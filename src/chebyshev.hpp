@@ -35,6 +35,8 @@ const ChebyshevRule& chebyshev_rule(int degree);
 // sum_k a[k] T_k(x), k = 0 .. degree, by Clenshaw's recurrence (no division: the fast way to evaluate one
 // tabulated function many times).
 double chebyshev_series(const double* a, int degree, double x);
+// Two series of the same degree at the same x in one recurrence (the no-tension quadrature's B and C).
+Eigen::Array2d chebyshev_series(const double* a, const double* b, int degree, double x);
 Eigen::VectorXd chebyshev_interpolate(const ChebyshevRule& rule, const Eigen::Ref<const Eigen::MatrixXd>& values,
                                       double x);
 

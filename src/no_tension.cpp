@@ -11,14 +11,13 @@
 
 #include "bvp.hpp"
 #include "cvode_integrator.hpp"
+#include "damped_newton.hpp"
 #include "ogive/section.hpp"
 #include "ogive/shooting.hpp"
 
 namespace ogive {
 namespace {
 
-constexpr int kMaxNewtonIterations = 30;  // beyond, a path of smaller movements is cheaper (solve.cpp)
-constexpr int kMaxHalvings = 40;
 constexpr int kStations = 513;  // the admissibility check's and the first guess' stations
 
 // The system's Jacobian at state y (the linear A(theta) where the section is elastic).
@@ -102,6 +101,34 @@ struct Statics {
       C.push_back(Ci);
       B_prev = Bi, C_prev = Ci, s_prev = s, c_prev = ci;
     }
+  }
+  // The margin as a function of M0 alone at fixed (Fx, Fy0), the same number as margin(Fx, Fy0, M0):
+  // the stations' P and their moments but M0 formed once, so that a search over M0 costs one
+  // multiplication per station (the first guess' nested searches spend their time here).
+  struct MomentMargin {
+    bool tension = false;
+    double tension_margin = 0;
+    Eigen::ArrayXd moment, inverse;  // M - M0 and 1 / (P t / 2) at every station
+    double operator()(double M0) const {
+      if (tension) return tension_margin;
+      return (1 - (moment + M0).abs() * inverse).minCoeff();  // (Eigen vectorises the minimum)
+    }
+  };
+  MomentMargin moment_margin(double Fx, double Fy0) const {
+    MomentMargin out;
+    out.moment.resize(static_cast<Eigen::Index>(c.size()));
+    out.inverse.resize(static_cast<Eigen::Index>(c.size()));
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      const double P = -(c[i] * Fx + sn[i] * (Fy0 + B[i]));
+      if (!(P > 0)) {  // under tension the margin does not depend on M0
+        out.tension = true;
+        out.tension_margin = margin(Fx, Fy0, 0.0);
+        return out;
+      }
+      out.moment[static_cast<Eigen::Index>(i)] = Fx * y[i] - Fy0 * x[i] - C[i];
+      out.inverse[static_cast<Eigen::Index>(i)] = 1 / (P * (t / 2));
+    }
+    return out;
   }
   // The smallest (t/2 - |M/N|) / (t/2) over the stations; where N >= 0, -10 + min(-N) / scale instead
   // (below every admissible value and increasing as the compression grows: a direction for the search).
@@ -349,7 +376,8 @@ AdmissibleStart most_admissible_start(const ArchModel& model) {
   auto best_M0 = [&](double Fx, double Fy0) {
     if (!M0_free) return 0.0;
     const double P0 = std::max(-(st.c[0] * Fx + st.sn[0] * Fy0), 0.0);
-    return scan_max([&](double M0) { return st.margin(Fx, Fy0, M0); }, -0.5 * t * P0, 0.5 * t * P0, 21);
+    const Statics::MomentMargin margin = st.moment_margin(Fx, Fy0);
+    return scan_max(margin, -0.5 * t * P0, 0.5 * t * P0, 21);
   };
   auto best_Fy = [&](double Fx) {
     if (Fy_fixed) return Fy_half;
@@ -373,6 +401,24 @@ AdmissibleStart most_admissible_start(const ArchModel& model) {
   return out;
 }
 
+bool first_guess(const ArchModel& model, std::span<const StateVector> guesses,
+                 const std::function<bool(const StateVector&)>& start, Solution& sol) {
+  for (const StateVector& g : guesses)
+    if (g.allFinite() && start(g)) return true;
+  const AdmissibleStart a = most_admissible_start(model);
+  if (!(a.margin > 0)) {
+    sol.status = Status::inadmissible;
+    sol.message = fmt::format("no state keeps the resultant inside every section (best margin {:.3g} of t/2): the "
+                              "arch cannot stand without tension",
+                              a.margin);
+    return false;
+  }
+  if (start(a.y0)) return true;
+  sol.status = Status::not_converged;
+  sol.message = "the most admissible first guess could not be integrated";
+  return false;
+}
+
 Solution solve_no_tension(std::shared_ptr<const ArchModel> model, const Options& options, int segments,
                           std::span<const StateVector> guesses) {
   Solution sol;
@@ -394,79 +440,30 @@ Solution solve_no_tension(std::shared_ptr<const ArchModel> model, const Options&
   };
   // The first guess: the first admissible one given, or the most admissible state.
   const Statics statics(*model);
-  auto admissible = [&](const StateVector& y0) { return statics.margin(y0[kFx], y0[kFy], y0[kM]) > 0; };
   Eigen::VectorXd x;
   Evaluation e;
-  for (const StateVector& g : guesses) {
-    if (!g.allFinite() || !admissible(g) || !shooter.unknowns_from(g, x)) continue;
+  const bool started = first_guess(*model, guesses, [&](const StateVector& y0) {
+    if (statics.margin(y0[kFx], y0[kFy], y0[kM]) <= 0 || !shooter.unknowns_from(y0, x)) return false;
     e = shooter.evaluate(x);
-    if (e.ok) break;
-  }
-  if (!e.ok) {
-    const AdmissibleStart a = most_admissible_start(*model);
-    if (!(a.margin > 0)) {
-      sol.status = Status::inadmissible;
-      sol.message = fmt::format("no state keeps the resultant inside every section (best margin {:.3g} of t/2): the "
-                                "arch cannot stand without tension",
-                                a.margin);
-      count_work();
-      return sol;
-    }
-    if (shooter.unknowns_from(a.y0, x)) e = shooter.evaluate(x);
-    if (!e.ok) {
-      sol.status = Status::not_converged;
-      sol.message = "the most admissible first guess could not be integrated";
-      count_work();
-      return sol;
-    }
-  }
-  // Converged when Newton's full step changes no unknown by more than rtol / 100 of its size (the
-  // forces are of order one in scaled units): beside the integration's own error, which the residual
-  // cannot fall below, Newton's is then negligible.
-  const double tol = 1e-2 * options.rtol;
-  bool converged = false;
-  int iterations = 0;
-  for (; iterations < kMaxNewtonIterations && !converged; ++iterations) {
-    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(e.jacobian);
-    const Eigen::VectorXd step = -lu.solve(e.residual);
-    if (!step.allFinite()) {
-      sol.status = Status::singular_system;
-      sol.message = "Newton's matrix is singular";
-      count_work();
-      return sol;
-    }
-    const bool small = step.cwiseAbs().maxCoeff() <= tol * std::max(1.0, x.cwiseAbs().maxCoeff());
-    const double norm = e.residual.lpNorm<Eigen::Infinity>();
-    double lambda = 1;
-    bool accepted = false;
-    for (int h = 0; h < kMaxHalvings && !accepted; ++h, lambda *= 0.5) {
-      const Eigen::VectorXd trial = x + lambda * step;
-      Evaluation et = shooter.evaluate(trial);
-      // A small full step is taken if it can be integrated: its residual is at the integration's noise.
-      if (et.ok && (small || et.residual.lpNorm<Eigen::Infinity>() <= (1 - 1e-4 * lambda) * norm)) {
-        x = trial;
-        e = std::move(et);
-        accepted = true;
-        converged = small;
-      }
-    }
-    if (!accepted) {
-      // No step lowers the residual: converged if it is already at the integration's own noise (CVODE's
-      // tolerance on the end's displacements and rotation), where a nearly singular direction (H is
-      // insensitive once hinges have formed) keeps Newton's step from looking small.
-      const double kinematics = std::max({1.0, std::abs(e.yS[kUx]), std::abs(e.yS[kUy]), std::abs(e.yS[kPsi])});
-      converged = norm <= 10 * cvode_tolerances(options).rtol * kinematics;
-      break;
-    }
-  }
-  sol.diagnostics.newton_iterations = iterations;
-  count_work();
-  if (!converged) {
-    sol.status = Status::not_converged;
-    sol.message = fmt::format("Newton did not converge in {} iterations (residual {:.3g})", iterations,
-                              e.residual.lpNorm<Eigen::Infinity>());
+    return e.ok;
+  }, sol);
+  if (!started) {
+    count_work();
     return sol;
   }
+  // Converged when Newton's full step changes no unknown by more than rtol / 100 of its size: beside
+  // the integration's own error, which the residual cannot fall below, Newton's is then negligible. At
+  // the integration's noise: CVODE's tolerance on the end's displacements and rotation.
+  const double noise = 10 * cvode_tolerances(options).rtol;
+  const bool converged = damped_newton(
+      [&](const Eigen::VectorXd& trial) { return shooter.evaluate(trial); },
+      [&](const Evaluation& at) {
+        const double kinematics = std::max({1.0, std::abs(at.yS[kUx]), std::abs(at.yS[kUy]), std::abs(at.yS[kPsi])});
+        return at.residual.lpNorm<Eigen::Infinity>() <= noise * kinematics;
+      },
+      1e-2 * options.rtol, x, e, sol);
+  count_work();
+  if (!converged) return sol;
   BvpSolution bvp;
   bvp.y0 = e.y0;
   bvp.yS = e.yS;

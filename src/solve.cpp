@@ -168,9 +168,17 @@ Scene between(const Scene& from, const Scene& to, double lambda) {
   return s;
 }
 
+// One no-tension solver: Newton shooting (segments 1: single, else multiple) or its quadrature form.
+struct NoTensionTry {
+  Method method = Method::quadrature;
+  int segments = 0;
+  double rtol_factor = 1;  // on the rtol handed to the solver
+};
+
 // One no-tension solve, raw (no verification), from the given guesses; the linear solution is the last.
 // (The linear solution is computed only when no guess is given: along a path every step has one.)
-Solution no_tension_once(const Scene& scene, const Options& options, int segments, std::vector<StateVector> guesses) {
+Solution no_tension_once(const Scene& scene, const Options& options, const NoTensionTry& how,
+                         std::vector<StateVector> guesses) {
   auto model = std::make_shared<const ArchModel>(scene, options.whole_arch);
   if (guesses.empty()) {
     Scene elastic = scene;
@@ -180,18 +188,19 @@ Solution no_tension_once(const Scene& scene, const Options& options, int segment
     const Solution lin = solve(elastic, linear);
     if (lin.field) guesses.push_back(lin.springing_state);
   }
-  return solve_no_tension(model, options, segments, guesses);
+  return how.method == Method::quadrature ? solve_no_tension_quadrature(model, options, guesses)
+                                          : solve_no_tension(model, options, how.segments, guesses);
 }
 
 // The no-tension scene at its movements, traced from `from` (solved, with springing state y) in steps
 // that double after a success and halve after a failure. The raw solve at the target, or the last failure.
-Solution trace_movements(const Scene& from, StateVector y, const Scene& to, const Options& options, int segments,
-                         int& newton_iterations) {
+Solution trace_movements(const Scene& from, StateVector y, const Scene& to, const Options& options,
+                         const NoTensionTry& how, int& newton_iterations) {
   double lambda = 0, step = 1;
   Solution last;
   while (lambda < 1) {
     const double next = std::min(1.0, lambda + step);
-    last = no_tension_once(between(from, to, next), options, segments, {y});
+    last = no_tension_once(between(from, to, next), options, how, {y});
     newton_iterations += last.diagnostics.newton_iterations;
     if (last.status == Status::success) {
       lambda = next;
@@ -206,35 +215,40 @@ Solution trace_movements(const Scene& from, StateVector y, const Scene& to, cons
 }
 
 Solution solve_no_tension_scene(const Scene& scene, const Options& options, const Solution* previous) {
-  if (options.method == Method::closed_form || options.method == Method::quadrature) {
+  if (options.method == Method::closed_form) {
     Solution sol;
     sol.method = options.method;
     sol.model = std::make_shared<const ArchModel>(scene, options.whole_arch);
     sol.status = Status::not_applicable;
-    sol.message = "the no-tension section is solved by Newton shooting (shooting, multiple-shooting or auto)";
+    sol.message = "the no-tension section is solved by Newton (quadrature, shooting, multiple-shooting or auto)";
     return sol;
   }
   const bool continues = previous && previous->field && previous->model &&
                          same_but_movements(previous->model->scene(), scene) &&
                          previous->model->half() == ArchModel(scene, options.whole_arch).half();
-  // (segments, the factor on rtol given to the solver): auto tries single shooting, then 8 segments, then
-  // 8 segments with CVODE 10 times tighter (a profile through hinges needs it); judged against the rtol
-  // asked, always.
-  std::vector<std::pair<int, double>> tries;
-  if (options.method == Method::shooting) tries = {{1, 1.0}};
-  else if (options.method == Method::multiple_shooting) tries = {{options.segments, 1.0}};
-  else tries = {{1, 1.0}, {8, 1.0}, {8, 0.1}};
+  // auto tries the quadrature form (no integration of an ODE: milliseconds), then single shooting, then
+  // 8 segments, then 8 segments with CVODE 10 times tighter (a profile through hinges needs it); judged
+  // against the rtol asked, always.
+  std::vector<NoTensionTry> tries;
+  if (options.method == Method::quadrature) tries = {{Method::quadrature, 0, 1.0}};
+  else if (options.method == Method::shooting) tries = {{Method::shooting, 1, 1.0}};
+  else if (options.method == Method::multiple_shooting) tries = {{Method::multiple_shooting, options.segments, 1.0}};
+  else
+    tries = {{Method::quadrature, 0, 1.0},
+             {Method::shooting, 1, 1.0},
+             {Method::multiple_shooting, 8, 1.0},
+             {Method::multiple_shooting, 8, 0.1}};
   Solution sol;
   int iterations = 0;
   Diagnostics spent;
-  for (auto [segments, factor] : tries) {
+  for (const NoTensionTry& how : tries) {
     Options raw = options;
     raw.verify = false;
-    raw.rtol = std::max(options.rtol * factor, 1e-14);
+    raw.rtol = std::max(options.rtol * how.rtol_factor, 1e-14);
     std::vector<StateVector> guesses;
     if (continues) guesses.push_back(previous->springing_state);
-    Solution coarse = no_tension_once(scene, raw, segments, guesses);
-    if (continues && coarse.status != Status::success) coarse = no_tension_once(scene, raw, segments, {});
+    Solution coarse = no_tension_once(scene, raw, how, guesses);
+    if (continues && coarse.status != Status::success) coarse = no_tension_once(scene, raw, how, {});
     iterations += coarse.diagnostics.newton_iterations;
     if (coarse.status == Status::not_converged || coarse.status == Status::integrator_failure) {
       // Trace the movements from the previous scene's, or from none.
@@ -249,7 +263,7 @@ Solution solve_no_tension_scene(const Scene& scene, const Options& options, cons
         // from = scene (assigned above), its movements taken away
         from.left.spread = from.left.settlement = from.left.rotation = 0;
         from.right.spread = from.right.settlement = from.right.rotation = 0;
-        const Solution start = no_tension_once(from, raw, segments, {});
+        const Solution start = no_tension_once(from, raw, how, {});
         iterations += start.diagnostics.newton_iterations;
         if (start.status == Status::success) {
           y = start.springing_state;
@@ -258,18 +272,20 @@ Solution solve_no_tension_scene(const Scene& scene, const Options& options, cons
           coarse = start;
         }
       }
-      if (have_start) coarse = trace_movements(from, y, scene, raw, segments, iterations);
+      if (have_start) coarse = trace_movements(from, y, scene, raw, how, iterations);
     }
     add_work(spent, coarse.diagnostics);
     if (coarse.status != Status::success) {
       sol = coarse;
       continue;
     }
-    // Verified as every CVODE solve: again 16 times tighter, from the coarse solution.
-    if (options.verify && verifiable(raw)) {
+    // Verified as every CVODE solve: again 16 times tighter, from the coarse solution (the quadrature
+    // down to the options' floor of 1e-14, CVODE down to its own).
+    const bool quadrature = how.method == Method::quadrature;
+    if (options.verify && (quadrature ? raw.rtol / 16 >= 1e-14 : verifiable(raw))) {
       Options fine = verifying_options(raw);
       fine.verify = false;
-      sol = no_tension_once(scene, fine, segments, {coarse.springing_state});
+      sol = no_tension_once(scene, fine, how, {coarse.springing_state});
       iterations += sol.diagnostics.newton_iterations;
       add_work(spent, sol.diagnostics);
       if (sol.status == Status::success) {
@@ -281,7 +297,7 @@ Solution solve_no_tension_scene(const Scene& scene, const Options& options, cons
       }
     } else {
       sol = coarse;
-      if (options.verify) sol.message = "rtol below what a 16 times tighter CVODE solve can verify";
+      if (options.verify) sol.message = "rtol below what a 16 times tighter solve can verify";
     }
     sol.diagnostics.steps = spent.steps;
     sol.diagnostics.rhs_evaluations = spent.rhs_evaluations;

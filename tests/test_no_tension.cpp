@@ -3,6 +3,7 @@
 // traced there and back, and the limit analysis' minimum thrust as the floor it approaches.
 #include <doctest/doctest.h>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -111,28 +112,27 @@ TEST_CASE("no-tension: where no section leaves the kern it is the linear model")
   for (const ArchState& st : nt.profile) CHECK_FALSE(st.cracked);
 }
 
-TEST_CASE("no-tension: the shooting Jacobian is the residual's derivative (finite differences)") {
-  const auto model = std::make_shared<const ArchModel>(no_tension(0.0, 0.08, 1e-4));
-  const Solution sol = solve(model->scene(), shooting());
-  REQUIRE(sol.ok());
-  Options tight = shooting(Method::shooting, 1e-12);
-  // Away from the solution too, where the residual is not small: 2 % off in H and M0.
-  StateVector y0 = sol.springing_state;
+// Newton's Jacobian of a residual function against finite differences, at a point 2 % off the solution
+// in H and M0 (where the residual is not small). The unknowns are the springing's free components in
+// their order: Fx, Fy, M when clamped, psi, Fx, Fy when pinned.
+template <class Residual>
+void check_jacobian(const StateVector& solution, Residual&& residual, std::array<int, 3> unknowns = {kFx, kFy, kM}) {
+  StateVector y0 = solution;
   y0[kFx] *= 1.02;
   y0[kM] *= 0.98;
-  const ShootingResidual r = no_tension_residual(*model, tight, y0);
+  const ShootingResidual r = residual(y0);
   REQUIRE(r.ok);
   for (int j = 0; j < 3; ++j) {
-    const int component = j == 0 ? kFx : (j == 1 ? kFy : kM);
+    const int component = unknowns[static_cast<std::size_t>(j)];
     const double h = 1e-5 * std::max(1.0, std::abs(y0[component]));
     StateVector a = y0, b = y0;
     a[component] += h;
     b[component] -= h;
-    const ShootingResidual ra = no_tension_residual(*model, tight, a), rb = no_tension_residual(*model, tight, b);
+    const ShootingResidual ra = residual(a), rb = residual(b);
     StateVector a2 = y0, b2 = y0;
     a2[component] += h / 2;
     b2[component] -= h / 2;
-    const ShootingResidual ra2 = no_tension_residual(*model, tight, a2), rb2 = no_tension_residual(*model, tight, b2);
+    const ShootingResidual ra2 = residual(a2), rb2 = residual(b2);
     REQUIRE(ra.ok);
     REQUIRE(rb.ok);
     REQUIRE(ra2.ok);
@@ -143,6 +143,36 @@ TEST_CASE("no-tension: the shooting Jacobian is the residual's derivative (finit
     const Eigen::Vector3d fd = (4 * fd2 - fd1) / 3;
     CAPTURE(j);
     CHECK((fd - r.jacobian.col(j)).lpNorm<Eigen::Infinity>() <= 1e-6 * r.jacobian.lpNorm<Eigen::Infinity>());
+  }
+}
+
+TEST_CASE("no-tension: the shooting Jacobian is the residual's derivative (finite differences)") {
+  const auto model = std::make_shared<const ArchModel>(no_tension(0.0, 0.08, 1e-4));
+  const Solution sol = solve(model->scene(), shooting());
+  REQUIRE(sol.ok());
+  const Options tight = shooting(Method::shooting, 1e-12);
+  check_jacobian(sol.springing_state,
+                 [&](const StateVector& y0) { return no_tension_residual(*model, tight, y0); });
+}
+
+TEST_CASE("no-tension quadrature: its Jacobian is its residual's derivative (finite differences)") {
+  // The half arch and an asymmetric whole one with a pinned springing (unknowns Fx0, Fy0, psi0 there:
+  // the derivative by M0 is then by a given component, which the residual ignores).
+  for (bool whole : {false, true}) {
+    Scene s = no_tension(0.25, 0.08, 1e-4);
+    if (whole) {
+      s.loads.points.push_back({0.05 * s.reference_load_per_length() * 10.0, 0.3});
+      s.left.kind = SupportKind::pinned;
+    }
+    const auto model = std::make_shared<const ArchModel>(s);
+    CAPTURE(whole);
+    REQUIRE(model->half() == !whole);
+    const Solution sol = solve(s, shooting(Method::quadrature));
+    REQUIRE(sol.ok());
+    const Options tight = shooting(Method::quadrature, 1e-12);
+    check_jacobian(
+        sol.springing_state, [&](const StateVector& y0) { return no_tension_quadrature_residual(*model, tight, y0); },
+        whole ? std::array<int, 3>{kPsi, kFx, kFy} : std::array<int, 3>{kFx, kFy, kM});
   }
 }
 
@@ -172,6 +202,83 @@ TEST_CASE("no-tension: single and multiple shooting agree on cracked scenes") {
       CHECK(solution_difference(automatic, tight) <= kRtol + tight.diagnostics.error_estimate);
     }
   }
+}
+
+TEST_CASE("no-tension quadrature: agrees with multiple shooting on cracked scenes (reactions and profiles)") {
+  // Two independent methods (explicit forces and adaptive Gauss-Kronrod against CVODE through the same
+  // hinges): the quadrature's reactions and profile, verified at rtol, within rtol of multiple
+  // shooting's at rtol / 10 (plus that reference's own estimate).
+  for (double d : {0.0, 1e-4}) {
+    for (double eps : {0.0, 0.5}) {
+      const Scene s = no_tension(eps, 0.08, d);
+      Options o = shooting(Method::quadrature);
+      o.stations = 65;
+      const Solution quadrature = solve(s, o);
+      o.method = Method::multiple_shooting;
+      o.rtol = kRtol / 10;
+      const Solution reference = solve(s, o);
+      CAPTURE(d);
+      CAPTURE(eps);
+      REQUIRE(quadrature.ok());
+      CHECK(quadrature.method == Method::quadrature);
+      REQUIRE(reference.field);  // whatever its status: its own estimate is added below
+      CHECK(reaction_difference(quadrature.reactions, reference.reactions, s.thickness) <=
+            kRtol + reference.diagnostics.error_estimate);
+      bool cracked = false;
+      for (const ArchState& st : quadrature.profile) cracked = cracked || st.cracked;
+      CHECK(cracked);
+      CHECK(solution_difference(quadrature, reference) <= kRtol + reference.diagnostics.error_estimate);
+    }
+  }
+}
+
+TEST_CASE("no-tension quadrature: whole arches, pinned springings, point, live and fill loads, a crown hinge") {
+  // What the method treats besides the symmetric clamped arch, each against multiple shooting: the
+  // quadrature's reactions and profile within rtol of multiple shooting's at rtol / 10.
+  const double w = paper_scene(0.25, 0.1).reference_load_per_length() * 10.0;  // N/m: the weight of 10 m of axis
+  std::vector<std::pair<const char*, Scene>> scenes;
+  {
+    Scene s = no_tension(0.25, 0.1, 1e-4);
+    s.loads.points.push_back({0.2 * w, 0.3});
+    s.left.kind = s.right.kind = SupportKind::pinned;
+    scenes.push_back({"point load at 0.3 L, pinned", s});
+  }
+  {
+    Scene s = no_tension(0.25, 0.1, 1e-4);
+    s.loads.live.push_back({0.1 * w / 10.0, 0.2, 0.7});
+    s.left.kind = SupportKind::pinned;
+    scenes.push_back({"live load over 0.2 .. 0.7 L, left pinned", s});
+  }
+  {
+    Scene s = no_tension(0.25, 0.1, 1e-4);
+    s.loads.fills.push_back({1800, 0.3});
+    scenes.push_back({"fill to 0.3 L, symmetric", s});
+  }
+  {
+    Scene s = no_tension(0.25, 0.1, 1e-4);
+    s.crown_hinge = true;
+    s.left.kind = s.right.kind = SupportKind::pinned;
+    scenes.push_back({"three-hinged (the crown hinge ends the half)", s});
+  }
+  for (const auto& [name, s] : scenes) {
+    CAPTURE(name);
+    Options o = shooting(Method::quadrature);
+    o.stations = 65;
+    const Solution quadrature = solve(s, o);
+    o.method = Method::multiple_shooting;
+    o.rtol = kRtol / 10;
+    const Solution reference = solve(s, o);
+    REQUIRE(quadrature.ok());
+    REQUIRE(reference.field);
+    CHECK(solution_difference(quadrature, reference) <= kRtol + reference.diagnostics.error_estimate);
+  }
+  // A crown hinge inside the whole arch is not treated (as by the shooting).
+  Scene hinged = no_tension(0.25, 0.1, 1e-4);
+  hinged.crown_hinge = true;
+  hinged.left.kind = hinged.right.kind = SupportKind::pinned;
+  Options o = shooting(Method::quadrature);
+  o.whole_arch = true;
+  CHECK(solve(hinged, o).status == Status::not_applicable);
 }
 
 TEST_CASE("no-tension: cracks where the linear model leaves the kern, and H/V stays close to it at fixed supports") {
@@ -262,7 +369,8 @@ TEST_CASE("no-tension: an arch too thin to stand without tension is inadmissible
   CHECK(sol.status == Status::inadmissible);
   CHECK(std::isnan(sol.H));
   CHECK_FALSE(sol.message.empty());
-  // The closed form and the quadrature do not apply.
+  // The quadrature form says so too; the closed form does not apply.
+  CHECK(solve(no_tension(0.0, 0.04), shooting(Method::quadrature)).status == Status::inadmissible);
   Options o;
   o.method = Method::closed_form;
   CHECK(solve(no_tension(0.0, 0.08), o).status == Status::not_applicable);

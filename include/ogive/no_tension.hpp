@@ -1,5 +1,6 @@
 // The no-tension arch (section.hpp: SectionKind::no_tension): a nonlinear two-point problem solved by
-// Newton shooting with CVODE (methods layer).
+// Newton, either shooting with CVODE (solve_no_tension) or in the quadrature form of the force method
+// (solve_no_tension_quadrature, below), the independent checks of each other (methods layer).
 //
 // The state and the six equations are the linear model's (arch_model.hpp), but for the section's law:
 // eps and kappa follow from N and M by section_strain, so that Ux', Uy' and psi' are nonlinear in the
@@ -47,6 +48,33 @@ struct ShootingResidual {
   Eigen::Matrix3d jacobian = Eigen::Matrix3d::Zero();
 };
 ShootingResidual no_tension_residual(const ArchModel& model, const Options& options, const StateVector& y0);
+
+// The quadrature (force-method) form of the same Newton (Method::quadrature; src/no_tension_quadrature.cpp):
+// the forces are explicit in the springing's unknowns z (Fx = Fx0, Fy = Fy0 + B(s), M = M0 + Fx0 (y - y0)
+// - Fy0 (x - x0) - C(s), B the load up to s with the point loads, C = int_0^s cos(theta) B ds, both
+// Chebyshev series per piece between the model's breakpoints, converged to round-off), so the end's
+// kinematic conditions are single integrals of known functions of s:
+//   psi(S) = psi0 + int kappa ds
+//   Ux(S)  = Ux0 + int (eps c - a_V V sn) ds - psi0 (y_S - y0) - int kappa (y_S - y) ds
+//   Uy(S)  = Uy0 + int (eps sn + a_V V c) ds + psi0 (x_S - x0) + int kappa (x_S - x) ds
+// with eps, kappa from section_strain; their derivatives with respect to z (section_strain's eps_N, eps_M,
+// kappa_N, kappa_M) integrate to Newton's exact Jacobian. The integrals are Boost's Gauss-Kronrod G7-K15
+// rule, adaptive and global over panels between the breakpoints and point loads (at least 32 over the
+// domain; those with the largest share of |K15 - G7| halved until its sum, each value's over its L1
+// norm, is at most max(rtol / 100, 1e-14)); a trial z is first checked for admissibility on every node.
+// Newton, its damping and convergence rules and the first guesses are solve_no_tension's (the caller's
+// guesses, the first admissible at every node, then most_admissible_start); at the quadrature's noise
+// when the residual is within 10 times its tolerance of the integrals' L1 norms. The field: the same
+// integrals from 0 to any s (the panels' cumulative sums, the last panel's part by the same rule).
+// No error estimate of its own: solve() verifies it by a second solve at rtol / 16 as the CVODE solves.
+// Status as solve_no_tension's (success provisional; not_applicable for a crown hinge over the whole
+// arch, as there). Diagnostics: rhs_evaluations = integrand and geometry evaluations, segments = the
+// final panels, steps = 0.
+Solution solve_no_tension_quadrature(std::shared_ptr<const ArchModel> model, const Options& options,
+                                     std::span<const StateVector> guesses = {});
+// Its residual and Jacobian at the springing state y0, as no_tension_residual (ok false when a node is
+// inadmissible or the quadrature cannot meet its tolerance).
+ShootingResidual no_tension_quadrature_residual(const ArchModel& model, const Options& options, const StateVector& y0);
 
 // The springing forces (Fx, Fy, M, scaled) that maximise the smallest margin t/2 - |M / N| (scaled t~)
 // over the domain, with what that margin is (> 0: admissible); for tests and the first guess.

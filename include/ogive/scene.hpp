@@ -84,7 +84,7 @@ struct Scene {
   Loads loads;
   Support left, right;
   // The section's law (section.hpp): elastic (linear, the paper's) or no_tension (cracks where the
-  // resultant leaves the kern; solved by Newton shooting, no_tension.hpp).
+  // resultant leaves the kern; solved by Newton, no_tension.hpp).
   SectionKind section = SectionKind::elastic;
   bool crown_hinge = false;  // a hinge (M = 0, the rotation free to jump) at the crown (Curve::crown)
 

@@ -22,10 +22,12 @@ enum class Method {
   multiple_shooting,  // CVODE, Options::segments segments joined by continuity
   automatic,          // the smallest model that meets rtol: the closed form where it applies, else the
                       // quadrature method where its estimate meets rtol, else shooting with 1, 2, 4, ...
-                      // 64 segments until the error estimate meets rtol
+                      // 64 segments until the error estimate meets rtol (the no-tension section: the
+                      // quadrature form, then Newton shooting; solve.hpp)
   quadrature,         // the force method: nested Chebyshev integrals per panel, its own error estimate
                       // (include/ogive/quadrature.hpp); any curve, the symmetric clamped arch under its
-                      // own weight
+                      // own weight. The no-tension section: Newton on explicit forces with adaptive
+                      // Gauss-Kronrod integrals (no_tension.hpp), verified by a solve at rtol / 16
 };
 enum class Integrator { adams, bdf };
 

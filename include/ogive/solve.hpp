@@ -7,8 +7,10 @@
 // smallest that meets rtol (the closed form where it applies, the quadrature method, then verified
 // shooting with 1, 2, 4 ... 64 segments and tighter CVODE tolerances), verifies CVODE solves by a 16
 // times tighter one, and judges every solution against rtol (within_tolerance). A no-tension scene is
-// solved by Newton shooting (no_tension.hpp): single shooting for auto, multiple shooting with 8
-// segments if that is not verified; the closed form and the quadrature do not apply.
+// solved by Newton (no_tension.hpp): for auto its quadrature form first (explicit forces, adaptive
+// Gauss-Kronrod: milliseconds), then single shooting, then multiple shooting with 8 segments (and CVODE
+// 10 times tighter) if that is not verified, each verified by a second solve at rtol / 16; --method
+// quadrature, shooting and multiple-shooting run one of them; the closed form does not apply.
 #pragma once
 
 #include "ogive/arch_model.hpp"
