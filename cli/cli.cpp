@@ -1210,6 +1210,8 @@ Solution reference_solution(const Scene& scene, Options o) {
     o.method = Method::multiple_shooting;
     o.integrator = Integrator::adams;
     o.rtol = reference_rtol(o);
+    // Newton shooting of the no-tension section converges to 1e-11, not to 1e-12 (its residual's noise).
+    if (scene.section == SectionKind::no_tension) o.rtol = std::max(o.rtol, 1e-11);
     o.atol = 0;
     o.segments = 32;
     o.verify = true;
