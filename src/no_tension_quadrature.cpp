@@ -274,7 +274,12 @@ class AdaptiveQuadrature {
         sum += e;
       }
       if (sum <= tol_) break;
-      if (round == kMaxRounds) return false;
+      // Below the tolerance round-off allows (rtol 1e-14), halving would go on until memory ran out
+      // (found: rtol 1e-14 was killed at several GB): a bounded number of panels, then a failure.
+      if (round == kMaxRounds || panels_.size() > kMaxPanels) {
+        exhausted_ = true;
+        return false;
+      }
       // Halve every panel above the mean share that is still wide enough.
       const double threshold = tol_ / static_cast<double>(panels_.size());
       std::vector<Panel> next;
@@ -297,7 +302,10 @@ class AdaptiveQuadrature {
         }
       }
       panels_ = std::move(next);
-      if (!split) return false;
+      if (!split) {
+        exhausted_ = true;
+        return false;
+      }
     }
     total.setZero();
     for (const Panel& p : panels_) total += p.kronrod;
@@ -308,11 +316,16 @@ class AdaptiveQuadrature {
   bool holds(const StateVector& y0) const { return at_ && *at_ == y0; }
 
   const std::vector<Panel>& panels() const { return panels_; }
+  // Whether an integration stopped because the tolerance could not be met (round-off in the panels'
+  // error sums: rtol below about 1e-10), not because a node was inadmissible.
+  bool exhausted() const { return exhausted_; }
   std::int64_t evaluations() const { return evaluations_; }
 
  private:
   static constexpr int kInitialPanels = 32;
+  bool exhausted_ = false;
   static constexpr int kMaxRounds = 60;
+  static constexpr std::size_t kMaxPanels = 8192;  // about 120 times what a cracked arch needs at rtol 1e-12
 
   Panel make_panel(double a, double b, std::size_t piece) const {
     Panel p;
@@ -499,8 +512,16 @@ Solution solve_no_tension_quadrature(std::shared_ptr<const ArchModel> model, con
     e = shooter.evaluate(x);
     return e.ok;
   }, sol);
+  // Say why when the quadrature, not the arch, was the limit.
+  auto name_the_limit = [&] {
+    if (shooter.quadrature().exhausted())
+      sol.message = fmt::format("the adaptive quadrature cannot meet its tolerance {:.1e} (round-off in its panels' "
+                                "error sums; rtol down to about 1e-10 works): use shooting or a larger rtol",
+                                tol);
+  };
   if (!started) {
     count_work();
+    name_the_limit();
     return sol;
   }
   const bool converged = damped_newton(
@@ -508,7 +529,10 @@ Solution solve_no_tension_quadrature(std::shared_ptr<const ArchModel> model, con
       [&](const Evaluation& at) { return at.residual.lpNorm<Eigen::Infinity>() <= 10 * tol * at.kinematic_scale; },
       1e-2 * options.rtol, x, e, sol);
   count_work();
-  if (!converged) return sol;
+  if (!converged) {
+    name_the_limit();
+    return sol;
+  }
   // The last accepted evaluation is at x, but the panels may since have been refined by rejected trials:
   // evaluate once more, so that the field's panels hold the integrals at the solution.
   if (!shooter.quadrature().holds(e.y0)) e = shooter.evaluate(x);

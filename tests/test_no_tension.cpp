@@ -377,3 +377,21 @@ TEST_CASE("no-tension: an arch too thin to stand without tension is inadmissible
 }
 
 }  // namespace ogive
+
+namespace ogive {
+
+TEST_CASE("no-tension: an rtol below what the quadrature can meet is a status, in bounded memory") {
+  // Found by trying extreme options: at rtol 1e-14 the adaptive quadrature halved its panels until the
+  // process was killed. Now it stops at a bounded number of panels and says why.
+  Scene s = paper_scene(0.0, 0.08, 1e-3);
+  s.section = SectionKind::no_tension;
+  Options o;
+  o.method = Method::quadrature;
+  o.rtol = 1e-14;
+  const Solution sol = solve(s, o);
+  CHECK(sol.status == Status::not_converged);
+  CHECK(sol.message.find("cannot meet its tolerance") != std::string::npos);
+  CHECK(std::isnan(sol.H));
+}
+
+}  // namespace ogive
