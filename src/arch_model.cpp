@@ -91,8 +91,9 @@ ArchModel::ArchModel(Scene scene, bool whole_arch_domain) : scene_(std::move(sce
   for (const PointJump& j : jumps_) add_break(j.s);
   if (hinge_) add_break(*hinge_);
   for (const LiveLoad& q : loads.live) {
-    add_break(s_at(q.from));
-    add_break(s_at(q.to));
+    live_spans_.push_back({s_at(q.from), s_at(q.to), q.intensity});
+    add_break(live_spans_.back().from);
+    add_break(live_spans_.back().to);
   }
   for (const FillLoad& f : loads.fills) {
     const double level = f.height_ratio, half_t = 0.5 * scene_.thickness / L;
@@ -159,7 +160,7 @@ ArchModel::ArchModel(Scene scene, bool whole_arch_domain) : scene_(std::move(sce
         const Eigen::Vector2d part = gauss_legendre_integral<16>(
             [&](double s) {
               const CurvePoint p = curve_->at(s * L);
-              const double q = distributed_load(p);
+              const double q = distributed_load(s, p);
               return Eigen::Vector2d(q, q * p.x / L);
             },
             a, b);
@@ -171,12 +172,12 @@ ArchModel::ArchModel(Scene scene, bool whole_arch_domain) : scene_(std::move(sce
 
 double ArchModel::theta(double s) const { return curve_->angle(s * scales_.length); }
 
-double ArchModel::distributed_load(const CurvePoint& p) const {
+double ArchModel::distributed_load(double s, const CurvePoint& p) const {
   const double L = scales_.length, w = scales_.force / L;
-  const double x = p.x / L, c = std::cos(p.theta);
+  const double c = std::cos(p.theta);
   double q = 0;
-  for (const LiveLoad& live : scene_.loads.live)
-    if (x >= live.from && x <= live.to) q += live.intensity * c;
+  for (const LiveSpan& live : live_spans_)
+    if (s >= live.from && s <= live.to) q += live.intensity * c;
   for (const FillLoad& f : scene_.loads.fills)
     q += f.density * scene_.material.gravity * std::max(0.0, (f.height_ratio * L - p.y) * c - 0.5 * scene_.thickness);
   return q / w;
@@ -184,7 +185,7 @@ double ArchModel::distributed_load(const CurvePoint& p) const {
 
 double ArchModel::load(double s) const {
   if (uniform_) return self_weight_;
-  return self_weight_ + distributed_load(curve_->at(s * scales_.length));
+  return self_weight_ + distributed_load(s, curve_->at(s * scales_.length));
 }
 
 SystemMatrix ArchModel::system_matrix(double theta) const {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <numeric>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -56,6 +58,9 @@ struct Content {
   sunindextype length = 0;
   sunrealtype* data = nullptr;
   bool owns_data = false;
+  // The ends of the independent problems the state holds, ascending, the last = length (one block: the
+  // whole state). The weighted RMS norm is the largest of the blocks' own norms.
+  std::shared_ptr<const std::vector<sunindextype>> block_ends;
 };
 
 Content& content(N_Vector v) { return *static_cast<Content*>(v->content); }
@@ -79,7 +84,7 @@ N_Vector clone_empty(N_Vector w) {
     N_VFreeEmpty(v);
     return nullptr;
   }
-  v->content = new Content{size(w), nullptr, false};
+  v->content = new Content{size(w), nullptr, false, content(w).block_ends};
   return v;
 }
 N_Vector clone(N_Vector w) {
@@ -169,7 +174,21 @@ sunrealtype wsqr_sum(N_Vector x, N_Vector w) {
   for (sunindextype i = 0, n = size(x); i < n; ++i) sum += (xd[i] * wd[i]) * (xd[i] * wd[i]);
   return sum;
 }
-sunrealtype wrms_norm(N_Vector x, N_Vector w) { return std::sqrt(wsqr_sum(x, w) / size(x)); }
+// CVODE's error test and its iteration's convergence test. Where the state holds several independent
+// problems (multiple shooting's segments integrated together), the norm is the largest of theirs, so that
+// each is held to the tolerance it would meet alone, never diluted by the others' smaller errors.
+sunrealtype wrms_norm(N_Vector x, N_Vector w) {
+  const sunrealtype *xd = data(x), *wd = data(w);
+  sunrealtype largest = 0;
+  sunindextype begin = 0;
+  for (const sunindextype end : *content(x).block_ends) {
+    sunrealtype sum = 0;
+    for (sunindextype i = begin; i < end; ++i) sum += (xd[i] * wd[i]) * (xd[i] * wd[i]);
+    largest = std::max(largest, sum / static_cast<sunrealtype>(end - begin));
+    begin = end;
+  }
+  return std::sqrt(largest);
+}
 sunrealtype min(N_Vector x) {
   const sunrealtype* xd = data(x);
   sunrealtype m = xd[0];
@@ -216,7 +235,8 @@ OGIVE_VECTOR_LOOP int scale_add_multi(int nvec, sunrealtype* a, N_Vector x, N_Ve
 
 // A vector of n zeros with every operation CVODE, its Newton and fixed-point solvers and the block
 // linear solver below use.
-N_Vector make(sunindextype n, SUNContext ctx) {
+N_Vector make(std::shared_ptr<const std::vector<sunindextype>> block_ends, SUNContext ctx) {
+  const sunindextype n = block_ends->back();
   N_Vector v = N_VNewEmpty(ctx);
   if (!v) return nullptr;
   N_Vector_Ops ops = v->ops;
@@ -245,7 +265,7 @@ N_Vector make(sunindextype n, SUNContext ctx) {
   ops->nvwsqrsumlocal = wsqr_sum;
   ops->nvlinearcombination = linear_combination;
   ops->nvscaleaddmulti = scale_add_multi;
-  v->content = new Content{n, new sunrealtype[static_cast<std::size_t>(n)](), true};
+  v->content = new Content{n, new sunrealtype[static_cast<std::size_t>(n)](), true, std::move(block_ends)};
   return v;
 }
 
@@ -362,7 +382,7 @@ SUNLinearSolver make_solver(SUNContext ctx) {
 // profile's sampling and the scenes of a sweep. One context per thread, as SUNDIALS asks.
 struct Workspace {
   Integrator kind;
-  int columns;
+  std::vector<int> blocks;  // columns of each independent problem (CvodeIntegrator's blocks)
   // Destroyed in reverse order: CVODE's memory before the solvers and vectors it uses, the context last.
   ContextHandle context;
   VectorHandle y;
@@ -375,15 +395,18 @@ struct Workspace {
 namespace {
 
 // rhs and jac reach the current use's model through CVODE's user data (CvodeIntegrator::Impl).
-std::unique_ptr<Workspace> make_workspace(Integrator kind, int columns, CVRhsFn rhs, CVLsJacFn jac) {
+std::unique_ptr<Workspace> make_workspace(Integrator kind, const std::vector<int>& blocks, CVRhsFn rhs,
+                                          CVLsJacFn jac) {
   auto w = std::make_unique<Workspace>();
   w->kind = kind;
-  w->columns = columns;
+  w->blocks = blocks;
   SUNContext ctx = nullptr;
   check(SUNContext_Create(nullptr, &ctx), "SUNContext_Create");
   w->context.reset(ctx);
-  const sunindextype n = static_cast<sunindextype>(kStateSize) * columns;
-  w->y.reset(vector::make(n, ctx));
+  auto block_ends = std::make_shared<std::vector<sunindextype>>();
+  sunindextype end = 0;
+  for (const int columns : blocks) block_ends->push_back(end += static_cast<sunindextype>(kStateSize) * columns);
+  w->y.reset(vector::make(std::move(block_ends), ctx));
   if (!w->y) throw std::runtime_error("N_VNewEmpty failed");
   w->cvode.reset(CVodeCreate(kind == Integrator::adams ? CV_ADAMS : CV_BDF, ctx));
   if (!w->cvode) throw std::runtime_error("CVodeCreate failed");
@@ -411,15 +434,16 @@ std::vector<std::unique_ptr<Workspace>>& idle_workspaces() {
   return pool;
 }
 
-std::unique_ptr<Workspace> take_workspace(Integrator kind, int columns, CVRhsFn rhs, CVLsJacFn jac) {
+std::unique_ptr<Workspace> take_workspace(Integrator kind, const std::vector<int>& blocks, CVRhsFn rhs,
+                                          CVLsJacFn jac) {
   auto& pool = idle_workspaces();
   for (auto it = pool.begin(); it != pool.end(); ++it)
-    if ((*it)->kind == kind && (*it)->columns == columns) {
+    if ((*it)->kind == kind && (*it)->blocks == blocks) {
       std::unique_ptr<Workspace> w = std::move(*it);
       pool.erase(it);
       return w;
     }
-  return make_workspace(kind, columns, rhs, jac);
+  return make_workspace(kind, blocks, rhs, jac);
 }
 
 void return_workspace(std::unique_ptr<Workspace> w) {
@@ -472,9 +496,15 @@ struct CvodeIntegrator::Impl {
 
 CvodeIntegrator::CvodeIntegrator(const OdeSystem& system, Integrator kind, double rtol, double atol,
                                  std::int64_t max_steps, int columns, bool restart_at_breakpoints)
-    : impl_(std::make_unique<Impl>(system, columns, restart_at_breakpoints)) {
+    : CvodeIntegrator(system, kind, rtol, atol, max_steps, std::vector<int>{columns}, restart_at_breakpoints) {}
+
+CvodeIntegrator::CvodeIntegrator(const OdeSystem& system, Integrator kind, double rtol, double atol,
+                                 std::int64_t max_steps, const std::vector<int>& blocks,
+                                 bool restart_at_breakpoints)
+    : impl_(std::make_unique<Impl>(system, std::accumulate(blocks.begin(), blocks.end(), 0),
+                                   restart_at_breakpoints)) {
   Impl& m = *impl_;
-  m.workspace = take_workspace(kind, columns, &Impl::rhs, &Impl::jac);
+  m.workspace = take_workspace(kind, blocks, &Impl::rhs, &Impl::jac);
   void* mem = m.workspace->cvode.get();
   // Everything a previous use set is set anew: the error handler's and the functions' data, the
   // tolerances, the step limit (the stop time and the history are set by every span's CVodeReInit).

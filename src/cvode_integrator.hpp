@@ -65,6 +65,12 @@ class CvodeIntegrator {
   // The system must outlive the integrator.
   CvodeIntegrator(const OdeSystem& system, Integrator kind, double rtol, double atol, std::int64_t max_steps,
                   int columns, bool restart_at_breakpoints = true);
+  // A state of several independent problems side by side, blocks[k] columns each (multiple shooting's
+  // segments integrated together): CVODE's weighted RMS norm, in its error test and its iteration's
+  // convergence test, is the largest of the blocks' own, so each problem is held to rtol and atol as if
+  // integrated alone. The columns are sum(blocks).
+  CvodeIntegrator(const OdeSystem& system, Integrator kind, double rtol, double atol, std::int64_t max_steps,
+                  const std::vector<int>& blocks, bool restart_at_breakpoints = true);
   ~CvodeIntegrator();
   CvodeIntegrator(const CvodeIntegrator&) = delete;
   CvodeIntegrator& operator=(const CvodeIntegrator&) = delete;

@@ -162,7 +162,14 @@ class ArchModel {
   std::optional<double> hinge_;
   BoundaryConditions bc_;
   double total_load_ = 0, load_moment_ = 0;
-  double distributed_load(const CurvePoint& p) const;  // b beyond the self-weight at the axis point p
+  // b beyond the self-weight at scaled arc length s, whose axis point is p.
+  double distributed_load(double s, const CurvePoint& p) const;
+  // Where each live load acts, in scaled arc length: the same numbers as its breakpoints, so that the
+  // load switches exactly where the integrator restarts (not where x(s) = a L rounds to one side).
+  struct LiveSpan {
+    double from = 0, to = 0, intensity = 0;
+  };
+  std::vector<LiveSpan> live_spans_;
 };
 
 // The six equations of the header comment.
