@@ -67,9 +67,11 @@ class SegmentsSystem final : public OdeSystem {
   bool rhs(double tau, const Eigen::Ref<const OdeMatrix>& Y, Eigen::Ref<OdeMatrix> dY) const override {
     for (const Segment& g : segments_) {
       const double s = std::clamp(g.start + tau * g.length, g.inside_start, g.inside_end);
-      const SystemMatrix A = g.length * model_.system_matrix(model_.theta(s));
-      dY.middleCols(g.column, g.width).noalias() = A * Y.middleCols(g.column, g.width);
-      dY(kFy, g.column + g.width - 1) += g.length * model_.load(s);
+      const double theta = model_.theta(s), c = std::cos(theta), sn = std::sin(theta);
+      const Eigen::Index last = g.column + g.width - 1;
+      for (Eigen::Index j = g.column; j < last; ++j) model_.derivative(c, sn, Y.col(j).data(), dY.col(j).data(), 0.0);
+      model_.derivative(c, sn, Y.col(last).data(), dY.col(last).data(), model_.load(s));
+      dY.middleCols(g.column, g.width) *= g.length;
     }
     return true;
   }
