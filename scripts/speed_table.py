@@ -101,6 +101,11 @@ def main():
             else:
                 line += " | |"
         print(line)
+    # Issue 14's bound on multiple shooting: 8 segments at most 2.5 times single shooting, same scene.
+    single = median[("new", "raw shooting adams, eps 0.5")]
+    multiple = median[("new", "raw multiple shooting adams 8 segments, eps 0.5")]
+    print()
+    print(f"Multiple shooting (8 segments) / single shooting, raw Adams, eps 0.5: {multiple / single:.2f}")
 
 
 if __name__ == "__main__":

@@ -2,9 +2,9 @@
 // cvode_integrator.cpp. Every SUNDIALS object is owned by RAII handles; every return flag is checked.
 //
 // It integrates a system handed to it (Boost.Odeint's way: the integrator owns no model), whose state is
-// a 6 x columns matrix Y: for ogive's linear problem Y' = A(s) Y + b(s) e_last^T, with columns = 7 and
-// Y(s0) = [I | 0] the fundamental matrix and the load's particular solution of a shooting segment, with
-// columns = 1 one state. One CVODE instance is taken per integrator from a per-thread pool and
+// a 6 x columns matrix Y: for ogive's linear problem Y' = A(s) Y + b(s) e_last^T, the columns of a
+// shooting map or transfer (shooting.hpp), or one state (columns = 1); for the no-tension section a
+// state and its variations. One CVODE instance is taken per integrator from a per-thread pool and
 // re-initialised for every span, never rebuilt.
 #pragma once
 

@@ -1,10 +1,16 @@
 // Single and multiple shooting for the linear boundary-value problem of ArchModel, with CVODE.
 //
-// Each shooting segment [s_k, s_k+1] yields its fundamental matrix Phi_k and the load's particular
-// solution p_k from one CVODE integration of 7 columns. Multiple shooting keeps every segment's start
-// state y_k as an unknown: springing conditions, continuity y_k+1 = Phi_k y_k + p_k and crown
-// conditions form one block-bidiagonal sparse system solved by Eigen's SparseLU. Nothing is condensed,
-// so the growth of Phi over one segment, not over the whole arch, sets the conditioning.
+// Single shooting integrates the state's affine map [T | c] from the springing (its m unknown
+// directions and the particular solution: 4 columns, 5 with a crown hinge) to the domain's end, across
+// point loads and the hinge (bvp.hpp's march adds them between pieces), and solves the m x m condensed
+// end conditions. Multiple shooting integrates that map over its first segment only; every later
+// segment k gives its transfer y(s_k+1) = Phi_k y(s_k) + p_k from 5 integrated columns (unit psi, Fx,
+// Fy, M and the load's; a unit Ux or Uy stays one exactly), applied to the map in turn, so that no
+// integration error grows over more than one segment. With Adams all segments are integrated in one
+// CVODE run, side by side in a normalised parameter, each held to the tolerance by a block error norm
+// (one start-up of Adams instead of one per segment); with BDF one after the other. The condition
+// estimate is the boundary-value problem's (Skeel's, on the condensed system): the same for every
+// segment count.
 #pragma once
 
 #include <memory>
