@@ -108,35 +108,29 @@ ArchModel::ArchModel(Scene scene, bool whole_arch_domain) : scene_(std::move(sce
   std::sort(breakpoints_.begin(), breakpoints_.end());
   breakpoints_.erase(std::unique(breakpoints_.begin(), breakpoints_.end()), breakpoints_.end());
 
-  // The conditions, each fixing one component (springing_split relies on it).
-  const Support& left = scene_.left;
-  bc_.at_start(0, kUx) = 1.0;
-  bc_.rhs(0) = -left.spread / scales_.displacement;  // outward = -x
-  bc_.at_start(1, kUy) = 1.0;
-  bc_.rhs(1) = -left.settlement / scales_.displacement;
-  if (left.kind == SupportKind::clamped) {
-    bc_.at_start(2, kPsi) = 1.0;
-    bc_.rhs(2) = left.rotation / scales_.rotation;
-  } else {
-    bc_.at_start(2, kM) = 1.0;
-  }
+  // The conditions, each fixing one component (springing_split relies on it). A springing fixes its
+  // displacements (its spread outwards: -x at the left, +x at the right) and its rotation if clamped,
+  // else its moment; the half's crown its symmetry (Ux, psi or the hinge's M, and Fy).
+  auto springing = [&](const Support& support, double outward, Eigen::Index first, SystemMatrix& at) {
+    at(first, kUx) = 1.0;
+    bc_.rhs(first) = outward * support.spread / scales_.displacement;
+    at(first + 1, kUy) = 1.0;
+    bc_.rhs(first + 1) = -support.settlement / scales_.displacement;
+    if (support.kind == SupportKind::clamped) {
+      at(first + 2, kPsi) = 1.0;
+      bc_.rhs(first + 2) = support.rotation / scales_.rotation;
+    } else {
+      at(first + 2, kM) = 1.0;
+    }
+  };
+  springing(scene_.left, -1.0, 0, bc_.at_start);
   if (half_) {
     bc_.at_end(3, kUx) = 1.0;
     bc_.at_end(4, scene_.crown_hinge ? kM : kPsi) = 1.0;
     bc_.at_end(5, kFy) = 1.0;
     bc_.rhs(5) = -crown_load_;
   } else {
-    const Support& right = scene_.right;
-    bc_.at_end(3, kUx) = 1.0;
-    bc_.rhs(3) = right.spread / scales_.displacement;  // outward = +x
-    bc_.at_end(4, kUy) = 1.0;
-    bc_.rhs(4) = -right.settlement / scales_.displacement;
-    if (right.kind == SupportKind::clamped) {
-      bc_.at_end(5, kPsi) = 1.0;
-      bc_.rhs(5) = right.rotation / scales_.rotation;
-    } else {
-      bc_.at_end(5, kM) = 1.0;
-    }
+    springing(scene_.right, 1.0, 3, bc_.at_end);
   }
 
   // The domain's load and its moment about the left springing, for the equilibrium residual: the
