@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <memory>
 #include <numeric>
-#include <cstdlib>
 #include <stdexcept>
 
 #include <Eigen/LU>
@@ -126,7 +126,7 @@ OGIVE_VECTOR_LOOP void linear_sum(sunrealtype a, N_Vector x, sunrealtype b, N_Ve
     if (az == 1 && ao == 1)
       for (sunindextype i = 0; i < n; ++i) zz[i] = zz[i] + od[i];
     else
-      for (sunindextype i = 0; i < n; ++i) zz[i] = first ? az * zz[i] + ao * od[i] : ao * od[i] + az * zz[i];
+      for (sunindextype i = 0; i < n; ++i) zz[i] = az * zz[i] + ao * od[i];  // + commutes exactly
     return;
   }
   const sunrealtype* __restrict xd = data(x);

@@ -16,15 +16,6 @@
 namespace ogive {
 namespace {
 
-std::string failure_message(const IntegrationError& e, const ArchModel& model, std::size_t segment,
-                            std::size_t segments) {
-  std::string text = fmt::format("CVODE {} at s = {:.6g} m (shooting segment {} of {})", e.flag_name,
-                                 e.s * model.scales().length, segment + 1, segments);
-  if (!e.detail.empty()) text += ": " + e.detail;
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  return text;
-}
-
 // ArchModel's problem as the integrator's system: Y' = A(theta(s)) Y + b(s) e_Fy e_last^T (the load
 // rides on the last column: the particular solution, or the one state of a field's integration).
 class ArchSystem final : public OdeSystem {
@@ -94,6 +85,22 @@ class SegmentsSystem final : public OdeSystem {
   std::vector<Segment> segments_;
   std::vector<double> none_;
 };
+
+// Where CVODE stopped: e.s is the scaled arc length, or, for segments integrated together, the fraction
+// tau of every segment's length (then s is given in the first segment).
+std::string failure_message(const IntegrationError& e, const ArchModel& model, std::size_t segment,
+                            std::size_t segments, const SegmentsSystem* together) {
+  const double L = model.scales().length;
+  std::string text =
+      together ? fmt::format("CVODE {} at {:.3g} of every segment's length, s = {:.6g} m in the first (the {} "
+                             "segments integrated together)",
+                             e.flag_name, e.s, together->s_at(0, e.s) * L, segments)
+               : fmt::format("CVODE {} at s = {:.6g} m (shooting segment {} of {})", e.flag_name, e.s * L,
+                             segment + 1, segments);
+  if (!e.detail.empty()) text += ": " + e.detail;
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  return text;
+}
 
 // The shooting solution's field: integrates the solved state from the start of its piece.
 class ShootingField final : public PiecewiseField {
@@ -206,7 +213,6 @@ Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& o
     const double one = 1.0;
     failure = together_integrator->integrate(0.0, initial, std::span<const double>(&one, 1),
                                              [&](std::size_t, const CvodeIntegrator::Matrix& Y) { together_end = Y; });
-    if (failure) failure->s = segments_system->s_at(0, failure->s);  // reported in the first segment's s
     failed_piece = 0;
     return !failure;
   };
@@ -246,7 +252,9 @@ Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& o
   }
   if (!ok) {
     sol.status = Status::integrator_failure;
-    sol.message = failure ? failure_message(*failure, *model, failed_piece, K) : "integration failed";
+    sol.message = failure ? failure_message(*failure, *model, failed_piece, K,
+                                            together ? &*segments_system : nullptr)
+                          : "integration failed";
     return sol;
   }
   // The condition of the boundary-value problem, not of a discretisation of it: the equations in the
