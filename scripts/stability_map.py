@@ -3,13 +3,14 @@
 
     python3 scripts/stability_map.py [--ogive build/ogive] [--csv data/benchmarks/stability-map.csv]
 
-Runs `ogive bench` (one solve per row, no timing repeats) over five sweeps:
+Runs `ogive bench` (one solve per row, no timing repeats) over six sweeps:
 
   slenderness   t/L 0.2 .. 1e-5, semicircular and pointed (eps 1)
   pointedness   eccentricity 0 .. 5
   flatness      segmental arches, rise/L 0.5 .. 0.02
   jumps         three- and four-centred arches (curvature jumps), with and without restarts there
   surveys       the points files of data/curves/
+  whole arches  point, live and fill loads, a pinned and a settling springing, a hinge, a whole survey
 
 for single and multiple shooting, Adams and BDF, and the quadrature method, and rtol 1e-4 .. 1e-12, twice: with `--no-verify`
 (the raw method: how far its true error strays from rtol) and verified, as ogive runs by default (the
@@ -62,6 +63,27 @@ for name in ["parabola-40.csv", "semicircle-24.csv", "catenary-survey.csv"]:
     SCENES.append(("surveys", f"points {name}", ["--curve", "points", "--curve-file", os.path.join(CURVES, name)]))
     SCENES.append(("surveys", f"points {name} no restarts",
                    ["--curve", "points", "--curve-file", os.path.join(CURVES, name), "--ignore-breakpoints"]))
+
+# Whole arches (issue 11): loads, supports and hinges that make a scene asymmetric, solved over the whole
+# arch (a fill, symmetric, with --whole-arch). The reference is the closed form where it applies (point
+# loads, supports, hinges on circular arcs), else verified multiple shooting at rtol 1e-12.
+LOADS = os.path.join(ROOT, "data", "loads")
+for label, opts in [
+        ("semicircular point load at L/4", ["--curve", "semicircular", "--point-load", "2e4", "--point-load-at", "0.25"]),
+        ("semicircular live load on the left half", ["--curve", "semicircular", "--live-load", "5e3", "--live-load-to", "0.5"]),
+        ("catenary rise 0.4 point and live loads file", ["--curve", "catenary", "--rise-ratio", "0.4", "--loads-file",
+                                                         os.path.join(LOADS, "quarter-point-and-half-live.csv")]),
+        ("parabola rise 0.3 left pinned, right settles 1e-4 L", ["--curve", "parabolic", "--rise-ratio", "0.3",
+                                                                 "--left-support", "pinned",
+                                                                 "--right-settlement-ratio", "1e-4"]),
+        ("pointed eps 0.5 three-hinged, point load at 0.3 L", ["--eccentricity", "0.5", "--supports", "pinned",
+                                                               "--crown-hinge", "--point-load", "1e4",
+                                                               "--point-load-at", "0.3"]),
+        ("ellipse rise 0.4 fill 0.5 L, whole domain", ["--curve", "elliptical", "--rise-ratio", "0.4", "--fill-density",
+                                                       "1800", "--fill-height-ratio", "0.5", "--whole-arch"]),
+        ("whole points rampant-survey.csv", ["--curve", "whole-points", "--curve-file",
+                                             os.path.join(CURVES, "rampant-survey.csv")])]:
+    SCENES.append(("whole arches", label, opts))
 
 # The cracking arch (--cracking): the no-tension section as hinges form (d/L 1e-4) and once they have
 # (1e-2), each scene solved on its own (no continuation: the path of smaller movements inside the solve).
