@@ -1528,14 +1528,16 @@ int run_bench(SceneOptions& so, const CLI::App& cmd, const SolverSweep& sweep, i
       [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
         CsvRow row(columns.keep());
         const Solution reference = reference_solution(scene, ref_options);
-        const bool circular = !scene.curve->arcs().empty();
+        // The reference is the closed form exactly where it applies (a piecewise-circular curve, the
+        // elastic section, no live load or fill).
+        const bool closed_form_applies = reference.method == Method::closed_form;
         for (const Options& o : sweep.combinations) {
           const Method m = o.method;
           const double rtol = o.rtol;
-          if (m == Method::closed_form && !circular) continue;  // not applicable
-          // The closed form has neither integrator nor tolerance; auto on a circular arc is the closed form:
+          if (m == Method::closed_form && !closed_form_applies) continue;  // not applicable
+          // The closed form has neither integrator nor tolerance; auto where it applies is the closed form:
           // one row, not one per integrator and rtol.
-          const bool exact = m == Method::closed_form || (m == Method::automatic && circular);
+          const bool exact = m == Method::closed_form || (m == Method::automatic && closed_form_applies);
           if (exact && (o.integrator != first.integrator || o.rtol != first.rtol)) continue;
           if (m == Method::quadrature && o.integrator != first.integrator) continue;  // no integrator
           std::vector<double> seconds;

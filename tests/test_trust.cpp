@@ -379,6 +379,20 @@ TEST_CASE("trust: bench and curve print what they promise") {
     CHECK(std::stod(column(b.out, "median_seconds", row)) > 0);
   }
   CHECK(column(b.out, "chosen_method", 4) == "closed-form");
+  // On a circular arc under a live load the closed form does not apply: auto is CVODE shooting, one row
+  // per rtol, each within its own rtol (bench printed one row, as if auto were the closed form).
+  const Run live = run_command({"bench", "--curve", "semicircular", "--live-load", "5e3", "--live-load-to", "0.5",
+                                "--methods", "closed-form,auto", "--rtols", "1e-6,1e-10", "--repeats", "1"});
+  REQUIRE(live.status == 0);
+  REQUIRE(lines(live.out).size() == 1 + 2);  // no closed-form row: not applicable
+  for (std::size_t row : {1, 2}) {
+    CAPTURE(row);
+    CHECK(column(live.out, "method", row) == "auto");
+    CHECK(column(live.out, "status", row) == "success");
+    const double rtol = std::stod(column(live.out, "rtol", row));
+    CHECK(within_tolerance(std::stod(column(live.out, "error_H_over_V", row)), rtol));
+    CHECK(within_tolerance(std::stod(column(live.out, "error_profile", row)), rtol));
+  }
   const Run c = run_command({"curve", "--curve", "parabolic", "--rise-ratio", "0.25", "--stations", "5"});
   REQUIRE(c.status == 0);
   REQUIRE(lines(c.out).size() == 1 + 5);
