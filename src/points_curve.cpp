@@ -353,6 +353,12 @@ std::shared_ptr<const Curve> fit_whole_points(const std::vector<std::pair<double
                             "here, the chord's height {} (heights above the left springing)",
                             y[i], chord));
   }
+  // And it has a crown: its highest point lies between the springings (found by fuzzing: points that
+  // only fall from the left springing, all above the chord, gave a curve of rise 0).
+  if (highest == 0 || highest == n - 1)
+    report(highest, fmt::format("the highest point is the {} springing: a whole arch rises from both springings to a "
+                                "crown between them",
+                                highest == 0 ? "left" : "right"));
   return std::make_shared<WholePointsCurve>(std::move(x), std::move(y), report);
 }
 

@@ -324,6 +324,11 @@ TEST_CASE("whole points file errors name the line and the rule") {
       {"x,y\n0,0\n1,1\n2,1\n3,1.5\n4,1.5\n6,3\n", 4, "must lie above the chord joining them: y = 1 here, the chord's "
                                                     "height 1"},
       {"x,y\n10,5\n11,7\n12,7.5\n13,6.4\n14,7.1\n", 5, "above the chord"},  // 6.4 below the chord's 6.575
+      // Found by fuzzing: points that only fall from the left springing (all above the chord), and their
+      // mirror image, have no crown between the springings.
+      {"x,y\n100,52.594\n103.554,52.583\n103.868,52.546\n104.183,52.477\n104.482,52.382\n106.002,51.260\n", 2,
+       "the highest point is the left springing: a whole arch rises from both springings to a crown between them"},
+      {"x,y\n0,0\n1,0.9\n2,1.6\n3,2\n", 5, "the highest point is the right springing"},
       // The fit.
       {"x,y\n0,0\n0.01,1\n0.02,2\n2,2.1\n4,0\n", 3, "the spline folds back between this point and the previous one"},
       {"x,y\n0,0\n1,1\n1.01,3\n3,3.1\n4,0\n", 4, "the spline folds back"},
