@@ -193,14 +193,17 @@ Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& o
     failed_piece = k;
     return !failure;
   };
-  OdeMatrix start = OdeMatrix::Zero(kStateSize, kIntegratedColumns);
+  // A later segment's start: unit psi, Fx, Fy and M, and the load's column at zero (fixed size: single
+  // shooting, the hot path, allocates nothing for it).
+  Eigen::Matrix<double, kStateSize, kIntegratedColumns> start = Eigen::Matrix<double, kStateSize, kIntegratedColumns>::Zero();
   for (int j = 0; j < 4; ++j) start(kIntegratedStarts[j], j) = 1.0;
-  std::vector<int> widths(K, kIntegratedColumns);
-  widths[0] = m + 1;
+  std::vector<int> widths;  // columns per segment, when they are integrated together
   std::optional<SegmentsSystem> segments_system;
   std::optional<CvodeIntegrator> together_integrator;
   OdeMatrix together_end;
   if (together) {
+    widths.assign(K, kIntegratedColumns);
+    widths[0] = m + 1;
     segments_system.emplace(*model, knots, widths);
     together_integrator.emplace(*segments_system, options.integrator, tol.rtol, tol.atol, options.max_steps,
                                 widths, options.restart_at_breakpoints);

@@ -204,6 +204,22 @@ TEST_CASE("no-tension: single and multiple shooting agree on cracked scenes") {
   }
 }
 
+// A scene by the quadrature form (verified at kRtol, with a profile) and its reference, multiple
+// shooting at kRtol / 10, whose own estimate the comparisons add.
+struct AgainstShooting {
+  Solution quadrature, reference;
+};
+AgainstShooting quadrature_against_shooting(const Scene& s) {
+  Options o = shooting(Method::quadrature);
+  o.stations = 65;
+  AgainstShooting r;
+  r.quadrature = solve(s, o);
+  o.method = Method::multiple_shooting;
+  o.rtol = kRtol / 10;
+  r.reference = solve(s, o);
+  return r;
+}
+
 TEST_CASE("no-tension quadrature: agrees with multiple shooting on cracked scenes (reactions and profiles)") {
   // Two independent methods (explicit forces and adaptive Gauss-Kronrod against CVODE through the same
   // hinges): the quadrature's reactions and profile, verified at rtol, within rtol of multiple
@@ -211,12 +227,7 @@ TEST_CASE("no-tension quadrature: agrees with multiple shooting on cracked scene
   for (double d : {0.0, 1e-4}) {
     for (double eps : {0.0, 0.5}) {
       const Scene s = no_tension(eps, 0.08, d);
-      Options o = shooting(Method::quadrature);
-      o.stations = 65;
-      const Solution quadrature = solve(s, o);
-      o.method = Method::multiple_shooting;
-      o.rtol = kRtol / 10;
-      const Solution reference = solve(s, o);
+      const auto [quadrature, reference] = quadrature_against_shooting(s);
       CAPTURE(d);
       CAPTURE(eps);
       REQUIRE(quadrature.ok());
@@ -262,12 +273,7 @@ TEST_CASE("no-tension quadrature: whole arches, pinned springings, point, live a
   }
   for (const auto& [name, s] : scenes) {
     CAPTURE(name);
-    Options o = shooting(Method::quadrature);
-    o.stations = 65;
-    const Solution quadrature = solve(s, o);
-    o.method = Method::multiple_shooting;
-    o.rtol = kRtol / 10;
-    const Solution reference = solve(s, o);
+    const auto [quadrature, reference] = quadrature_against_shooting(s);
     REQUIRE(quadrature.ok());
     REQUIRE(reference.field);
     CHECK(solution_difference(quadrature, reference) <= kRtol + reference.diagnostics.error_estimate);
