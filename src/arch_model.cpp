@@ -182,18 +182,32 @@ double ArchModel::load(double s) const {
   return self_weight_ + distributed_load(s, curve_->at(s * scales_.length));
 }
 
-SystemMatrix ArchModel::system_matrix(double theta) const {
+ArchModel::SystemEntries ArchModel::system_entries(double theta) const {
   const double c = std::cos(theta), sn = std::sin(theta);
+  SystemEntries e;
+  e.ux_psi = -sn;
+  e.ux_fx = a_N_ * c * c + a_V_ * sn * sn;
+  e.ux_fy = (a_N_ - a_V_) * c * sn;
+  e.uy_psi = c;
+  e.uy_fx = (a_N_ - a_V_) * c * sn;
+  e.uy_fy = a_N_ * sn * sn + a_V_ * c * c;
+  e.m_fx = sn;
+  e.m_fy = -c;
+  return e;
+}
+
+SystemMatrix ArchModel::system_matrix(double theta) const {
+  const SystemEntries e = system_entries(theta);
   SystemMatrix A = SystemMatrix::Zero();
-  A(kUx, kPsi) = -sn;
-  A(kUx, kFx) = a_N_ * c * c + a_V_ * sn * sn;
-  A(kUx, kFy) = (a_N_ - a_V_) * c * sn;
-  A(kUy, kPsi) = c;
-  A(kUy, kFx) = (a_N_ - a_V_) * c * sn;
-  A(kUy, kFy) = a_N_ * sn * sn + a_V_ * c * c;
+  A(kUx, kPsi) = e.ux_psi;
+  A(kUx, kFx) = e.ux_fx;
+  A(kUx, kFy) = e.ux_fy;
+  A(kUy, kPsi) = e.uy_psi;
+  A(kUy, kFx) = e.uy_fx;
+  A(kUy, kFy) = e.uy_fy;
   A(kPsi, kM) = 1.0;
-  A(kM, kFx) = sn;
-  A(kM, kFy) = -c;
+  A(kM, kFx) = e.m_fx;
+  A(kM, kFy) = e.m_fy;
   return A;
 }
 

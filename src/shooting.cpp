@@ -22,7 +22,7 @@ class ArchSystem final : public OdeSystem {
  public:
   explicit ArchSystem(const ArchModel& model) : model_(model) {}
   bool rhs(double s, const Eigen::Ref<const OdeMatrix>& Y, Eigen::Ref<OdeMatrix> dY) const override {
-    const SystemMatrix A = model_.system_matrix(model_.theta(s));
+    const ArchModel::SystemEntries A = model_.system_entries(model_.theta(s));
     for (Eigen::Index j = 0; j < Y.cols(); ++j) ArchModel::apply_system_matrix(A, Y.col(j).data(), dY.col(j).data());
     dY(kFy, Y.cols() - 1) += model_.load(s);
     return true;

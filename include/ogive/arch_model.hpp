@@ -106,11 +106,16 @@ class ArchModel {
   double a_V() const { return a_V_; }
 
   double theta(double s) const;      // tangent angle at scaled arc length s
-  SystemMatrix system_matrix(double theta) const;  // A(theta)
-  // dy = A y for A = system_matrix(theta), multiplying only the nine entries system_matrix sets: the
-  // sums of the full product in its order, less terms that are exact zeros (so the same numbers, at a
-  // quarter of the work; shooting's right-hand side runs this for every column).
-  static void apply_system_matrix(const SystemMatrix& A, const double* y, double* dy);
+  // A(theta)'s entries that can be non-zero (every other entry is 0 for every theta; A(psi, M) = 1).
+  struct SystemEntries {
+    double ux_psi, ux_fx, ux_fy, uy_psi, uy_fx, uy_fy, m_fx, m_fy;
+  };
+  SystemEntries system_entries(double theta) const;
+  SystemMatrix system_matrix(double theta) const;  // A(theta), from system_entries
+  // dy = A y over A's entries that can be non-zero: the sums of the full product in its order, less
+  // terms that are exact zeros, so the same numbers at a quarter of the work (shooting's right-hand
+  // side runs this for every column).
+  static void apply_system_matrix(const SystemEntries& A, const double* y, double* dy);
   // b(s): the vertical load per axis length at s, over w.
   double load(double s) const;
   // True when b is the same constant everywhere and there are no point loads (self-weight alone).
@@ -176,13 +181,13 @@ class ArchModel {
   std::vector<LiveSpan> live_spans_;
 };
 
-inline void ArchModel::apply_system_matrix(const SystemMatrix& A, const double* y, double* dy) {
-  dy[kUx] = A(kUx, kPsi) * y[kPsi] + A(kUx, kFx) * y[kFx] + A(kUx, kFy) * y[kFy];
-  dy[kUy] = A(kUy, kPsi) * y[kPsi] + A(kUy, kFx) * y[kFx] + A(kUy, kFy) * y[kFy];
-  dy[kPsi] = A(kPsi, kM) * y[kM];
+inline void ArchModel::apply_system_matrix(const SystemEntries& A, const double* y, double* dy) {
+  dy[kUx] = A.ux_psi * y[kPsi] + A.ux_fx * y[kFx] + A.ux_fy * y[kFy];
+  dy[kUy] = A.uy_psi * y[kPsi] + A.uy_fx * y[kFx] + A.uy_fy * y[kFy];
+  dy[kPsi] = y[kM];
   dy[kFx] = 0.0;
   dy[kFy] = 0.0;
-  dy[kM] = A(kM, kFx) * y[kFx] + A(kM, kFy) * y[kFy];
+  dy[kM] = A.m_fx * y[kFx] + A.m_fy * y[kFy];
 }
 
 // The six equations of the header comment.
