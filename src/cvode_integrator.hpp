@@ -57,10 +57,12 @@ class CvodeIntegrator {
   // Receives output index i and Y at s_out[i].
   using Observer = std::function<void(std::size_t, const Matrix&)>;
 
-  // Adams uses CVODE's fixed-point (functional) iteration: the system is not stiff. BDF uses Newton
-  // with the analytic Jacobian, block diagonal with A(theta) in every column's block, and a linear
-  // solver that factors that one 6x6 block. Vectors are ogive's own N_Vector type.
-  // atol applies to every scaled component. restart_at_breakpoints = false lets steps straddle the
+  // Adams uses the fixed-point (functional) iteration, SUNDIALS' plain one re-implemented with fused
+  // vector loops (the same numbers): the system is not stiff. BDF uses Newton with the analytic
+  // Jacobian, block diagonal with A(theta) in every column's block, and a linear solver that factors
+  // that one 6x6 block. Vectors are ogive's own N_Vector type, with kernels compiled for the lengths of
+  // 1 to 5 columns. rtol and atol must be > 0 (std::invalid_argument); CVODE's error weights are its
+  // scalar-tolerance ones, 1 / (rtol |y_i| + atol): atol applies to every scaled component. restart_at_breakpoints = false lets steps straddle the
   // curve's jumps of curvature (for studies only). Throws std::runtime_error if SUNDIALS cannot allocate.
   // The system must outlive the integrator.
   CvodeIntegrator(const OdeSystem& system, Integrator kind, double rtol, double atol, std::int64_t max_steps,
