@@ -787,7 +787,7 @@ std::optional<IntegrationError> CvodeIntegrator::integrate(double s0, const Matr
       const int flag = CVode(mem, tout, w.y.get(), &t, CV_NORMAL);
       if (flag < 0) {
         sunrealtype t_now = a;
-        CVodeGetCurrentTime(mem, &t_now);
+        check(CVodeGetCurrentTime(mem, &t_now), "CVodeGetCurrentTime");
         failure = IntegrationError{flag, flag_name(flag), t_now, m.last_message};
         return false;
       }
@@ -802,15 +802,17 @@ std::optional<IntegrationError> CvodeIntegrator::integrate(double s0, const Matr
     // No output left in this span: run to the breakpoint so that the next span starts there.
     if (!failure && reached < b) advance(b);
     // Counters restart with every CVodeReInit: collect them span by span.
-    long steps = 0, rhs = 0, etf = 0, jacs = 0;
-    CVodeGetNumSteps(mem, &steps);
-    CVodeGetNumRhsEvals(mem, &rhs);
-    CVodeGetNumErrTestFails(mem, &etf);
-    if (w.jacobian) CVodeGetNumJacEvals(mem, &jacs);
+    long steps = 0, rhs = 0, etf = 0, jacs = 0, ncf = 0;
+    check(CVodeGetNumSteps(mem, &steps), "CVodeGetNumSteps");
+    check(CVodeGetNumRhsEvals(mem, &rhs), "CVodeGetNumRhsEvals");
+    check(CVodeGetNumErrTestFails(mem, &etf), "CVodeGetNumErrTestFails");
+    check(CVodeGetNumNonlinSolvConvFails(mem, &ncf), "CVodeGetNumNonlinSolvConvFails");
+    if (w.jacobian) check(CVodeGetNumJacEvals(mem, &jacs), "CVodeGetNumJacEvals");
     stats_.steps += steps;
     stats_.rhs_evaluations += rhs;
     stats_.error_test_failures += etf;
     stats_.jacobian_evaluations += jacs;
+    stats_.convergence_failures += ncf;
     if (failure) return failure;
   }
   return std::nullopt;

@@ -24,6 +24,9 @@ namespace ogive {
 
 struct IntegratorStats {
   std::int64_t steps = 0, rhs_evaluations = 0, error_test_failures = 0, jacobian_evaluations = 0;
+  // Steps whose nonlinear iteration (fixed-point or Newton) failed to converge: CVODE retried them with
+  // a smaller step.
+  std::int64_t convergence_failures = 0;
 };
 
 struct IntegrationError {
