@@ -1754,37 +1754,53 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   Options thrust_options, profile_options, check_options_, bench_options;
   SolverText thrust_text, profile_text, check_text, bench_text;
   profile_options.stations = 101;
+  // Only the subcommand named first on the command line is given its options: CLI11 checks every new
+  // option's names against all of its command's others, and giving all seven commands theirs was half
+  // of ogive's start-up (7 of 15 million instructions, 2 ms). The others are still registered, so
+  // `ogive --help` lists them and a misspelt one is still named.
+  const std::string named = args.empty() ? std::string() : args.front();
+  const auto wanted = [&](const CLI::App* cmd) { return cmd->get_name() == named; };
 
   CLI::App* thrust = app.add_subcommand("thrust", "reactions H, V and H/V: one row per scene");
-  add_scene_options(*thrust, thrust_scene);
-  add_solver_options(*thrust, thrust_options, thrust_text);
+  if (wanted(thrust)) {
+    add_scene_options(*thrust, thrust_scene);
+    add_solver_options(*thrust, thrust_options, thrust_text);
+  }
 
   CLI::App* profile = app.add_subcommand("profile", "N, V, M, e and the thrust line along the arch");
-  add_scene_options(*profile, profile_scene);
-  add_solver_options(*profile, profile_options, profile_text);
-  profile->add_option("--stations", profile_options.stations, "stations, equally spaced in arc length, springing to springing; must lie in [2, 1000000]")
-      ->check(kCount)
-      ->capture_default_str();
+  if (wanted(profile)) {
+    add_scene_options(*profile, profile_scene);
+    add_solver_options(*profile, profile_options, profile_text);
+    profile->add_option("--stations", profile_options.stations, "stations, equally spaced in arc length, springing to springing; must lie in [2, 1000000]")
+        ->check(kCount)
+        ->capture_default_str();
+  }
 
   CLI::App* check = app.add_subcommand("check", "every method's H/V against the closed form");
-  add_scene_options(*check, check_scene);
-  add_solver_options(*check, check_options_, check_text, false);
+  if (wanted(check)) {
+    add_scene_options(*check, check_scene);
+    add_solver_options(*check, check_options_, check_text, false);
+  }
 
   SceneOptions curve_scene;
   int curve_stations = 101;
   CLI::App* curve = app.add_subcommand("curve", "the generator curve: s, x, y, theta, kappa");
-  add_scene_options(*curve, curve_scene);
-  curve->add_option("--stations", curve_stations, "stations, equally spaced in arc length, springing to springing; must lie in [2, 1000000]")->check(kCount)->capture_default_str();
+  if (wanted(curve)) {
+    add_scene_options(*curve, curve_scene);
+    curve->add_option("--stations", curve_stations, "stations, equally spaced in arc length, springing to springing; must lie in [2, 1000000]")->check(kCount)->capture_default_str();
+  }
 
   CLI::App* bench = app.add_subcommand("bench", "median time per solve and true error, per method and rtol");
-  add_scene_options(*bench, bench_scene);
   // The same options as every other command's, with a benchmark's defaults (and the plural spellings
   // that older scripts used).
   bench_text.method = "closed-form,shooting,multiple-shooting";
   bench_text.rtol = "1e-6,1e-8,1e-10";
-  add_solver_options(*bench, bench_options, bench_text, true, true);
   int repeats = 21;
-  bench->add_option("--repeats", repeats, "solves per row, the median time is printed; must lie in [1, 100000]")->check(kCount)->capture_default_str();
+  if (wanted(bench)) {
+    add_scene_options(*bench, bench_scene);
+    add_solver_options(*bench, bench_options, bench_text, true, true);
+    bench->add_option("--repeats", repeats, "solves per row, the median time is printed; must lie in [1, 100000]")->check(kCount)->capture_default_str();
+  }
 
   SceneOptions draw_scene;
   Options draw_options;
@@ -1792,25 +1808,29 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   DrawTargets draw_targets;
   draw_options.stations = 101;
   CLI::App* draw = app.add_subcommand("draw", "an SVG picture of each scene to scale: arch, thrust line, supports");
-  add_scene_options(*draw, draw_scene);
-  add_solver_options(*draw, draw_options, draw_text);
-  draw->add_option("--stations", draw_options.stations,
-                   "points of the thrust line, springing to springing; must lie in [2, 1000000]")
-      ->check(kCount)
-      ->capture_default_str();
-  draw->add_option("--output", draw_targets.output, "the SVG file of the one scene (refused for a sweep)");
-  draw->add_flag("--limit", draw_targets.limit,
-                 "also draw the limit analysis' minimum and maximum thrust lines with their hinges (ogive limit's "
-                 "defaults: radial joints, the voussoirs' weight)");
-  draw->add_option("--output-dir", draw_targets.output_dir,
-                   "an existing directory: one SVG per scene, named after the curve and the options that vary");
+  if (wanted(draw)) {
+    add_scene_options(*draw, draw_scene);
+    add_solver_options(*draw, draw_options, draw_text);
+    draw->add_option("--stations", draw_options.stations,
+                     "points of the thrust line, springing to springing; must lie in [2, 1000000]")
+        ->check(kCount)
+        ->capture_default_str();
+    draw->add_option("--output", draw_targets.output, "the SVG file of the one scene (refused for a sweep)");
+    draw->add_flag("--limit", draw_targets.limit,
+                   "also draw the limit analysis' minimum and maximum thrust lines with their hinges (ogive limit's "
+                   "defaults: radial joints, the voussoirs' weight)");
+    draw->add_option("--output-dir", draw_targets.output_dir,
+                     "an existing directory: one SVG per scene, named after the curve and the options that vary");
+  }
 
   SceneOptions limit_scene;
   LimitText limit_text;
   CLI::App* limit = app.add_subcommand(
       "limit", "limit analysis (rigid voussoirs, no tension): H_min, H_max, t_min, collapse load; one row per scene");
-  add_scene_options(*limit, limit_scene);
-  add_limit_options(*limit, limit_text);
+  if (wanted(limit)) {
+    add_scene_options(*limit, limit_scene);
+    add_limit_options(*limit, limit_text);
+  }
 
   add_help_texts(app);
   app.set_version_flag("--version", std::string("ogive ") + OGIVE_VERSION, "print the version and exit");
@@ -1822,24 +1842,23 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   }
 
   ColumnText thrust_columns, profile_columns, check_columns, curve_columns, bench_columns, draw_columns;
-  add_column_options(*draw, draw_columns);
   ColumnText limit_columns_text;
-  add_column_options(*limit, limit_columns_text);
-  add_column_options(*thrust, thrust_columns);
-  add_column_options(*profile, profile_columns);
-  add_column_options(*check, check_columns);
-  add_column_options(*curve, curve_columns);
-  add_column_options(*bench, bench_columns);
+  const std::pair<CLI::App*, ColumnText*> column_options[] = {
+      {draw, &draw_columns},       {limit, &limit_columns_text}, {thrust, &thrust_columns}, {profile, &profile_columns},
+      {check, &check_columns},     {curve, &curve_columns},      {bench, &bench_columns}};
+  for (const auto& [cmd, text] : column_options)
+    if (wanted(cmd)) add_column_options(*cmd, *text);
 
   // Sweeps use every core by default; the rows come out in the same order, byte for byte, with any N.
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   int threads = cores;
   for (CLI::App* cmd : {thrust, profile, check, curve})
-    cmd->add_option("--threads", threads,
-                    fmt::format("scenes solved in parallel, 1 .. 256 (default: every core, {} here); the output "
-                                "is the same with any number",
-                                cores))
-        ->check(kCount);
+    if (wanted(cmd))
+      cmd->add_option("--threads", threads,
+                      fmt::format("scenes solved in parallel, 1 .. 256 (default: every core, {} here); the output "
+                                  "is the same with any number",
+                                  cores))
+          ->check(kCount);
 
   std::vector<const char*> argv{"ogive"};
   for (const std::string& a : args) argv.push_back(a.c_str());
