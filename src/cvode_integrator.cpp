@@ -129,6 +129,20 @@ sunindextype count(N_Vector v) {
   else return size(v);
 }
 
+// f.template operator()<N>() for the fixed length N = n where one is compiled (1 to 5 columns of 6),
+// else N = 0 (any length).
+template <class F>
+decltype(auto) with_fixed_length(sunindextype n, F&& f) {
+  switch (n) {
+    case 6: return f.template operator()<6>();
+    case 12: return f.template operator()<12>();
+    case 18: return f.template operator()<18>();
+    case 24: return f.template operator()<24>();
+    case 30: return f.template operator()<30>();
+    default: return f.template operator()<0>();
+  }
+}
+
 // Adams' predictor (cvPredict) adds its Nordsieck columns pairwise in place, q (q + 1) / 2 sums a step
 // with a = b = 1: that case skips the multiplications (the same values: 1 * x is exact).
 template <sunindextype N>
@@ -230,7 +244,10 @@ sunrealtype wrms_norm(N_Vector x, N_Vector w) {
   sunrealtype largest = 0;
   sunindextype begin = 0;
   for (const sunindextype end : *content(x).block_ends) {
-    largest = std::max(largest, weighted_squares<0>(xd + begin, wd + begin, end - begin) / static_cast<sunrealtype>(end - begin));
+    const sunindextype n = end - begin;  // a block's own length may be a fixed one too (24, 30)
+    const sunrealtype squares = with_fixed_length(
+        n, [&]<sunindextype M>() { return weighted_squares<M>(xd + begin, wd + begin, n); });
+    largest = std::max(largest, squares / static_cast<sunrealtype>(n));
     begin = end;
   }
   return std::sqrt(largest);
@@ -298,20 +315,6 @@ OGIVE_VECTOR_LOOP bool error_weights(sunrealtype rtol, sunrealtype atol, N_Vecto
     wd[i] = 1.0 / t;
   }
   return non_positive == 0;
-}
-
-// f.template operator()<N>() for the fixed length N = n where one is compiled (1 to 5 columns of 6),
-// else N = 0 (any length).
-template <class F>
-decltype(auto) with_fixed_length(sunindextype n, F&& f) {
-  switch (n) {
-    case 6: return f.template operator()<6>();
-    case 12: return f.template operator()<12>();
-    case 18: return f.template operator()<18>();
-    case 24: return f.template operator()<24>();
-    case 30: return f.template operator()<30>();
-    default: return f.template operator()<0>();
-  }
 }
 
 bool error_weights(sunrealtype rtol, sunrealtype atol, N_Vector y, N_Vector w) {
