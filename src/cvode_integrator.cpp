@@ -387,7 +387,8 @@ FixedPointUpdate fixed_point_update_for(N_Vector y) {
 // Adams' nonlinear solver: the plain fixed-point iteration (no Anderson acceleration) of SUNDIALS'
 // SUNNonlinSol_FixedPoint with m = 0, step for step (the same calls of CVODE's system function and
 // convergence test, the same numbers), with its three vector calls an iteration fused into one loop:
-// Debian's -O0 build of that solver and its vector calls were about 5 % of an Adams solve.
+// with Debian's -O0 build of that solver and its vector calls, a raw Adams solve of the equilateral
+// arch took 4 % more instructions (callgrind: 490 000 against 471 000 a solve).
 namespace fixed_point {
 
 struct Content {
