@@ -143,6 +143,12 @@ decltype(auto) with_fixed_length(sunindextype n, F&& f) {
   }
 }
 
+// The length a vector of these block ends gets kernels compiled for: its own if it holds one problem
+// (the block norm needs the blocks' lengths), else 0 (any length).
+sunindextype kernel_length(const std::vector<sunindextype>& block_ends) {
+  return block_ends.size() == 1 ? block_ends.back() : 0;
+}
+
 // Adams' predictor (cvPredict) adds its Nordsieck columns pairwise in place, q (q + 1) / 2 sums a step
 // with a = b = 1: that case skips the multiplications (the same values: 1 * x is exact).
 template <sunindextype N>
@@ -317,9 +323,10 @@ OGIVE_VECTOR_LOOP bool error_weights(sunrealtype rtol, sunrealtype atol, N_Vecto
   return non_positive == 0;
 }
 
-bool error_weights(sunrealtype rtol, sunrealtype atol, N_Vector y, N_Vector w) {
-  return with_fixed_length(content(y).block_ends->size() == 1 ? size(y) : 0,
-                           [&]<sunindextype N>() { return error_weights<N>(rtol, atol, y, w); });
+using ErrorWeights = bool (*)(sunrealtype, sunrealtype, N_Vector, N_Vector);
+ErrorWeights error_weights_for(N_Vector y) {
+  return with_fixed_length(kernel_length(*content(y).block_ends),
+                           [&]<sunindextype N>() -> ErrorWeights { return error_weights<N>; });
 }
 
 template <sunindextype N>
@@ -358,7 +365,7 @@ N_Vector make(std::shared_ptr<const std::vector<sunindextype>> block_ends, SUNCo
   ops->nvgetarraypointer = array_pointer;
   ops->nvsetarraypointer = set_array_pointer;
   ops->nvgetlength = length;
-  with_fixed_length(block_ends->size() == 1 ? n : 0, [&]<sunindextype N>() { set_kernels<N>(ops); });
+  with_fixed_length(kernel_length(*block_ends), [&]<sunindextype N>() { set_kernels<N>(ops); });
   v->content = new Content{n, new sunrealtype[static_cast<std::size_t>(n)](), true, std::move(block_ends)};
   return v;
 }
@@ -377,7 +384,7 @@ OGIVE_VECTOR_LOOP void fixed_point_update(N_Vector g, N_Vector y, N_Vector delta
 }
 using FixedPointUpdate = void (*)(N_Vector, N_Vector, N_Vector);
 FixedPointUpdate fixed_point_update_for(N_Vector y) {
-  return with_fixed_length(content(y).block_ends->size() == 1 ? size(y) : 0,
+  return with_fixed_length(kernel_length(*content(y).block_ends),
                            [&]<sunindextype N>() -> FixedPointUpdate { return fixed_point_update<N>; });
 }
 
@@ -684,6 +691,7 @@ struct CvodeIntegrator::Impl {
   double span_start = 0, span_end = 0;  // the span being integrated
   double first_inside = 0, last_inside = 0;  // the numbers next to its ends, inside it
   double rtol = 0, atol = 0;  // CVODE's, as given (atol > 0)
+  vector::ErrorWeights error_weights = nullptr;  // the kernel for the workspace's vector, chosen once
 
   Impl(const OdeSystem& s, int cols, bool restart_at_breakpoints)
       : system(s), columns(cols), restart(restart_at_breakpoints) {}
@@ -699,7 +707,7 @@ struct CvodeIntegrator::Impl {
   // as its own for scalar tolerances, at a fraction of the cost (vector::error_weights).
   static int weights(N_Vector y, N_Vector w, void* user_data) {
     const auto* self = static_cast<const Impl*>(user_data);
-    return vector::error_weights(self->rtol, self->atol, y, w) ? 0 : -1;
+    return self->error_weights(self->rtol, self->atol, y, w) ? 0 : -1;
   }
 
   static int rhs(sunrealtype s, N_Vector y, N_Vector ydot, void* user_data) {
@@ -733,6 +741,8 @@ CvodeIntegrator::CvodeIntegrator(const OdeSystem& system, Integrator kind, doubl
                                  bool restart_at_breakpoints)
     : impl_(std::make_unique<Impl>(system, std::accumulate(blocks.begin(), blocks.end(), 0),
                                    restart_at_breakpoints)) {
+  if (!(rtol > 0) || !(atol > 0))
+    throw std::invalid_argument("CvodeIntegrator: rtol and atol must be > 0");
   Impl& m = *impl_;
   m.workspace = take_workspace(kind, blocks, &Impl::rhs, &Impl::jac);
   void* mem = m.workspace->cvode.get();
@@ -740,10 +750,9 @@ CvodeIntegrator::CvodeIntegrator(const OdeSystem& system, Integrator kind, doubl
   // tolerances, the step limit (the stop time and the history are set by every span's CVodeReInit).
   check(CVodeSetErrHandlerFn(mem, &Impl::error_handler, impl_.get()), "CVodeSetErrHandlerFn");
   check(CVodeSetUserData(mem, impl_.get()), "CVodeSetUserData");
-  if (!(rtol > 0) || !(atol > 0))
-    throw std::invalid_argument("CvodeIntegrator: rtol and atol must be > 0");
   m.rtol = rtol;
   m.atol = atol;
+  m.error_weights = vector::error_weights_for(m.workspace->y.get());
   check(CVodeWFtolerances(mem, &Impl::weights), "CVodeWFtolerances");
   check(CVodeSetMaxNumSteps(mem, static_cast<long>(max_steps)), "CVodeSetMaxNumSteps");
 }
