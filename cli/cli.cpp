@@ -25,14 +25,14 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "ogive/closed_form.hpp"
-#include "ogive/curve_families.hpp"
-#include "ogive/csv.hpp"
-#include "ogive/limit.hpp"
-#include "ogive/loads_file.hpp"
-#include "ogive/solve.hpp"
-#include "ogive/svg.hpp"
-#include "ogive/thrust_line.hpp"
+#include "ogive/version.hpp"
+#include "ogive/geometry/curve_families.hpp"
+#include "ogive/output/csv.hpp"
+#include "ogive/limit/limit.hpp"
+#include "ogive/model/loads_file.hpp"
+#include "ogive/solve/solve.hpp"
+#include "ogive/output/svg.hpp"
+#include "ogive/core/thrust_line.hpp"
 #include "values.hpp"
 
 namespace ogive::cli {
@@ -72,7 +72,7 @@ struct Axis {
 
 bool positive(double v) { return v > 0; }
 
-// Which parameters each generator curve takes, and its defaults (see include/ogive/curve_families.hpp).
+// Which parameters each generator curve takes, and its defaults (see include/ogive/geometry/curve_families.hpp).
 struct CurveFamily {
   std::string name;
   bool eccentricity = false, rise = false, haunch = false, crown = false, file = false;
@@ -1614,7 +1614,7 @@ void add_help_texts(CLI::App& app) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// draw: one SVG file per scene (include/ogive/svg.hpp), and one CSV row per file on stdout.
+// draw: one SVG file per scene (include/ogive/output/svg.hpp), and one CSV row per file on stdout.
 
 // Scenes one draw may write: each is a file, and a sweep of thousands of pictures is a mistake.
 constexpr std::size_t kMaxDrawings = 1000;
@@ -1834,7 +1834,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   }
 
   add_help_texts(app);
-  app.set_version_flag("--version", std::string("ogive ") + OGIVE_VERSION, "print the version and exit");
+  app.set_version_flag("--version", std::string("ogive ") + kVersion, "print the version and exit");
   // Bare `ogive`: the help, but on stderr with status 2, since stdout is for CSV only and a script that
   // forgot the subcommand should fail rather than read the help as data.
   if (args.empty()) {

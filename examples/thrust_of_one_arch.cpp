@@ -3,8 +3,8 @@
 // Prints "H/V = ..." and exits 0 when the solve succeeded, 1 otherwise.
 #include <cstdio>
 
-#include "ogive/curve.hpp"
-#include "ogive/solve.hpp"
+#include "ogive/geometry/curve.hpp"
+#include "ogive/solve/solve.hpp"
 
 int main() {
   ogive::Scene scene;

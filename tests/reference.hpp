@@ -5,7 +5,7 @@
 #include <numbers>
 #include <vector>
 
-#include "ogive/scene.hpp"
+#include "ogive/model/scene.hpp"
 
 namespace ogive::reference {
 

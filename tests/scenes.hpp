@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ogive/solve.hpp"
+#include "ogive/solve/solve.hpp"
 
 namespace ogive {
 

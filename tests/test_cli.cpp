@@ -13,8 +13,8 @@
 
 #include "cli.hpp"
 #include "cli_run.hpp"
-#include "ogive/solve.hpp"
-#include "ogive/svg.hpp"
+#include "ogive/solve/solve.hpp"
+#include "ogive/output/svg.hpp"
 #include "tolerances.hpp"
 
 using ogive::cli::run_cli;
@@ -250,7 +250,7 @@ std::string read_text(const std::string& path) {
 
 // The points of the SVG path with the given id, in the arch's metres: SVG (x, -y) times the drawing's
 // unit (data-metres-per-unit) back to (x, y). Each subpath ("M") is one run; the drawing writes
-// "M x,y L x,y ..." (include/ogive/svg.hpp).
+// "M x,y L x,y ..." (include/ogive/output/svg.hpp).
 std::vector<std::vector<std::pair<double, double>>> svg_path_points(const std::string& svg, const std::string& id) {
   const std::size_t unit_at = svg.find("data-metres-per-unit=\"");
   REQUIRE(unit_at != std::string::npos);

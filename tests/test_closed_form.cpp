@@ -5,8 +5,8 @@
 #include <cmath>
 #include <vector>
 
-#include "ogive/closed_form.hpp"
-#include "ogive/solve.hpp"
+#include "methods/closed_form.hpp"
+#include "ogive/solve/solve.hpp"
 #include "reference.hpp"
 #include "scenes.hpp"
 #include "tolerances.hpp"

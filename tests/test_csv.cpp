@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "cli_run.hpp"
-#include "ogive/csv.hpp"
+#include "ogive/output/csv.hpp"
 #include "values.hpp"
 
 using namespace ogive::test;

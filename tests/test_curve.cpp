@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "ogive/curve.hpp"
+#include "ogive/geometry/curve.hpp"
 #include "tolerances.hpp"
 
 using namespace ogive;

@@ -14,7 +14,7 @@
 
 #include <fmt/format.h>
 
-#include "ogive/curve_families.hpp"
+#include "ogive/geometry/curve_families.hpp"
 #include "tolerances.hpp"
 
 using namespace ogive;

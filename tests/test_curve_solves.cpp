@@ -4,8 +4,8 @@
 #include <cmath>
 #include <vector>
 
-#include "ogive/curve_families.hpp"
-#include "ogive/solve.hpp"
+#include "ogive/geometry/curve_families.hpp"
+#include "ogive/solve/solve.hpp"
 #include "scenes.hpp"
 #include "tolerances.hpp"
 

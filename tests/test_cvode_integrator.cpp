@@ -1,4 +1,4 @@
-// The CVODE wrapper on its own (src/cvode_integrator.hpp), on Y' = -k Y: the vector kernels compiled
+// The CVODE wrapper on its own (src/methods/cvode/cvode_integrator.hpp), on Y' = -k Y: the vector kernels compiled
 // for a fixed length against those for any length, the block norm, ogive's fixed-point solver where its
 // iteration fails, and misuse.
 #include <doctest/doctest.h>
@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "cvode_integrator.hpp"
-#include "ogive/arch_model.hpp"
+#include "methods/cvode/cvode_integrator.hpp"
+#include "ogive/model/arch_model.hpp"
 #include "tolerances.hpp"
 
 using namespace ogive;

@@ -1,4 +1,4 @@
-// Every failure mode the stability map (scripts/stability_map.py, README) found, and the proof that
+// Every failure mode the stability map (benchmarks/stability_map/stability_map.py, README) found, and the proof that
 // ogive notices it: a status, never a wrong number printed as if it were right. Each test first shows
 // that the raw method (Options::verify off, status `unverified`) really misses its tolerance there, so
 // that it has teeth. A verified `success` must be within_tolerance (solve.hpp): error <= rtol.
@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "cli.hpp"
-#include "ogive/curve_families.hpp"
-#include "ogive/solve.hpp"
+#include "ogive/geometry/curve_families.hpp"
+#include "ogive/solve/solve.hpp"
 #include "scenes.hpp"
 #include "tolerances.hpp"
 

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "fuzz/fuzz_checks.hpp"
-#include "ogive/scene.hpp"
+#include "ogive/model/scene.hpp"
 #include "tolerances.hpp"
 
 namespace {

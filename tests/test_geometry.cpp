@@ -6,9 +6,9 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "ogive/curve_families.hpp"
-#include "ogive/solve.hpp"
-#include "ogive/svg.hpp"
+#include "ogive/geometry/curve_families.hpp"
+#include "ogive/solve/solve.hpp"
+#include "ogive/output/svg.hpp"
 #include "scenes.hpp"
 #include "tolerances.hpp"
 

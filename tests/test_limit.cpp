@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "cli.hpp"
-#include "ogive/limit.hpp"
+#include "ogive/limit/limit.hpp"
 #include "scenes.hpp"
 #include "tolerances.hpp"
 

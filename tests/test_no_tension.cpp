@@ -7,10 +7,10 @@
 #include <cmath>
 #include <vector>
 
-#include "ogive/limit.hpp"
-#include "ogive/no_tension.hpp"
-#include "ogive/section.hpp"
-#include "ogive/solve.hpp"
+#include "ogive/limit/limit.hpp"
+#include "methods/no_tension.hpp"
+#include "ogive/model/section.hpp"
+#include "ogive/solve/solve.hpp"
 #include "scenes.hpp"
 #include "tolerances.hpp"
 

@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "chebyshev.hpp"
+#include "numerics/chebyshev.hpp"
 #include "cli.hpp"
-#include "gauss_legendre.hpp"
-#include "ogive/curve_families.hpp"
-#include "ogive/quadrature.hpp"
-#include "ogive/solve.hpp"
+#include "numerics/gauss_legendre.hpp"
+#include "ogive/geometry/curve_families.hpp"
+#include "methods/quadrature.hpp"
+#include "ogive/solve/solve.hpp"
 #include "scenes.hpp"
 #include "tolerances.hpp"
 

@@ -6,9 +6,9 @@
 #include <numbers>
 #include <vector>
 
-#include "ogive/closed_form.hpp"
-#include "ogive/shooting.hpp"
-#include "ogive/solve.hpp"
+#include "methods/closed_form.hpp"
+#include "methods/shooting.hpp"
+#include "ogive/solve/solve.hpp"
 #include "scenes.hpp"
 #include "tolerances.hpp"
 

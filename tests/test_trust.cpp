@@ -10,12 +10,12 @@
 #include <string>
 #include <vector>
 
-#include "bvp.hpp"
+#include "methods/bvp.hpp"
 #include "cli.hpp"
 #include "cli_run.hpp"
-#include "ogive/curve_families.hpp"
-#include "ogive/shooting.hpp"
-#include "ogive/solve.hpp"
+#include "ogive/geometry/curve_families.hpp"
+#include "methods/shooting.hpp"
+#include "ogive/solve/solve.hpp"
 #include "scenes.hpp"
 #include "tolerances.hpp"
 

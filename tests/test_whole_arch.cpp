@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "bvp.hpp"
+#include "methods/bvp.hpp"
 #include "cli_run.hpp"
-#include "ogive/curve_families.hpp"
-#include "ogive/loads_file.hpp"
-#include "ogive/solve.hpp"
+#include "ogive/geometry/curve_families.hpp"
+#include "ogive/model/loads_file.hpp"
+#include "ogive/solve/solve.hpp"
 #include "scenes.hpp"
 #include "tolerances.hpp"
 

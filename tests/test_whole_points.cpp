@@ -15,9 +15,9 @@
 #include <fmt/format.h>
 
 #include "fuzz/fuzz_checks.hpp"
-#include "ogive/curve_families.hpp"
-#include "ogive/scene.hpp"
-#include "ogive/solve.hpp"
+#include "ogive/geometry/curve_families.hpp"
+#include "ogive/model/scene.hpp"
+#include "ogive/solve/solve.hpp"
 #include "tolerances.hpp"
 
 using namespace ogive;

@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "limit/limit_internal.hpp"
-#include "ogive/limit.hpp"
+#include "ogive/limit/limit.hpp"
 
 namespace ogive {
 namespace {

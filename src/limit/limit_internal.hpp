@@ -5,7 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include "ogive/limit.hpp"
+#include "ogive/limit/limit.hpp"
 
 namespace ogive::limit_detail {
 

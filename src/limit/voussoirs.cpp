@@ -9,9 +9,9 @@
 
 #include <fmt/format.h>
 
-#include "gauss_legendre.hpp"
+#include "numerics/gauss_legendre.hpp"
 #include "limit/limit_internal.hpp"
-#include "ogive/limit.hpp"
+#include "ogive/limit/limit.hpp"
 
 namespace ogive {
 namespace {

@@ -26,7 +26,7 @@
 
 #include "cli.hpp"
 #include "../csv_fields.hpp"
-#include "ogive/curve_families.hpp"
+#include "ogive/geometry/curve_families.hpp"
 #include "values.hpp"
 
 namespace ogive::fuzz {

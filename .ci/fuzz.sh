@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (clang, -DOGIVE_FUZZ=ON, in build-fuzz/) and runs each for SECONDS
+# (default 30) on a copy of its seed corpus (tests/fuzz/corpus/<name>/), so that new corpus entries never
+# land in the repository. Exits non-zero when a target finds a crash, a leak, a timeout or runs out of
+# memory; the input is saved under build-fuzz/artifacts/<target>/ and the log under build-fuzz/logs/.
+#   usage: .ci/fuzz.sh [SECONDS]
+# Needs clang and libclang-rt-14-dev (.ci/install_deps.sh installs them).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-30}"
+[[ "$seconds" =~ ^[1-9][0-9]*$ ]] || { echo "usage: .ci/fuzz.sh [SECONDS]  (a whole number > 0)" >&2; exit 2; }
+build=build-fuzz
+cxx="${OGIVE_FUZZ_CXX:-clang++}"
+
+start=$(date +%s)
+cmake -S . -B "$build" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOGIVE_FUZZ=ON \
+  -DOGIVE_BUILD_TESTS=OFF >/dev/null
+cmake --build "$build" -j2 --target fuzz_parse_values fuzz_points_file
+echo "fuzz: build took $(($(date +%s) - start)) s"
+
+# target, corpus and dictionary name, -max_len
+targets=("fuzz_parse_values parse_values 4096" "fuzz_points_file points_file 65536")
+status=0
+for entry in "${targets[@]}"; do
+  read -r target name max_len <<<"$entry"
+  corpus="$build/corpus/$name" artifacts="$build/artifacts/$target/" log="$build/logs/$target.log"
+  rm -rf "$corpus" "$artifacts"
+  mkdir -p "$corpus" "$artifacts" "$(dirname "$log")"
+  cp tests/fuzz/corpus/"$name"/* "$corpus"/
+  t0=$(date +%s)
+  rc=0
+  # halt_on_error etc. for the sanitizers; libFuzzer itself detects leaks, timeouts and RSS.
+  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    "$build/tests/fuzz/$target" "$corpus" -dict="tests/fuzz/$name.dict" -max_total_time="$seconds" \
+    -max_len="$max_len" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$artifacts" \
+    >"$log" 2>&1 || rc=$?
+  elapsed=$(($(date +%s) - t0))
+  execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
+  entries=$(ls "$corpus" | wc -l)
+  echo "fuzz: $target ran ${elapsed} s, ${execs:-?} executions (${rate:-?}/s), corpus ${entries} files, exit $rc"
+  if ((rc != 0)); then
+    status=1
+    echo "fuzz: $target FAILED; the last lines of $log:" >&2
+    tail -n 40 "$log" >&2
+    echo "fuzz: reproduce with: $build/tests/fuzz/$target $artifacts<file>" >&2
+    ls -l "$artifacts" >&2
+  fi
+done
+echo "fuzz: total $(($(date +%s) - start)) s"
+exit "$status"

@@ -1,0 +1,230 @@
+// Limit analysis of the no-tension masonry arch (Heyman): which thrusts an arch of rigid voussoirs can
+// carry, how thin it could be, and which load makes it collapse, through which hinges.
+//
+// The model: rigid voussoirs, joints that resist no tension, infinite compressive strength, no sliding
+// unless a friction coefficient is given. The whole arch, springing to springing, is cut into voussoirs
+// by joints; each joint is a straight segment from the intrados to the extrados. An arch is admissible
+// (can stand) when some thrust line in equilibrium with the loads crosses every joint between its
+// intrados and extrados points (the static or safe theorem). With vertical loads only, the thrust line
+// is fixed by three unknowns (the horizontal thrust H, the left support's vertical reaction and its
+// moment) and, under a live load, its multiplier; every joint condition is linear in them, so every
+// question below is a linear program (src/limit/limit_lp.cpp, the only file with the LP library).
+//
+// The scene's loads (Scene::loads), in two groups:
+//   dead (factor 1): the self-weight (density; 0 allowed with another load) and the fills, q(x) =
+//        rho_f g max(0, h_f - y_e(x)) per horizontal length over the span 0 <= x <= L;
+//   live (the collapse load factor multiplies all of them together): the point loads and the live loads.
+// Each voussoir carries the loads over its own stretch of the span, lumped as one force and its moment
+// (so at their horizontal centroid): with WeightModel::voussoir the stretch between its joints' extrados
+// points and y_e the true extrados, with WeightModel::axis the stretch between its joints' axis points
+// and y_e = y + t / (2 cos theta) above the axis point (the elastic model's convention). A point load at
+// x = a L acts at x on the voussoir whose stretch holds x (the first of two at a shared end).
+//
+// Supports and hinges: rigid voussoirs ignore the supports' movements and the material's stiffness (a
+// spreading support brings the arch to H_min). A pinned springing and the scene's crown hinge are pins:
+// the thrust line passes through the axis point of that joint (an equality constraint in the LP: the
+// resultant's moment about the point vanishes), and the pin turns either way in a mechanism. A clamped
+// springing is the bed of the arch, where the thrust line may cross anywhere between the faces.
+//
+// Units: SI (m, N per metre of vault width, N m per metre). Positions are global: x from the left
+// springing towards the right, y up from the springing line.
+#pragma once
+
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "ogive/model/scene.hpp"
+
+namespace ogive {
+
+// Joint orientation. The springing joints (the beds on the supports) are always normal to the axis;
+// this chooses the interior joints. At a pointed crown (a kink of the axis) the joints normal to the two
+// halves' axes meet inside the section, and a line that does not cut the arch in two is not a joint:
+// the crown joint is always vertical through the crown (Curve::crown; for a smooth crown that is also
+// the normal one), and on each side the radial joints are spaced over the axis only up to the point
+// whose normal meets the intrados below the crown.
+enum class JointOrientation {
+  radial,    // normal to the axis (default)
+  vertical,  // vertical lines through equally spaced points of the intrados
+};
+
+// Where each voussoir's weight acts, and where the other loads meet the ring (see the top of the file).
+enum class WeightModel {
+  voussoir,  // the true ring: the area between intrados, extrados and the two joints, at its centroid;
+             // the other loads on the extrados
+  axis,      // Heyman's approximation, the elastic model's convention: rho g t per length of axis,
+             // at the centroid of the voussoir's piece of axis; the other loads on the axis
+};
+
+const char* to_string(JointOrientation j);
+const char* to_string(WeightModel w);
+
+// The default number of joints: enough that every printed number of the semicircle and the pointed
+// family (eps 0 .. 1.5, t/L 0.06 .. 0.2) is converged to 1e-4 (the convergence table of the README).
+inline constexpr int kDefaultJointsCount = 401;
+inline constexpr int kMinJointsCount = 5;
+inline constexpr int kMaxJointsCount = 20001;
+
+struct LimitOptions {
+  JointOrientation joints = JointOrientation::radial;
+  WeightModel weight = WeightModel::voussoir;
+  // Joints springing to springing, both springings included; odd, so that one joint is at the crown
+  // (4 voussoirs at least, the fewest that can form a mechanism with a crown joint).
+  int joints_count = kDefaultJointsCount;
+  // Coulomb friction coefficient of the joints; 0: no sliding check (sliding is excluded). When > 0,
+  // every joint must also satisfy |shear| <= friction * normal force.
+  double friction = 0;
+  // Ceres-style check: false with the reason in *why (naming the field) when an option is unusable.
+  bool is_valid(std::string* why) const;
+};
+
+// ---------------------------------------------------------------------------------------------
+// The ring of voussoirs.
+
+struct Joint {
+  Eigen::Vector2d intrados;  // m
+  Eigen::Vector2d extrados;  // m
+  Eigen::Vector2d axis;      // m, where the joint crosses the axis (a pin's point)
+  double s = 0;              // m, arc length of that point along the whole arch
+};
+
+// Vertical forces on one voussoir by their resultant: the total, downward, and its moment about the
+// origin (sum of x F; the resultant acts at x = moment / force).
+struct VerticalLoad {
+  double force = 0;   // N per metre of width, downward
+  double moment = 0;  // N m per metre of width
+  VerticalLoad& operator+=(const VerticalLoad& o) {
+    force += o.force;
+    moment += o.moment;
+    return *this;
+  }
+};
+
+struct Voussoir {
+  double weight = 0;         // N per metre of width, downward: the self-weight
+  Eigen::Vector2d centroid;  // m, where the self-weight acts
+  VerticalLoad fill;         // the fills' share (dead)
+  VerticalLoad live;         // the point and live loads' share at load factor 1
+  // Every dead load: the self-weight at its centroid and the fill.
+  VerticalLoad dead() const { return {weight + fill.force, weight * centroid.x() + fill.moment}; }
+};
+
+// joints.size() == voussoirs.size() + 1; voussoir k lies between joints k and k + 1; as many voussoirs
+// on each side of the crown, and joints[crown_joint()] is the vertical crown joint, at Curve::crown.
+// A ring of a half curve (or of a symmetric whole one) is symmetric about mid-span.
+struct Ring {
+  std::vector<Joint> joints;
+  std::vector<Voussoir> voussoirs;
+  std::vector<int> pins;  // joints whose thrust passes through their axis point, ascending
+  double span = 0;        // L, m
+  int crown_joint() const { return static_cast<int>(joints.size() / 2); }
+  double total_weight() const;  // N/m, the self-weight
+  double total_fill() const;    // N/m
+  double total_dead() const;    // N/m, self-weight plus fill
+  double total_live() const;    // N/m, at load factor 1
+  // Whether a load factor means anything: some voussoir carries a live load.
+  bool has_live_load() const;
+};
+
+// The ring of `curve` (a half, mirrored, or a whole curve springing to springing) with thickness t (m)
+// and unit weight gamma = rho g (N/m^3, >= 0) under its self-weight alone (no pins). Throws
+// std::invalid_argument naming the field for a thickness that does not fit the curve, invalid options,
+// or a whole curve whose crown is a kink that is not symmetric (the vertical crown joint would not
+// cut the arch in two). joints.size() == options.joints_count.
+Ring make_ring(const Curve& curve, double thickness, double unit_weight, const LimitOptions& options);
+
+// The ring of the scene (its curve, thickness, density and gravity) with every load of Scene::loads
+// and the pins of its pinned springings and crown hinge.
+Ring make_ring(const Scene& scene, const LimitOptions& options);
+
+// ---------------------------------------------------------------------------------------------
+// Results.
+
+// Where a hinge turns: a face (the joint opens on the other one; it turns one way only), or the axis
+// point of a pinned joint (it turns either way).
+enum class Face { intrados, extrados, axis };
+const char* to_string(Face f);
+
+struct Hinge {
+  int joint = 0;  // index into Ring::joints
+  Face face = Face::intrados;
+  Eigen::Vector2d point;  // m, the hinge: the joint's intrados, extrados or axis point
+};
+
+// One thrust line in equilibrium: the reactions and, for each joint, where the resultant crosses it.
+struct ThrustState {
+  double H = std::numeric_limits<double>::quiet_NaN();            // N/m, inward push of each support
+  double V_left = std::numeric_limits<double>::quiet_NaN();       // N/m, upward reaction, left support
+  double V_right = std::numeric_limits<double>::quiet_NaN();      // N/m, upward reaction, right support
+  double load_factor = std::numeric_limits<double>::quiet_NaN();  // multiplier on the live load
+  std::vector<Eigen::Vector2d> crossing;  // m, one per joint: the resultant's point on the joint
+  std::vector<Hinge> hinges;              // by joint: the pins, and the joints where the crossing is at a
+                                          // face (to 1e-9 of the joint)
+  bool found() const { return !crossing.empty(); }
+};
+
+enum class LimitStatus {
+  success,       // every number of the result was found
+  inadmissible,  // no thrust line fits inside the arch under the given loads (t < t_min): H_min, H_max
+                 // and their states are absent; t_min (the thickness at which it would stand) is given
+                 // when one exists below the curve's largest thickness
+  lp_failure,    // the LP library stopped without an answer (the message says which problem)
+};
+const char* to_string(LimitStatus s);
+
+struct LimitResult {
+  LimitStatus status = LimitStatus::lp_failure;
+  std::string message;  // empty on success
+  // V: half the total vertical load (dead plus live at factor 1): each springing's share when the
+  // scene is symmetric, the scale of H_min / V and H_max / V otherwise (each state has V_left, V_right).
+  double V = std::numeric_limits<double>::quiet_NaN();
+  ThrustState min_state;  // the smallest H (the arch pushes least: the state a spreading support reaches)
+  ThrustState max_state;  // the largest H; absent (with a message) when H is unbounded: a flat, thick
+                          // arch holds a straight thrust line of any H (infinite compressive strength)
+  double thickness_min = std::numeric_limits<double>::quiet_NaN();  // t_min, m, same axis and loads
+  // With a live load: the largest multiplier of the live load that the arch carries (dead loads
+  // times 1), its state with the collapse mechanism's hinges, and the kinematic multiplier of the same
+  // hinges by virtual work (mechanism_load_factor); absent without a live load, or when the arch cannot
+  // carry its dead loads alone.
+  ThrustState collapse_state;
+  double load_factor_mechanism = std::numeric_limits<double>::quiet_NaN();
+  int lp_solves = 0;  // linear programs solved for this result
+
+  double H_min() const { return min_state.H; }
+  double H_max() const { return max_state.H; }
+  double load_factor() const { return collapse_state.load_factor; }
+};
+
+// The admissible thrust range, the minimum thickness and, with a live load, the collapse load factor
+// of `scene` (its curve of either extent, thickness, density, gravity, loads, pinned springings and
+// crown hinge; the elastic constants and the supports' movements do not enter: rigid voussoirs).
+// Throws std::invalid_argument for an invalid scene or options, or a scene that loads the ring with
+// nothing (every load zero over the ring).
+//
+// t_min (same axis, stereotomy and loads; the fill follows the extrados) is found by a bracketing
+// root-finder (Illinois) on the LP's feasibility margin: the largest mu such that each joint's
+// resultant stays at least mu |joint| W away (in moment, W the total load) from both faces; mu >= 0
+// exactly when the arch is admissible. Relative tolerance 1e-10 on t.
+LimitResult analyse_limit(const Scene& scene, const LimitOptions& options);
+
+// The state of a thrust line with reactions (H, V_left) and left-support moment M_left about the origin
+// (N m/m), under the ring's dead loads and `load_factor` times its live load (ignored without one):
+// where it crosses each joint. The hinges are the ring's pins and the joints crossed at a face to
+// `hinge_tolerance` of the joint's length.
+ThrustState thrust_state(const Ring& ring, double H, double V_left, double M_left, double load_factor,
+                         double hinge_tolerance = 1e-9);
+
+// The kinematic (upper-bound) multiplier of the ring's live load for the mechanism whose hinges are
+// given: the voussoirs between consecutive hinges rotate as rigid bodies, those before the first and
+// after the last stay on their supports; the virtual work of the dead loads plus lambda times the live
+// load vanishes (each voussoir's loads by their resultant). NaN unless the hinges make a mechanism of one
+// degree of freedom in which the live load does work and every face hinge opens on the face opposite to
+// its own (kinematically admissible; a pin turns either way). Given more than four hinges (a degenerate
+// static optimum), the least multiplier of the admissible mechanisms of four of them.
+double mechanism_load_factor(const Ring& ring, const std::vector<Hinge>& hinges);
+
+}  // namespace ogive

@@ -1,0 +1,206 @@
+// The arch model of docs/model.md in non-dimensional form: the linear two-point boundary-value problem
+//   y' = A(theta(s)) y + b(s) e_Fy   on 0 < s < S~,   with jumps of Fy at point loads,
+// three conditions at each end and, with a hinge inside the domain, M = 0 there and psi free to jump.
+// No solver types here: every method (closed form, shooting, quadrature) solves this one problem.
+//
+// The domain: a symmetric scene (Scene::symmetric) is solved over the half arch, springing to crown,
+// with the crown's conditions of symmetry (Ux = 0, psi = 0 or M = 0 at a crown hinge, Fy = -P/2 for a
+// point load P at the crown); every other scene over the whole arch, springing to springing.
+//
+// Scaling (why: so that one matrix mixes numbers of order one whatever t/L and E are):
+//   length       L (the span)              s~ = s / L, x~, y~, kappa~ = kappa L
+//   force        w L                       Fx~, Fy~ (w = Scene::reference_load_per_length, the
+//                                          self-weight per axis length when that is the only load)
+//   moment       w L^2                     M~
+//   displacement w L^4 / (E I)             Ux~, Uy~
+//   rotation     w L^3 / (E I)             psi~
+// With c = cos theta, sn = sin theta, N~ = c Fx~ + sn Fy~, V~ = -sn Fx~ + c Fy~, the system reads
+//   Ux~'  = a_N N~ c - (a_V V~ + psi~) sn          a_N = E I / (E A L^2) = (t/L)^2 / 12
+//   Uy~'  = a_N N~ sn + (a_V V~ + psi~) c          a_V = E I / (k G A L^2)
+//   psi~' = M~
+//   Fx~'  = 0,   Fy~' = b(s),   M~' = sn Fx~ - c Fy~
+// i.e. y' = A(theta(s)) y + b(s) e_Fy, b being the vertical load per axis length over w: the
+// self-weight's constant, a live load's q c / w under it, a fill's rho_f g max(0, (h_f - y) c - t/2) / w.
+// A point load P at s_P makes Fy jump by P / (w L): Fy(s_P+) = Fy(s_P-) + P~.
+#pragma once
+
+#include <limits>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "ogive/model/scene.hpp"
+
+namespace ogive {
+
+// Global components, in this order, everywhere in ogive.
+enum StateIndex : int { kUx = 0, kUy = 1, kPsi = 2, kFx = 3, kFy = 4, kM = 5 };
+inline constexpr int kStateSize = 6;
+using StateVector = Eigen::Matrix<double, kStateSize, 1>;
+using SystemMatrix = Eigen::Matrix<double, kStateSize, kStateSize>;
+
+// SI value of one scaled unit of each kind.
+struct Scales {
+  double length = 1, force = 1, moment = 1, displacement = 1, rotation = 1;
+};
+
+// Linear two-point conditions at_start * y(0) + at_end * y(S~) = rhs (scaled). Rows 0-2 act at the left
+// springing, each fixing one component (Ux, Uy, and psi if clamped or M if pinned); rows 3-5 at the
+// domain's end, each fixing one component too: the right springing's, or the crown's symmetry.
+struct BoundaryConditions {
+  SystemMatrix at_start = SystemMatrix::Zero();
+  SystemMatrix at_end = SystemMatrix::Zero();
+  StateVector rhs = StateVector::Zero();
+};
+
+// A point load inside the domain or at its ends (scaled): Fy(s+) = Fy(s-) + force.
+struct PointJump {
+  double s = 0;
+  double force = 0;
+};
+
+// Both springings' reactions in global components, N/m and N m/m per metre of vault width: H positive
+// pointing into the span (so H_left pushes to +x, H_right to -x), V upwards, M counter-clockwise, each
+// the support's action on the arch. Without horizontal loads H_left = H_right.
+struct Reactions {
+  double H_left = 0, V_left = 0, M_left = 0;
+  double H_right = 0, V_right = 0, M_right = 0;
+};
+
+// The state at one point of the axis, in SI units, with the quantities the user reads.
+struct ArchState {
+  double s = 0;                  // m, arc length from the left springing over the whole arch
+  double x = 0, y = 0;           // m, axis point
+  double theta = 0;              // rad, tangent angle in the direction of increasing s
+  double Ux = 0, Uy = 0;         // m, displacement of the axis
+  double psi = 0;                // rad, rotation of the cross-section (counter-clockwise positive)
+  double Fx = 0, Fy = 0;         // N/m, force of the part beyond s on the part before s
+  double M = 0;                  // N m/m, couple of the part beyond s on the part before s
+  double N = 0;                  // N/m, normal force, negative in compression
+  double V = 0;                  // N/m, shear force
+  double e = 0;                  // %, eccentricity of the compression, 600 M / (N t): 100 at the kern's
+                                 // edge (t/6), 300 at the section's face; NaN where N = 0
+  double thrust_x = 0, thrust_y = 0;  // m, where the resultant crosses the section (the thrust line);
+                                      // NaN where N = 0
+  // No-tension section (section.hpp): the compressed depth over t (1 in the kern) and whether the
+  // section is cracked (the resultant beyond the kern); NaN and false for the elastic section.
+  double compressed_depth = std::numeric_limits<double>::quiet_NaN();
+  bool cracked = false;
+};
+
+class ArchModel {
+ public:
+  // The scene must be valid (Scene::validate); the model keeps a copy of it. whole_arch = true solves a
+  // symmetric scene over the whole arch too (the half is the default for it: the smaller model).
+  explicit ArchModel(Scene scene, bool whole_arch = false);
+
+  const Scene& scene() const { return scene_; }
+  // The domain's curve: the scene's half (half() true) or the whole arch.
+  const Curve& curve() const { return *curve_; }
+  bool half() const { return half_; }
+  const Scales& scales() const { return scales_; }
+  double length() const { return length_; }  // S~: the domain's scaled length
+  double a_N() const { return a_N_; }
+  double a_V() const { return a_V_; }
+
+  double theta(double s) const;      // tangent angle at scaled arc length s
+  // A(theta)'s entries that can be non-zero (every other entry is 0 for every theta; A(psi, M) = 1).
+  struct SystemEntries {
+    double ux_psi, ux_fx, ux_fy, uy_psi, uy_fx, uy_fy, m_fx, m_fy;
+  };
+  SystemEntries system_entries(double theta) const;
+  SystemMatrix system_matrix(double theta) const;  // A(theta), from system_entries
+  // dy = A y over A's entries that can be non-zero: the sums of the full product in its order, less
+  // terms that are exact zeros, so the same numbers at a quarter of the work (shooting's right-hand
+  // side runs this for every column).
+  static void apply_system_matrix(const SystemEntries& A, const double* y, double* dy);
+  // b(s): the vertical load per axis length at s, over w.
+  double load(double s) const;
+  // True when b is the same constant everywhere and there are no point loads (self-weight alone).
+  bool uniform_load() const { return uniform_; }
+  // The self-weight's part of b (w_self / w), and whether b is that constant alone (no live load or fill;
+  // point loads may be present).
+  double self_weight() const { return self_weight_; }
+  bool self_weight_only_distributed() const { return scene_.loads.live.empty() && scene_.loads.fills.empty(); }
+  // dy = A y + load * e_Fy at the angle whose cosine and sine are c and sn (the one place of this
+  // arithmetic; inline: the quadrature calls it at every node).
+  void derivative(double c, double sn, const double* y, double* dy, double load) const;
+  // Interior points where A or b is not smooth (the curve's breakpoints, a live load's ends, where a fill
+  // starts to bear) and where the state jumps (point loads, a hinge), ascending, scaled: integrators
+  // restart there. jumps(): the point loads, ascending, at 0 <= s <= S~ (those at the ends act on the
+  // springing's side of the end state: see reactions).
+  const std::vector<double>& breakpoints() const { return breakpoints_; }
+  const std::vector<PointJump>& jumps() const { return jumps_; }
+  // The hinge inside the domain (scaled arc length), if any: a crown hinge of a whole-arch domain (over the
+  // half, a crown hinge is the end condition M = 0).
+  std::optional<double> hinge() const { return hinge_; }
+  const BoundaryConditions& boundary_conditions() const { return bc_; }
+
+  // The reactions from the states at the domain's ends: y0 before a point load at s = 0, yS after one at
+  // S~ (a load at a springing goes into its support). Over the half, the right springing's are the
+  // left's mirror image.
+  Reactions reactions(const StateVector& y0, const StateVector& yS) const;
+
+  // The SI state at scaled arc length s of the domain; mirrored = true maps it onto the right half
+  // (at s_whole = 2S - s) using the scene's symmetry (half() only).
+  ArchState to_physical(double s, const StateVector& y, bool mirrored = false) const;
+
+  // |Boundary-condition residual| (max norm, scaled; with a hinge, |M| there too) and the relative
+  // residual of the domain's global equilibrium (vertical and horizontal forces, moments about the left
+  // springing) over the domain's total load.
+  double boundary_residual(const StateVector& y0, const StateVector& yS, double hinge_moment = 0) const;
+  double equilibrium_residual(const StateVector& y0, const StateVector& yS) const;
+  // The total vertical load on the domain and its moment about the left springing (scaled), point loads
+  // at its ends and the crown's half load included.
+  double total_load() const { return total_load_; }
+  double load_moment() const { return load_moment_; }
+
+ private:
+  Scene scene_;
+  std::shared_ptr<const Curve> curve_;
+  bool half_ = true;
+  bool uniform_ = true;
+  Scales scales_;
+  double length_, a_N_, a_V_;
+  double self_weight_ = 0;   // w_self / w
+  double crown_load_ = 0;    // half a point load at the crown of a half domain (scaled)
+  std::vector<double> breakpoints_;
+  std::vector<PointJump> jumps_;
+  std::optional<double> hinge_;
+  BoundaryConditions bc_;
+  double total_load_ = 0, load_moment_ = 0;
+  // b beyond the self-weight at scaled arc length s, whose axis point is p.
+  double distributed_load(double s, const CurvePoint& p) const;
+  // Where each live load acts, in scaled arc length: the same numbers as its breakpoints, so that the
+  // load switches exactly where the integrator restarts (not where x(s) = a L rounds to one side).
+  struct LiveSpan {
+    double from = 0, to = 0, intensity = 0;
+  };
+  std::vector<LiveSpan> live_spans_;
+};
+
+inline void ArchModel::apply_system_matrix(const SystemEntries& A, const double* y, double* dy) {
+  dy[kUx] = A.ux_psi * y[kPsi] + A.ux_fx * y[kFx] + A.ux_fy * y[kFy];
+  dy[kUy] = A.uy_psi * y[kPsi] + A.uy_fx * y[kFx] + A.uy_fy * y[kFy];
+  dy[kPsi] = y[kM];
+  dy[kFx] = 0.0;
+  dy[kFy] = 0.0;
+  dy[kM] = A.m_fx * y[kFx] + A.m_fy * y[kFy];
+}
+
+// The six equations of the header comment.
+inline void ArchModel::derivative(double c, double sn, const double* y, double* dy, double load) const {
+  const double N = c * y[kFx] + sn * y[kFy];
+  const double V = -sn * y[kFx] + c * y[kFy];
+  const double rot = a_V_ * V + y[kPsi];
+  dy[kUx] = a_N_ * N * c - rot * sn;
+  dy[kUy] = a_N_ * N * sn + rot * c;
+  dy[kPsi] = y[kM];
+  dy[kFx] = 0.0;
+  dy[kFy] = load;
+  dy[kM] = sn * y[kFx] - c * y[kFy];
+}
+
+}  // namespace ogive

@@ -1,0 +1,120 @@
+// A scene: one unit-width slice of a barrel vault (docs/model.md): its axis, section and material, the
+// loads it carries and how its two springings are held and move. SI units throughout: m, Pa, kg/m^3,
+// m/s^2, N, N/m and N/m^2 per metre of vault width. Defaults are the paper's travertine arch, clamped,
+// under its own weight.
+//
+// Sign conventions (README "Sign conventions"): x runs from the left springing to the right one, y up;
+// loads act downwards; a springing's spread is outward (away from the span), its settlement downward,
+// its rotation counter-clockwise positive; reactions are given in Solution::reactions.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "ogive/geometry/curve.hpp"
+#include "ogive/model/section.hpp"
+
+namespace ogive {
+
+struct Material {
+  double youngs_modulus = 14.8e9;          // E, Pa; > 0
+  double poisson_ratio = 0.20;             // nu, in (-1, 0.5]
+  double density = 2348.0;                 // rho, kg/m^3; > 0
+  double gravity = 9.81;                   // g, m/s^2; > 0
+  double shear_coefficient = 5.0 / 6.0;    // Timoshenko k, > 0 (5/6 for a rectangle)
+  bool plane_strain = false;               // true: bending and axial stiffness use E / (1 - nu^2)
+
+  double shear_modulus() const { return youngs_modulus / (2.0 * (1.0 + poisson_ratio)); }
+  // The modulus that the section's axial and bending stiffness use (plane stress or plane strain).
+  double effective_modulus() const {
+    return plane_strain ? youngs_modulus / (1.0 - poisson_ratio * poisson_ratio) : youngs_modulus;
+  }
+};
+
+// A vertical point load on the axis at x = at * L from the left springing (at in [0, 1]; a load at a
+// springing goes straight into its support).
+struct PointLoad {
+  double force = 0;  // P, N per metre of vault width, downwards (may be negative: upwards)
+  double at = 0.5;   // x / L
+};
+
+// A uniform load per horizontal length over from * L <= x <= to * L (0 <= from < to <= 1): a live load
+// on the deck, acting on the axis points beneath it.
+struct LiveLoad {
+  double intensity = 0;  // q, N/m^2 (N per metre of horizontal length per metre of width), downwards
+  double from = 0, to = 1;
+};
+
+// Fill: the weight of the material between the extrados and the level h_f above the left springing,
+// q(x) = density g max(0, h_f - y_e(x)) per horizontal length, y_e(x) = y(x) + t / (2 cos theta(x)) being
+// the extrados above the axis point at x (its height along the vertical through that point, the section
+// assumed thin). Per axis length that is density g max(0, (h_f - y) cos theta - t / 2): finite even at a
+// vertical springing.
+struct FillLoad {
+  double density = 0;       // rho_f, kg/m^3, >= 0
+  double height_ratio = 0;  // h_f / L, above the left springing; > 0
+};
+
+// Every load but the self-weight (which is Material::density, 0 allowed when another load is present).
+struct Loads {
+  std::vector<PointLoad> points;
+  std::vector<LiveLoad> live;
+  std::vector<FillLoad> fills;
+  bool empty() const { return points.empty() && live.empty() && fills.empty(); }
+};
+
+enum class SupportKind {
+  clamped,  // displacements and rotation given
+  pinned,   // displacements given, the section turns freely (M = 0)
+};
+
+// One springing: how it is held and how it moves (given movements, not reactions).
+struct Support {
+  SupportKind kind = SupportKind::clamped;
+  double spread = 0;      // m, horizontal, outward (away from the span) positive
+  double settlement = 0;  // m, vertical, downward positive
+  double rotation = 0;    // rad, counter-clockwise positive; a pinned springing's must be 0 (it is free)
+};
+
+struct Scene {
+  // The axis: a half arch (symmetric) or a whole one, springing to springing (curve.hpp); required.
+  std::shared_ptr<const Curve> curve;
+  double thickness = 0.8;              // t, m; rectangular section t x 1 m: A = t, I = t^3 / 12
+  Material material;
+  Loads loads;
+  Support left, right;
+  // The section's law (section.hpp): elastic (linear, the paper's) or no_tension (cracks where the
+  // resultant leaves the kern; solved by Newton, no_tension.hpp).
+  SectionKind section = SectionKind::elastic;
+  bool crown_hinge = false;  // a hinge (M = 0, the rotation free to jump) at the crown (Curve::crown)
+
+  // Sets both springings' outward spread to d (m): today's "support displacement" of the paper.
+  void set_support_displacement(double d) { left.spread = right.spread = d; }
+
+  double span() const { return curve->span(); }
+  // Whether the scene is its own mirror image about x = L/2: a half curve, equal supports and movements
+  // (a rotation mirrors to minus itself), and loads that map onto themselves. Such a scene is solved over
+  // the half arch.
+  bool symmetric() const;
+  double area() const { return thickness; }
+  double inertia() const { return thickness * thickness * thickness / 12.0; }
+  // Self-weight per unit axis length, N/m (the mass centre's offset from the axis is neglected); 0 with
+  // density 0.
+  double weight_per_length() const { return material.density * material.gravity * area(); }
+  // The model's force scale w_ref (N/m, > 0 for a valid scene): the self-weight per axis length plus
+  // every other load's total spread over the whole arch's length (scene.cpp says how each counts).
+  double reference_load_per_length() const;
+
+  // Throws std::invalid_argument whose message names the field and the rule it breaks, e.g.
+  // "poisson_ratio: must lie in (-1, 0.5], got 0.7". A valid scene has every field finite, positive
+  // stiffness, density >= 0, some load (self-weight or another), loads inside the span, a fill level
+  // above the springing, no rotation given to a pinned springing, and a thickness that fits the curve
+  // (t < 2 * smallest radius of curvature, so that the intrados does not fold over).
+  void validate() const;
+};
+
+// Twice the smallest radius of curvature of the curve (m; inf for a straight curve): a section this deep
+// or deeper folds over on the intrados. Scene::validate refuses thickness >= max_thickness(*curve).
+double max_thickness(const Curve& curve);
+
+}  // namespace ogive

@@ -1,0 +1,73 @@
+// An SVG drawing of one scene and its solution, to scale, for people to look at (`ogive draw`).
+//
+// Coordinates: one SVG user unit is drawing_unit(span) metres (0.1 m for a 10 m arch; the root element
+// says it in data-metres-per-unit, and its <desc> in words); a point (x, y) of the arch (x from the left springing,
+// y up from the springing line, as in curve.hpp) is drawn at SVG (x, -y) / unit, since SVG's y axis
+// points down. So every coordinate in the file times the unit reads back as metres with the sign of y
+// flipped; the rendered scale (pixels per unit) is the width attribute over the viewBox width.
+//
+// What is drawn, with the element ids that scripts and tests can find:
+//   #section    the arch's cross-sections, filled (extrados, then intrados back), springing to springing
+//   #extrados, #intrados, #axis   the faces at +-t/2 along the section's normal (section_faces of
+//               curve.hpp) and the generator curve, sampled at DrawingOptions::samples points over the
+//               left half (equal steps of arc length) and mirrored onto the right; at a pointed crown
+//               each face ends at the vertical crown joint x = L/2 (cut there, or carried to it along
+//               the crown's tangent)
+//   #thrust-line-min, #thrust-line-max, ... (DrawingOptions::extra_lines) further lines of thrust, dashed,
+//               with their hinges as circles in #thrust-line-min-hinges, ...
+//   #thrust-line  the elastic line of thrust: the solution's profile points (thrust_x, thrust_y) in
+//               order, one per station; a station with no thrust point (N = 0) or one farther than
+//               kFarFromArch spans from the arch starts a new subpath and is not drawn
+//   #support-left, #support-right   clamped springings: a line along the springing section, hatched on
+//               the side of the support, as engineering drawings show a fixed support
+//   #support-movement   when the scene's support displacement d is non-zero: an arrow at each springing
+//               in the direction it moves (outwards for d > 0) with the value of d
+//   #scale-bar  a bar of a round length in metres with its ticks and labels
+//   #title      the caption given in DrawingOptions::title and, below it, H/V, H and V (or the status
+//               and message of an unsolved scene)
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ogive/model/scene.hpp"
+#include "ogive/core/solution.hpp"
+
+namespace ogive {
+
+// Thrust-line points farther than this many spans outside the arch's bounding box are not drawn (the
+// line runs off to infinity where N changes sign; renderers misbehave on coordinates near 1e300).
+inline constexpr double kFarFromArch = 10.0;
+
+// Metres per SVG user unit: the power of ten that makes the span 100 to 1000 units (1e-2 m for spans
+// in [1, 10) m, 0.1 m in [10, 100) m), whatever the span. Renderers need it: rsvg draws no text in
+// fonts of a tenth of a unit and nothing at all when one unit is a million pixels.
+double drawing_unit(double span);
+
+// A further line of thrust drawn beside the elastic one (the limit analysis' minimum and maximum thrust
+// states): its points in m (x from the left springing, y up), in order, and its hinges (points on a
+// face), each marked with a circle. Drawn as <path id="ID"> and <g id="ID-hinges">.
+struct ExtraThrustLine {
+  std::string id;                  // element id, e.g. "thrust-line-min"; letters, digits and '-'
+  std::string label;               // legend text
+  std::string colour = "#1e8449";  // SVG colour
+  std::vector<PlanePoint> points;  // m
+  std::vector<PlanePoint> hinges;  // m
+};
+
+struct DrawingOptions {
+  std::string title;      // caption, e.g. the scene's parameters; one line, plain text (escaped here)
+  std::vector<ExtraThrustLine> extra_lines;  // drawn after the elastic line, each with a legend line
+  int samples = 101;      // points of the intrados, extrados and axis over the half arch, in [2, 100000]
+  double width_px = 960;  // width of the rendered picture, px, in [16, 100000]; the height follows
+
+  // Ceres-style check: false with the reason in *why (naming the field) when an option is unusable.
+  bool is_valid(std::string* why) const;
+};
+
+// The SVG document (UTF-8 text). The scene must be valid (Scene::validate); the solution is the
+// scene's, with or without a profile (without one, or unsolved, no thrust line is drawn and the title
+// says why). Throws std::invalid_argument naming the field for invalid options.
+std::string arch_svg(const Scene& scene, const Solution& solution, const DrawingOptions& options = {});
+
+}  // namespace ogive

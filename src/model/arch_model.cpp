@@ -1,0 +1,296 @@
+#include "ogive/model/arch_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "numerics/gauss_legendre.hpp"
+
+namespace ogive {
+namespace {
+
+// Where f changes sign along [0, S] (scaled s): sampled, then bisected to round-off. f is continuous.
+template <class F>
+std::vector<double> sign_changes(F&& f, double S) {
+  constexpr int kSamples = 256;
+  std::vector<double> roots;
+  double a = 0, fa = f(0.0);
+  for (int i = 1; i <= kSamples; ++i) {
+    const double b = S * i / kSamples, fb = f(b);
+    if ((fa < 0) != (fb < 0)) {
+      double lo = a, hi = b;
+      const bool rising = fa < 0;
+      for (int it = 0; it < 200; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        if (mid <= lo || mid >= hi) break;
+        ((f(mid) < 0) == rising ? lo : hi) = mid;
+      }
+      roots.push_back(0.5 * (lo + hi));
+    }
+    a = b;
+    fa = fb;
+  }
+  return roots;
+}
+
+}  // namespace
+
+ArchModel::ArchModel(Scene scene, bool whole_arch_domain) : scene_(std::move(scene)) {
+  const Material& m = scene_.material;
+  const double L = scene_.span();
+  const double w = scene_.reference_load_per_length();
+  const double EI = m.effective_modulus() * scene_.inertia();
+  scales_.length = L;
+  scales_.force = w * L;
+  scales_.moment = w * L * L;
+  scales_.displacement = w * L * L * L * L / EI;
+  scales_.rotation = w * L * L * L / EI;
+  half_ = scene_.symmetric() && !whole_arch_domain;
+  curve_ = half_ ? scene_.curve : whole_arch(scene_.curve);
+  length_ = curve_->length() / L;
+  // a_N = I / (A L^2) exactly: the same modulus stiffens bending and stretching.
+  a_N_ = scene_.inertia() / (scene_.area() * L * L);
+  a_V_ = m.effective_modulus() / (m.shear_coefficient * m.shear_modulus()) * a_N_;
+  self_weight_ = scene_.weight_per_length() / w;
+  const Loads& loads = scene_.loads;
+  uniform_ = loads.empty();
+
+  std::vector<double> curve_breaks;
+  for (double b : curve_->breakpoints()) curve_breaks.push_back(b / L);
+  // A load within a part in 1e12 of a curve breakpoint acts there (a load at the crown of a pointed arch:
+  // on the kink, not one round-off away from it).
+  auto snapped = [&](double s) {
+    for (double b : curve_breaks)
+      if (std::abs(s - b) <= 1e-12 * length_) return b;
+    if (s <= 1e-12 * length_) return 0.0;
+    if (s >= length_ * (1 - 1e-12)) return length_;
+    return s;
+  };
+  // x = 0 and x = L are the springings themselves: near a vertical springing x(s) is flat, and inverting it
+  // would place the load a distance of order sqrt(round-off) inside the arch.
+  auto s_at = [&](double ratio) {
+    if (ratio <= 0) return 0.0;
+    if (ratio >= 1) return half_ ? 2.0 * length_ : length_;
+    return snapped(arc_length_at_x(*scene_.curve, ratio * L) / L);
+  };
+
+  for (const PointLoad& p : loads.points) {
+    const double force = p.force / scales_.force;
+    if (half_ && std::abs(p.at - 0.5) <= 1e-14) crown_load_ += 0.5 * force;  // half of it on each half
+    else if (!half_ || p.at < 0.5) jumps_.push_back({s_at(p.at), force});
+    // Over the half, a load beyond the crown is the mirror of one before it (Scene::symmetric).
+  }
+  std::sort(jumps_.begin(), jumps_.end(), [](const PointJump& a, const PointJump& b) { return a.s < b.s; });
+  if (scene_.crown_hinge && !half_) hinge_ = snapped(curve_->crown() / L);
+
+  breakpoints_ = curve_breaks;
+  auto add_break = [&](double s) {
+    if (s > 0 && s < length_) breakpoints_.push_back(s);
+  };
+  for (const PointJump& j : jumps_) add_break(j.s);
+  if (hinge_) add_break(*hinge_);
+  for (const LiveLoad& q : loads.live) {
+    live_spans_.push_back({s_at(q.from), s_at(q.to), q.intensity});
+    add_break(live_spans_.back().from);
+    add_break(live_spans_.back().to);
+  }
+  for (const FillLoad& f : loads.fills) {
+    const double level = f.height_ratio, half_t = 0.5 * scene_.thickness / L;
+    for (double s : sign_changes(
+             [&](double s) {
+               const CurvePoint p = curve_->at(s * L);
+               return (level - p.y / L) * std::cos(p.theta) - half_t;
+             },
+             length_))
+      add_break(snapped(s));
+  }
+  std::sort(breakpoints_.begin(), breakpoints_.end());
+  breakpoints_.erase(std::unique(breakpoints_.begin(), breakpoints_.end()), breakpoints_.end());
+
+  // The conditions, each fixing one component (springing_split relies on it). A springing fixes its
+  // displacements (its spread outwards: -x at the left, +x at the right) and its rotation if clamped,
+  // else its moment; the half's crown its symmetry (Ux, psi or the hinge's M, and Fy).
+  auto springing = [&](const Support& support, double outward, Eigen::Index first, SystemMatrix& at) {
+    at(first, kUx) = 1.0;
+    bc_.rhs(first) = outward * support.spread / scales_.displacement;
+    at(first + 1, kUy) = 1.0;
+    bc_.rhs(first + 1) = -support.settlement / scales_.displacement;
+    if (support.kind == SupportKind::clamped) {
+      at(first + 2, kPsi) = 1.0;
+      bc_.rhs(first + 2) = support.rotation / scales_.rotation;
+    } else {
+      at(first + 2, kM) = 1.0;
+    }
+  };
+  springing(scene_.left, -1.0, 0, bc_.at_start);
+  if (half_) {
+    bc_.at_end(3, kUx) = 1.0;
+    bc_.at_end(4, scene_.crown_hinge ? kM : kPsi) = 1.0;
+    bc_.at_end(5, kFy) = 1.0;
+    bc_.rhs(5) = -crown_load_;
+  } else {
+    springing(scene_.right, 1.0, 3, bc_.at_end);
+  }
+
+  // The domain's load and its moment about the left springing, for the equilibrium residual: the
+  // self-weight exactly (the curve's first moment), point loads at their x, other loads by Gauss-Legendre
+  // between the breakpoints, where they are smooth.
+  total_load_ = self_weight_ * length_;
+  load_moment_ = self_weight_ * curve_->first_moment_x() / (L * L);
+  for (const PointJump& j : jumps_) {
+    total_load_ += j.force;
+    load_moment_ += j.force * curve_->at(j.s * L).x / L;
+  }
+  if (!loads.live.empty() || !loads.fills.empty()) {
+    std::vector<double> knots{0.0};
+    knots.insert(knots.end(), breakpoints_.begin(), breakpoints_.end());
+    knots.push_back(length_);
+    constexpr int kPanels = 8;
+    for (std::size_t k = 0; k + 1 < knots.size(); ++k)
+      for (int i = 0; i < kPanels; ++i) {
+        const double a = knots[k] + (knots[k + 1] - knots[k]) * i / kPanels;
+        const double b = knots[k] + (knots[k + 1] - knots[k]) * (i + 1) / kPanels;
+        const Eigen::Vector2d part = gauss_legendre_integral<16>(
+            [&](double s) {
+              const CurvePoint p = curve_->at(s * L);
+              const double q = distributed_load(s, p);
+              return Eigen::Vector2d(q, q * p.x / L);
+            },
+            a, b);
+        total_load_ += part(0);
+        load_moment_ += part(1);
+      }
+  }
+}
+
+double ArchModel::theta(double s) const { return curve_->angle(s * scales_.length); }
+
+double ArchModel::distributed_load(double s, const CurvePoint& p) const {
+  const double L = scales_.length, w = scales_.force / L;
+  const double c = std::cos(p.theta);
+  double q = 0;
+  for (const LiveSpan& live : live_spans_)
+    if (s >= live.from && s <= live.to) q += live.intensity * c;
+  for (const FillLoad& f : scene_.loads.fills)
+    q += f.density * scene_.material.gravity * std::max(0.0, (f.height_ratio * L - p.y) * c - 0.5 * scene_.thickness);
+  return q / w;
+}
+
+double ArchModel::load(double s) const {
+  if (uniform_) return self_weight_;
+  return self_weight_ + distributed_load(s, curve_->at(s * scales_.length));
+}
+
+ArchModel::SystemEntries ArchModel::system_entries(double theta) const {
+  const double c = std::cos(theta), sn = std::sin(theta);
+  SystemEntries e;
+  e.ux_psi = -sn;
+  e.ux_fx = a_N_ * c * c + a_V_ * sn * sn;
+  e.ux_fy = (a_N_ - a_V_) * c * sn;
+  e.uy_psi = c;
+  e.uy_fx = (a_N_ - a_V_) * c * sn;
+  e.uy_fy = a_N_ * sn * sn + a_V_ * c * c;
+  e.m_fx = sn;
+  e.m_fy = -c;
+  return e;
+}
+
+SystemMatrix ArchModel::system_matrix(double theta) const {
+  const SystemEntries e = system_entries(theta);
+  SystemMatrix A = SystemMatrix::Zero();
+  A(kUx, kPsi) = e.ux_psi;
+  A(kUx, kFx) = e.ux_fx;
+  A(kUx, kFy) = e.ux_fy;
+  A(kUy, kPsi) = e.uy_psi;
+  A(kUy, kFx) = e.uy_fx;
+  A(kUy, kFy) = e.uy_fy;
+  A(kPsi, kM) = 1.0;
+  A(kM, kFx) = e.m_fx;
+  A(kM, kFy) = e.m_fy;
+  return A;
+}
+
+Reactions ArchModel::reactions(const StateVector& y0, const StateVector& yS) const {
+  Reactions r;
+  r.H_left = -y0[kFx] * scales_.force;
+  r.V_left = -y0[kFy] * scales_.force;
+  r.M_left = -y0[kM] * scales_.moment;
+  if (half_) {
+    r.H_right = r.H_left;
+    r.V_right = r.V_left;
+    r.M_right = -r.M_left;
+  } else {
+    r.H_right = -yS[kFx] * scales_.force;
+    r.V_right = yS[kFy] * scales_.force;
+    r.M_right = yS[kM] * scales_.moment;
+  }
+  return r;
+}
+
+ArchState ArchModel::to_physical(double s, const StateVector& y, bool mirrored) const {
+  const double L = scales_.length;
+  const CurvePoint on_domain = curve_->at(s * L);
+  mirrored = mirrored && half_;
+  const CurvePoint p = mirrored ? mirror(on_domain, L) : on_domain;
+  ArchState st;
+  st.s = mirrored ? 2.0 * curve_->length() - s * L : s * L;
+  st.x = p.x;
+  st.y = p.y;
+  st.theta = p.theta;
+  st.Ux = y[kUx] * scales_.displacement;
+  st.Uy = y[kUy] * scales_.displacement;
+  st.psi = y[kPsi] * scales_.rotation;
+  st.Fx = y[kFx] * scales_.force;
+  st.Fy = y[kFy] * scales_.force;
+  st.M = y[kM] * scales_.moment;
+  if (mirrored) {
+    // Reflection about x = L/2, with "beyond" and "before" swapped on the right half.
+    st.Ux = -st.Ux;
+    st.psi = -st.psi;
+    st.Fy = -st.Fy;
+  }
+  const double c = std::cos(st.theta), sn = std::sin(st.theta);
+  st.N = c * st.Fx + sn * st.Fy;
+  st.V = -sn * st.Fx + c * st.Fy;
+  const double t = scene_.thickness;
+  // Where the normal force vanishes there is no eccentricity: NaN, never an unbounded number that reads
+  // as a result. (Under tension, N > 0, e is the tensile force's eccentricity; the CLI flags it.)
+  if (st.N == 0) {
+    st.e = st.thrust_x = st.thrust_y = std::numeric_limits<double>::quiet_NaN();
+    return st;
+  }
+  st.e = 600.0 * st.M / (st.N * t);
+  if (scene_.section == SectionKind::no_tension) {
+    const SectionStrain ss = section_strain(SectionKind::no_tension, st.N / scales_.force, st.M / scales_.moment, t / L);
+    st.compressed_depth = ss.compressed_depth;
+    st.cracked = ss.cracked;
+  }
+  // F acting at offset a along the extrados normal n = (-sn, c) has moment -a N about the axis point,
+  // so the resultant crosses the section at a = -M / N.
+  const PlanePoint thrust = along_normal(p, -st.M / st.N);
+  st.thrust_x = thrust.x;
+  st.thrust_y = thrust.y;
+  return st;
+}
+
+double ArchModel::boundary_residual(const StateVector& y0, const StateVector& yS, double hinge_moment) const {
+  const double conditions = (bc_.at_start * y0 + bc_.at_end * yS - bc_.rhs).lpNorm<Eigen::Infinity>();
+  return std::max(conditions, std::abs(hinge_moment));
+}
+
+double ArchModel::equilibrium_residual(const StateVector& y0, const StateVector& yS) const {
+  const double L = scales_.length;
+  const CurvePoint end = curve_->at(curve_->length());
+  const double xS = end.x / L, yS_pos = end.y / L;
+  // Over the half, the crown's half load is the end condition Fy(S) = -P/2, not a load of the domain.
+  const double vertical = yS[kFy] - y0[kFy] - total_load_;
+  // Moments about the left springing: the end's force and couple, the springing's couple, the loads.
+  const double moment = xS * yS[kFy] - yS_pos * yS[kFx] + yS[kM] - y0[kM] - load_moment_;
+  const double horizontal = yS[kFx] - y0[kFx];
+  const double scale = std::max({std::abs(total_load_) + std::abs(crown_load_), std::abs(y0[kFy]), std::abs(yS[kFy]),
+                                 std::abs(y0[kFx]), std::numeric_limits<double>::min()});
+  return std::max({std::abs(vertical), std::abs(horizontal), std::abs(moment) / std::max(xS, 1e-300)}) / scale;
+}
+
+}  // namespace ogive

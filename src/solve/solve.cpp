@@ -1,0 +1,382 @@
+#include "ogive/solve/solve.hpp"
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <tuple>
+#include <vector>
+
+#include <Eigen/LU>
+#include <fmt/format.h>
+
+#include "methods/bvp.hpp"
+#include "methods/closed_form.hpp"
+#include "methods/no_tension.hpp"
+#include "methods/quadrature.hpp"
+#include "methods/shooting.hpp"
+
+namespace ogive {
+
+namespace {
+
+void add_work(Diagnostics& to, const Diagnostics& from) {
+  to.steps += from.steps;
+  to.rhs_evaluations += from.rhs_evaluations;
+  to.error_test_failures += from.error_test_failures;
+  to.jacobian_evaluations += from.jacobian_evaluations;
+}
+
+Solution solve_once(const std::shared_ptr<const ArchModel>& model, const Options& options, Method method,
+                    int segments) {
+  if (method == Method::quadrature) {
+    // It samples its profile itself (its error estimate compares two degrees' profiles).
+    Options capped = options;
+    capped.stations = std::min(options.stations, kVerificationStations);
+    return solve_quadrature(model, capped);
+  }
+  Solution sol = method == Method::closed_form ? solve_closed_form(model, options)
+                                               : solve_shooting(model, options, segments);
+  if (sol.field && options.stations > 0) sample_profile(sol, std::min(options.stations, kVerificationStations));
+  return sol;
+}
+
+// The options of the verifying solve: 16 times tighter in rtol and in atol. The user's atol is taken
+// only where it is tighter than the default, so that a loose atol cannot make both solves agree on the
+// same wrong answer (atol 1e300 turns CVODE's error control off in both).
+Options verifying_options(const Options& options) {
+  Options tighter = options;
+  tighter.rtol = options.rtol / 16;
+  Options plain = options;
+  plain.atol = 0;
+  const double default_atol = cvode_tolerances(plain).atol;
+  tighter.atol = (options.atol > 0 ? std::min(options.atol, default_atol) : default_atol) / 16;
+  return tighter;
+}
+
+// CVODE controls each step's local error, not the global error of what is printed; the solve is
+// repeated 16 times tighter and the difference estimates the first solve's error. The tighter solution
+// is returned: whenever it is at least twice as accurate as the first, the estimate bounds its error
+// too. Its counters include both solves. Where CVODE's tolerance floor leaves no room for a tighter
+// solve, the first is returned without an estimate (judged `unverified`).
+// Whether a 16 times tighter CVODE solve exists above CVODE's tolerance floor.
+bool verifiable(const Options& options) {
+  return cvode_tolerances(verifying_options(options)).rtol * 16 <= cvode_tolerances(options).rtol * (1 + 1e-9);
+}
+
+Solution solve_verified(const std::shared_ptr<const ArchModel>& model, const Options& options, Method method,
+                        int segments) {
+  const Solution coarse = solve_once(model, options, method, segments);
+  if (!coarse.field) return coarse;
+  if (!verifiable(options)) {
+    Solution sol = coarse;
+    sol.message = fmt::format("rtol {:.3g} is below what a 16 times tighter CVODE solve can verify (CVODE's "
+                              "tolerance floor {:.0e})", options.rtol, kCvodeRtolFloor);
+    return sol;
+  }
+  Solution sol = solve_once(model, verifying_options(options), method, segments);
+  Diagnostics& d = sol.diagnostics;
+  add_work(d, coarse.diagnostics);
+  if (sol.field) d.error_estimate = solution_difference(coarse, sol);
+  return sol;
+}
+
+// Turns a provisional `success` into what the numbers are worth against rtol: ill_conditioned,
+// tolerance_not_met (estimate or residuals above rtol) or unverified (no estimate). The one place that
+// applies within_tolerance to a solution.
+void judge_solution(Solution& sol, double rtol) {
+  if (sol.status != Status::success) return;
+  Diagnostics& d = sol.diagnostics;
+  const double roundoff = d.condition_estimate * std::numeric_limits<double>::epsilon();
+  if (!within_tolerance(roundoff, rtol)) {
+    sol.status = Status::ill_conditioned;
+    sol.message = fmt::format("condition estimate {:.3g} times round-off exceeds rtol {:.3g}", d.condition_estimate, rtol);
+    return;
+  }
+  if (sol.method == Method::closed_form) d.error_estimate = roundoff;  // exact but for round-off
+  if (std::isnan(d.error_estimate)) {
+    sol.status = Status::unverified;
+    if (sol.message.empty()) sol.message = "not verified (Options::verify off): no error estimate";
+    return;
+  }
+  d.error_estimate = std::max(d.error_estimate, roundoff);
+  const double residual = std::max(d.boundary_residual, d.equilibrium_residual);
+  if (!within_tolerance(d.error_estimate, rtol)) {
+    sol.status = Status::tolerance_not_met;
+    sol.message = fmt::format("estimated error {:.3g} exceeds rtol {:.3g}", d.error_estimate, rtol);
+  } else if (!within_tolerance(residual, rtol)) {
+    sol.status = Status::tolerance_not_met;
+    sol.message = fmt::format("boundary or equilibrium residual {:.3g} exceeds rtol {:.3g}", residual, rtol);
+  }
+}
+
+// One method's verified (or raw) solve, judged against `asked`, the rtol the user asked for (auto may
+// hand the method a tighter options.rtol).
+Solution solve_with(const std::shared_ptr<const ArchModel>& model, const Options& options, Method method,
+                    int segments, double asked) {
+  // The closed form needs no second solve (its error is round-off), the quadrature has its own estimate.
+  const bool own_estimate = method == Method::closed_form || method == Method::quadrature;
+  Solution sol = own_estimate || !options.verify ? solve_once(model, options, method, segments)
+                                                 : solve_verified(model, options, method, segments);
+  judge_solution(sol, asked);
+  // The profile was compared at kVerificationStations at most; the printed one has every station.
+  if (sol.field && options.stations > kVerificationStations) sample_profile(sol, options.stations);
+  return sol;
+}
+
+}  // namespace
+
+namespace {
+
+// Whether two scenes differ at most in their supports' movements (the continuation's path).
+bool same_but_movements(const Scene& a, const Scene& b) {
+  auto same_support = [](const Support& x, const Support& y) { return x.kind == y.kind; };
+  auto same_loads = [](const Loads& x, const Loads& y) {
+    if (x.points.size() != y.points.size() || x.live.size() != y.live.size() || x.fills.size() != y.fills.size())
+      return false;
+    for (std::size_t i = 0; i < x.points.size(); ++i)
+      if (x.points[i].force != y.points[i].force || x.points[i].at != y.points[i].at) return false;
+    for (std::size_t i = 0; i < x.live.size(); ++i)
+      if (x.live[i].intensity != y.live[i].intensity || x.live[i].from != y.live[i].from || x.live[i].to != y.live[i].to)
+        return false;
+    for (std::size_t i = 0; i < x.fills.size(); ++i)
+      if (x.fills[i].density != y.fills[i].density || x.fills[i].height_ratio != y.fills[i].height_ratio) return false;
+    return true;
+  };
+  // Curves are rebuilt for every scene of a sweep: the same curve has the same family and lengths.
+  const bool same_curve = a.curve == b.curve ||
+                          (a.curve->family() == b.curve->family() && a.curve->extent() == b.curve->extent() &&
+                           a.curve->span() == b.curve->span() && a.curve->length() == b.curve->length() &&
+                           a.curve->rise() == b.curve->rise() && a.curve->max_curvature() == b.curve->max_curvature());
+  const Material &m = a.material, &n = b.material;
+  return same_curve && a.thickness == b.thickness && a.section == b.section && a.crown_hinge == b.crown_hinge &&
+         m.youngs_modulus == n.youngs_modulus && m.poisson_ratio == n.poisson_ratio && m.density == n.density &&
+         m.gravity == n.gravity && m.shear_coefficient == n.shear_coefficient && m.plane_strain == n.plane_strain &&
+         same_support(a.left, b.left) && same_support(a.right, b.right) && same_loads(a.loads, b.loads) &&
+         a.symmetric() == b.symmetric();
+}
+
+// The scene with movements (1 - lambda) of `from`'s plus lambda of `to`'s.
+Scene between(const Scene& from, const Scene& to, double lambda) {
+  Scene s = to;
+  auto mix = [lambda](double a, double b) { return lambda == 1 ? b : (1 - lambda) * a + lambda * b; };
+  for (auto [out, a, b] : {std::tuple{&s.left, &from.left, &to.left}, std::tuple{&s.right, &from.right, &to.right}}) {
+    out->spread = mix(a->spread, b->spread);
+    out->settlement = mix(a->settlement, b->settlement);
+    out->rotation = mix(a->rotation, b->rotation);
+  }
+  return s;
+}
+
+// One no-tension solver: Newton shooting (segments 1: single, else multiple) or its quadrature form.
+struct NoTensionTry {
+  Method method = Method::quadrature;
+  int segments = 0;
+  double rtol_factor = 1;  // on the rtol handed to the solver
+};
+
+// One no-tension solve, raw (no verification), from the given guesses; the linear solution is the last.
+// (The linear solution is computed only when no guess is given: along a path every step has one.)
+Solution no_tension_once(const Scene& scene, const Options& options, const NoTensionTry& how,
+                         std::vector<StateVector> guesses) {
+  auto model = std::make_shared<const ArchModel>(scene, options.whole_arch);
+  if (guesses.empty()) {
+    Scene elastic = scene;
+    elastic.section = SectionKind::elastic;
+    Options linear = options;
+    linear.method = Method::automatic;
+    const Solution lin = solve(elastic, linear);
+    if (lin.field) guesses.push_back(lin.springing_state);
+  }
+  return how.method == Method::quadrature ? solve_no_tension_quadrature(model, options, guesses)
+                                          : solve_no_tension(model, options, how.segments, guesses);
+}
+
+// The no-tension scene at its movements, traced from `from` (solved, with springing state y) in steps
+// that double after a success and halve after a failure. The raw solve at the target, or the last failure.
+Solution trace_movements(const Scene& from, StateVector y, const Scene& to, const Options& options,
+                         const NoTensionTry& how, int& newton_iterations) {
+  double lambda = 0, step = 1;
+  Solution last;
+  while (lambda < 1) {
+    const double next = std::min(1.0, lambda + step);
+    last = no_tension_once(between(from, to, next), options, how, {y});
+    newton_iterations += last.diagnostics.newton_iterations;
+    if (last.status == Status::success) {
+      lambda = next;
+      y = last.springing_state;
+      step = std::min(1.0, 2 * step);
+    } else {
+      step /= 2;
+      if (step < 1e-6) return last;
+    }
+  }
+  return last;
+}
+
+Solution solve_no_tension_scene(const Scene& scene, const Options& options, const Solution* previous) {
+  if (options.method == Method::closed_form) {
+    Solution sol;
+    sol.method = options.method;
+    sol.model = std::make_shared<const ArchModel>(scene, options.whole_arch);
+    sol.status = Status::not_applicable;
+    sol.message = "the no-tension section is solved by Newton (quadrature, shooting, multiple-shooting or auto)";
+    return sol;
+  }
+  const bool continues = previous && previous->field && previous->model &&
+                         same_but_movements(previous->model->scene(), scene) &&
+                         previous->model->half() == ArchModel(scene, options.whole_arch).half();
+  // auto tries the quadrature form (no integration of an ODE: milliseconds), then single shooting, then
+  // 8 segments, then 8 segments with CVODE 10 times tighter (a profile through hinges needs it); judged
+  // against the rtol asked, always.
+  std::vector<NoTensionTry> tries;
+  if (options.method == Method::quadrature) tries = {{Method::quadrature, 0, 1.0}};
+  else if (options.method == Method::shooting) tries = {{Method::shooting, 1, 1.0}};
+  else if (options.method == Method::multiple_shooting) tries = {{Method::multiple_shooting, options.segments, 1.0}};
+  else
+    tries = {{Method::quadrature, 0, 1.0},
+             {Method::shooting, 1, 1.0},
+             {Method::multiple_shooting, 8, 1.0},
+             {Method::multiple_shooting, 8, 0.1}};
+  Solution sol;
+  int iterations = 0;
+  Diagnostics spent;
+  for (const NoTensionTry& how : tries) {
+    Options raw = options;
+    raw.verify = false;
+    raw.rtol = std::max(options.rtol * how.rtol_factor, 1e-14);
+    std::vector<StateVector> guesses;
+    if (continues) guesses.push_back(previous->springing_state);
+    Solution coarse = no_tension_once(scene, raw, how, guesses);
+    if (continues && coarse.status != Status::success) coarse = no_tension_once(scene, raw, how, {});
+    iterations += coarse.diagnostics.newton_iterations;
+    if (coarse.status == Status::not_converged || coarse.status == Status::integrator_failure) {
+      // Trace the movements from the previous scene's, or from none.
+      Scene from = scene;
+      StateVector y;
+      bool have_start = false;
+      if (continues) {
+        from = previous->model->scene();
+        y = previous->springing_state;
+        have_start = true;
+      } else {
+        // from = scene (assigned above), its movements taken away
+        from.left.spread = from.left.settlement = from.left.rotation = 0;
+        from.right.spread = from.right.settlement = from.right.rotation = 0;
+        const Solution start = no_tension_once(from, raw, how, {});
+        iterations += start.diagnostics.newton_iterations;
+        if (start.status == Status::success) {
+          y = start.springing_state;
+          have_start = true;
+        } else {
+          coarse = start;
+        }
+      }
+      if (have_start) coarse = trace_movements(from, y, scene, raw, how, iterations);
+    }
+    add_work(spent, coarse.diagnostics);
+    if (coarse.status != Status::success) {
+      sol = coarse;
+      continue;
+    }
+    // Verified as every CVODE solve: again 16 times tighter, from the coarse solution (the quadrature
+    // down to the options' floor of 1e-14, CVODE down to its own).
+    const bool quadrature = how.method == Method::quadrature;
+    if (options.verify && (quadrature ? raw.rtol / 16 >= 1e-14 : verifiable(raw))) {
+      Options fine = verifying_options(raw);
+      fine.verify = false;
+      sol = no_tension_once(scene, fine, how, {coarse.springing_state});
+      iterations += sol.diagnostics.newton_iterations;
+      add_work(spent, sol.diagnostics);
+      if (sol.status == Status::success) {
+        if (options.stations > 0) {
+          sample_profile(coarse, std::min(options.stations, kVerificationStations));
+          sample_profile(sol, std::min(options.stations, kVerificationStations));
+        }
+        sol.diagnostics.error_estimate = solution_difference(coarse, sol);
+      }
+    } else {
+      sol = coarse;
+      if (options.verify) sol.message = "rtol below what a 16 times tighter solve can verify";
+    }
+    sol.diagnostics.steps = spent.steps;
+    sol.diagnostics.rhs_evaluations = spent.rhs_evaluations;
+    sol.diagnostics.error_test_failures = spent.error_test_failures;
+    sol.diagnostics.jacobian_evaluations = spent.jacobian_evaluations;
+    judge_solution(sol, options.rtol);
+    if (sol.field && options.stations > 0 && static_cast<int>(sol.profile.size()) != options.stations)
+      sample_profile(sol, options.stations);
+    if (sol.status == Status::success) break;
+  }
+  sol.diagnostics.newton_iterations = iterations;
+  return sol;
+}
+
+}  // namespace
+
+Solution solve(const Scene& scene, const Options& options, const Solution* previous) {
+  scene.validate();
+  std::string why;
+  if (!options.is_valid(&why)) throw std::invalid_argument(why);
+  if (scene.section == SectionKind::no_tension) return solve_no_tension_scene(scene, options, previous);
+  auto model = std::make_shared<const ArchModel>(scene, options.whole_arch);
+  switch (options.method) {
+    case Method::closed_form: return solve_with(model, options, Method::closed_form, 0, options.rtol);
+    case Method::shooting: return solve_with(model, options, Method::shooting, 1, options.rtol);
+    case Method::multiple_shooting:
+      return solve_with(model, options, Method::multiple_shooting, options.segments, options.rtol);
+    case Method::quadrature: return solve_with(model, options, Method::quadrature, 0, options.rtol);
+    case Method::automatic: break;
+  }
+  // The smallest model that meets rtol. The closed form is exact to round-off where it applies.
+  {
+    // Where the closed form treats the scene (a piecewise-circular curve, no distributed load but the
+    // self-weight), it is exact to round-off: nothing smaller or faster.
+    Solution exact = solve_with(model, options, Method::closed_form, 0, options.rtol);
+    if (exact.status != Status::not_applicable) return exact;
+  }
+  // On smooth curves (and between a survey's points) the quadrature method, as fast as the closed form,
+  // with its own error estimate; where that does not meet rtol, CVODE shooting below. (Conditioning is
+  // the boundary-value problem's, the same for every method: CVODE would not cure it.)
+  {
+    Solution quadrature = solve_with(model, options, Method::quadrature, 0, options.rtol);
+    // (not_applicable beyond the symmetric clamped arch under its own weight: quadrature.hpp)
+    if (quadrature.status != Status::tolerance_not_met && quadrature.status != Status::not_applicable)
+      return quadrature;
+  }
+  // Otherwise verified shooting with 1, 2, 4, ... 64 segments (breakpoints add more) while each doubling
+  // at least halves the error estimate: more segments shorten the spans over which integration errors
+  // grow and cancel. Where segments stop helping (a thin near-funicular arch, whose eccentricity in kern
+  // units amplifies every error of the forces by about L/t), CVODE is run tighter instead, by what the
+  // estimate says is missing. Conditioning is the problem's own (it does not change with segments), so
+  // a singular or ill-conditioned system, or rtol below what can be verified, ends the search.
+  Options solver = options;
+  solver.verify = true;
+  Solution sol;
+  Diagnostics spent;  // the work of the rejected tries counts too
+  int segments = 1;
+  double previous_estimate = std::numeric_limits<double>::infinity();
+  for (int attempt = 0; attempt < 16; ++attempt) {
+    sol = solve_with(model, solver, segments == 1 ? Method::shooting : Method::multiple_shooting, segments,
+                     options.rtol);
+    add_work(sol.diagnostics, spent);
+    spent = sol.diagnostics;
+    if (sol.status != Status::tolerance_not_met && sol.status != Status::integrator_failure) break;
+    const double estimate = sol.diagnostics.error_estimate;
+    const bool improving = !(estimate > previous_estimate / 2);  // also true after an integrator failure (NaN)
+    previous_estimate = estimate;
+    if (segments < 64 && improving) {
+      segments *= 2;
+      continue;
+    }
+    if (solver.rtol < options.rtol && !improving) break;  // tightening no longer helps: round-off's floor
+    Options tighter = solver;
+    tighter.rtol = std::max(solver.rtol * std::clamp(options.rtol / estimate / 4, 1e-3, 0.25), 1e-14);
+    // Keep the last judged solve rather than one that cannot be verified at CVODE's floor.
+    if (!verifiable(tighter)) break;
+    solver = tighter;
+  }
+  return sol;
+}
+
+}  // namespace ogive
