@@ -158,73 +158,19 @@ class ParametricCurve : public Curve {
 
 // ---------------------------------------------------------------------------------------------------
 // Points: a user's list of axis points, fitted by a C2 curve and re-parameterised by arc length. Two
-// kinds of file, one syntax (read by one reader): a HALF file (family "points") runs from the springing
-// to the crown of a symmetric arch; a WHOLE file (family "whole-points", extent whole) from the left
-// springing to the right one of any arch, the springings at any heights (a rampant arch, a flying
-// buttress).
+// kinds of file, one syntax (read by one reader): a HALF file (family "points", extent half) runs from
+// the springing to the crown of a symmetric arch; a WHOLE file (family "whole-points", extent whole)
+// from the left springing to the right one, the springings at any heights. The file format, every rule
+// the points must keep and the fit are specified in docs/file-formats.md; the functions below keep it.
 //
-// File format (CSV, UTF-8 or ASCII), both kinds:
-//   - line 1 is the header "x,y" (case-insensitive; spaces or tabs around the fields allowed);
-//   - then one point per line, "x,y" in metres, in order along the arch (half: springing to crown;
-//     whole: left springing to right springing);
-//     decimal numbers: an optional sign ('+' too), digits with an optional point, an optional exponent
-//     (1e-3, 1E+2); no hex, inf or nan; values must be finite doubles;
-//   - accepted as ordinary: CRLF line ends, a UTF-8 byte-order mark, spaces/tabs around fields, blank
-//     lines at the end of the file. A blank line followed by more data is an error;
-//   - at most 4096 characters a line (without the line end), at least 4 and at most 100000 points.
-// Errors name the physical line (the header is line 1); syntax is checked while reading, then the rules
-// below, so a syntax error anywhere is reported before a broken rule. An empty file is reported at line
-// 1, too few points at the last point's line.
-//
-// Half files. Rules for the points (in file order, after the span):
-//   - span = 2 (x_last - x_first), the last point being the crown, lies in [kMinSpan, kMaxSpan] of
-//     curve.hpp (checked first, at the last point's line, when x_last > x_first: the rules below are
-//     measured against it);
-//   - the first point is the springing: |y| <= 1e-9 * span (it is then set to exactly 0), x is shifted so
-//     that the springing is at x = 0;
-//   - no point repeats its predecessor; x strictly increases; every point after the springing lies above
-//     the springing line (y > 0); y never falls from springing to crown (so the crown is the highest point
-//     and the arch cannot double back); each point lies at least 1e-9 span from its predecessor (closer,
-//     the fit's chord-length parameter cannot tell them apart);
-//   - the rise (the crown's y) is at most 100 spans, far beyond any arch (the pointed family's tallest,
-//     eccentricity 100, rises 10 spans), which bounds the coordinates (at the last point's line).
-// The fitted spline (below) must then be an arch too, or the error names the point that ends the bad
-// piece: it reaches the crown moving towards mid-span (uneven points, e.g. a steep last step before the
-// horizontal crown, can make it stop or turn back there: dx/dtau at the crown must be >= 1e-3), and its
-// arc length converges on every piece (it does not when the spline nearly stops: a cusp).
-// The fit: a parametric cubic spline x(tau), y(tau) in cumulative chord length tau (so a vertical
-// springing tangent is fine), through the points AND their mirror images about the crown, with
-// not-a-knot end conditions at both springings. By symmetry that spline has y'(crown) = 0 (horizontal
-// crown tangent, as a smooth symmetric arch must) and x''(crown) = 0 and continuous curvature through the
-// crown; it is computed on the half as a spline with those two crown conditions, which is the same
-// spline. Not-a-knot (rather than natural) ends keep the springing's curvature instead of forcing it to 0,
-// so the fit is fourth-order accurate up to the springing. The curvature is continuous (breakpoints()
-// empty would do for the geometry); its derivative jumps at the points, so breakpoints() returns the
-// interior points' arc lengths: there an integrator of high order must restart, or its error estimate
-// fails (measured: a 25-point survey gave profile errors 30x the asked rtol without the restarts).
-//
-// Whole files. Heights are measured up from the left springing: the points are translated so that the
-// first is (0, 0), x from 0 (left springing) to span() (right springing), right_springing_height() = the
-// last point's y minus the first's (either sign). Rules for the points (in this order; each names the
-// line of the point that breaks it):
-//   - span = x_last - x_first lies in [kMinSpan, kMaxSpan] (checked first, at the last point's line,
-//     when x_last > x_first);
-//   - no point repeats its predecessor; x strictly increases (a file whose points fold back is refused at
-//     the first point whose x does not increase); each point lies at least 1e-9 span from its predecessor;
-//   - |right springing height| <= 100 spans (at the last point's line) and the rise, the highest point's
-//     height above the left springing, <= 100 spans (at that point's line): they bound the coordinates;
-//   - every interior point lies strictly above the chord joining the two springings (an arch, not a sag).
-// The fit: the same parametric cubic spline in cumulative chord length through the points (no mirror),
-// not-a-knot at both springings, so fourth-order accurate up to both ends. It must then be an arch too,
-// or the error names the point that ends the bad piece: x never turns back (dx/dtau > 0 on every piece,
-// checked at the minimum of that quadratic: "the spline folds back"), and its arc length converges on
-// every piece (no cusp, as for the half). A vertical springing tangent is at the edge of the first rule:
-// the fit through points sampled exactly on it leans outward, dx/dtau ~ -h^3 / (4 R^3) at the springing
-// (h the spacing, R the radius; measured -3e-3 and -4e-4 on a semicircle of 13 and 25 points), and is
-// refused, the message saying why. crown() is the arc length of the fit's highest point (the root of
-// dy/dtau of the spline itself, to round-off; it need not be a point of the file). breakpoints() are the
-// interior points' arc lengths (restarts, as for the half). Symmetric points give the same spline as the
-// half file of their left half mirrored (whole_arch of it), to round-off (measured 7e-16 L).
+// What a returned curve guarantees, beyond curve.hpp's invariants: it passes through every point (in
+// file coordinates shifted so that the first point is (0, 0); a half file's springing y is set to
+// exactly 0); arcs() is empty (the closed form does not apply) and the curvature is continuous, while
+// its derivative jumps at the points, so breakpoints() returns the interior points' arc lengths (an
+// integrator of high order must restart there); at(s) is accurate to round-off. A half curve's crown
+// tangent is horizontal (the fit is that of the points and their mirror image); a whole curve's crown()
+// is the arc length of the fit's highest point, and right_springing_height() is the last point's y
+// minus the first's. Symmetric whole points give whole_arch() of their left half's curve to round-off.
 
 // A problem with a points file, located: what() is one line "FILE:LINE: rule broken", or "FILE: rule
 // broken" when the problem is the file as a whole (cannot be opened or read; line() is then 0).
