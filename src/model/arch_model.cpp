@@ -53,9 +53,15 @@ ArchModel::ArchModel(Scene scene, bool whole_arch_domain) : scene_(std::move(sce
   a_N_ = scene_.inertia() / (scene_.area() * L * L);
   a_V_ = m.effective_modulus() / (m.shear_coefficient * m.shear_modulus()) * a_N_;
   self_weight_ = scene_.weight_per_length() / w;
-  const Loads& loads = scene_.loads;
-  uniform_ = loads.empty();
+  uniform_ = scene_.loads.empty();
+  place_loads();
+  set_boundary_conditions();
+  sum_loads();
+}
 
+void ArchModel::place_loads() {
+  const double L = scales_.length;
+  const Loads& loads = scene_.loads;
   std::vector<double> curve_breaks;
   for (double b : curve_->breakpoints()) curve_breaks.push_back(b / L);
   // A load within a part in 1e12 of a curve breakpoint acts there (a load at the crown of a pointed arch:
@@ -107,7 +113,9 @@ ArchModel::ArchModel(Scene scene, bool whole_arch_domain) : scene_(std::move(sce
   }
   std::sort(breakpoints_.begin(), breakpoints_.end());
   breakpoints_.erase(std::unique(breakpoints_.begin(), breakpoints_.end()), breakpoints_.end());
+}
 
+void ArchModel::set_boundary_conditions() {
   // The conditions, each fixing one component (springing_split relies on it). A springing fixes its
   // displacements (its spread outwards: -x at the left, +x at the right) and its rotation if clamped,
   // else its moment; the half's crown its symmetry (Ux, psi or the hinge's M, and Fy).
@@ -132,7 +140,11 @@ ArchModel::ArchModel(Scene scene, bool whole_arch_domain) : scene_(std::move(sce
   } else {
     springing(scene_.right, 1.0, 3, bc_.at_end);
   }
+}
 
+void ArchModel::sum_loads() {
+  const double L = scales_.length;
+  const Loads& loads = scene_.loads;
   // The domain's load and its moment about the left springing, for the equilibrium residual: the
   // self-weight exactly (the curve's first moment), point loads at their x, other loads by Gauss-Legendre
   // between the breakpoints, where they are smooth.

@@ -171,6 +171,12 @@ class ArchModel {
   std::optional<double> hinge_;
   BoundaryConditions bc_;
   double total_load_ = 0, load_moment_ = 0;
+  // The constructor's steps, in order: where the loads act and where the system is not smooth (the
+  // curve's breakpoints, the point loads, the hinge, the live loads' ends, where the fill meets the
+  // extrados); the six boundary conditions; the domain's total load and its moment.
+  void place_loads();
+  void set_boundary_conditions();
+  void sum_loads();
   // b beyond the self-weight at scaled arc length s, whose axis point is p.
   double distributed_load(double s, const CurvePoint& p) const;
   // Where each live load acts, in scaled arc length: the same numbers as its breakpoints, so that the

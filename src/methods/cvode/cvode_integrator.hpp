@@ -1,5 +1,8 @@
-// CVODE wrapper (private header): the only translation unit that includes <cvode/cvode.h> is
-// cvode_integrator.cpp. Every SUNDIALS object is owned by RAII handles; every return flag is checked.
+// CVODE wrapper (private header): the files of src/methods/cvode/ are the only ones that include CVODE;
+// this header exposes none of its types. Every SUNDIALS object is owned by RAII handles; every return
+// flag is checked, getters included. The wrapper's modules: vector_kernels (ogive's N_Vector),
+// fixed_point_solver (Adams' iteration), block_linear_solver (BDF's Newton matrix and its solver) and
+// cvode_integrator (the integrator and its per-thread workspaces).
 //
 // It integrates a system handed to it (Boost.Odeint's way: the integrator owns no model), whose state is
 // a 6 x columns matrix Y: for ogive's linear problem Y' = A(s) Y + b(s) e_last^T, the columns of a
