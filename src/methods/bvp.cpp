@@ -110,9 +110,8 @@ bool march(const ArchModel& model, const std::vector<double>& knots, const Advan
 namespace {
 
 // The reduced problem is 3 x 3 or 4 x 4, so it is solved with fixed sizes: Eigen's dynamic-size LU and
-// products took their blocked paths (and allocated) on these tiny matrices and doubled a closed-form
-// scene's reduced solve. The sums are written out in the order the dynamic-size code took them
-// (sequential, column by column), so that every result is the same to the last bit as before.
+// products take their blocked paths (and allocate) on such tiny matrices. The sums are written out in a
+// fixed order (sequential, column by column), so that every result is reproducible to the last bit.
 template <int M>
 using Square = Eigen::Matrix<double, M, M>;
 template <int M>

@@ -172,8 +172,8 @@ Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& o
   // more than one segment, and its transfer y(b) = Phi y(a) + p is applied to the map. Of Phi's six
   // columns those of unit psi, Fx, Fy and M are integrated, with p (5 columns, not 7): a unit Ux or Uy
   // at the segment's start stays a unit Ux or Uy exactly (nothing depends on the displacements). (The
-  // rigid rotation's column from the curve's positions, 4 columns, was 6 % faster still but left the
-  // slender parabola's verified error estimate 2x higher: 1.9e-9 against 2.4e-10 at rtol 1e-9.)
+  // rigid rotation's column could come from the curve's positions instead, but integrating it keeps
+  // the verified error estimate of slender arches lower.)
   const int m = unknown_count(*model);
   const bool later_segments = segments > 1 && K > 1;
   // Adams integrates every segment in one run (SegmentsSystem); BDF one segment after the other.

@@ -75,7 +75,7 @@ struct Options {
   // its error is part of the estimate, compared at min(stations, kVerificationStations) stations.
   int stations = 0;
   // Estimate the global error of a CVODE solve by a second solve at rtol / 16 (about 2.5x the time):
-  // CVODE controls local errors only, and the stability map (README) measured unverified solves at up
+  // CVODE controls local errors only, and the stability map (docs/methods.md) measured unverified solves at up
   // to 67 rtol (single shooting, a rough survey) and 37 rtol (BDF). Off (for benchmarks of the raw
   // methods), a CVODE solve's status is at best `unverified`, never `success`. Method::automatic always
   // verifies; the closed form's estimate is its round-off bound and needs no second solve.

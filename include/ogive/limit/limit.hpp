@@ -64,7 +64,7 @@ const char* to_string(JointOrientation j);
 const char* to_string(WeightModel w);
 
 // The default number of joints: enough that every printed number of the semicircle and the pointed
-// family (eps 0 .. 1.5, t/L 0.06 .. 0.2) is converged to 1e-4 (the convergence table of the README).
+// family (eps 0 .. 1.5, t/L 0.06 .. 0.2) is converged to 1e-4 (the convergence table of benchmarks/limit/README.md).
 inline constexpr int kDefaultJointsCount = 401;
 inline constexpr int kMinJointsCount = 5;
 inline constexpr int kMaxJointsCount = 20001;

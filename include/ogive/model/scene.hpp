@@ -3,7 +3,7 @@
 // m/s^2, N, N/m and N/m^2 per metre of vault width. Defaults are the paper's travertine arch, clamped,
 // under its own weight.
 //
-// Sign conventions (README "Sign conventions"): x runs from the left springing to the right one, y up;
+// Sign conventions (docs/model.md, "Sign conventions"): x runs from the left springing to the right one, y up;
 // loads act downwards; a springing's spread is outward (away from the span), its settlement downward,
 // its rotation counter-clockwise positive; reactions are given in Solution::reactions.
 #pragma once
