@@ -18,8 +18,10 @@ block as one bash script with `set -eo pipefail`, from the repository's top, std
 The README's two commands (install, build, run) are not run here: .ci/run runs them word for word, and
 this check fails if README.md does not hold them word for word. A block whose info string is `sh ci`
 is not run either: each of its commands must appear word for word in .ci/run, which runs it. Blocks of
-output (```text, ```csv) are never run. Fails (exit 1, naming file and line of the block) when a block
-exits non-zero or runs longer than --timeout seconds, or when a tracked file changed during the run
+output (```text, ```csv) are never run; one marked `output` (```csv output, ```text output) that
+follows a run block with nothing but blank lines between them must be exactly what that block prints. Fails (exit 1, naming file and line of the block) when a block
+exits non-zero, runs longer than --timeout seconds or prints other than its `output` block, or when a
+tracked file changed during the run
 (doc commands must not modify tracked files). Afterwards removes every file the blocks created that
 git does not track (compared with `git ls-files --others` before the run), and the directories they
 created. In a working tree shared with other work, a new untracked file is removed only when a block
@@ -171,7 +173,7 @@ def write_columns(ogive):
 # The commands.
 
 def blocks(path):
-    """(line of the opening fence, info string, text) for every fenced block of a markdown file."""
+    """(line of the opening fence, line of the closing one, info string, text) for every fenced block."""
     found, lines, i = [], path.read_text().splitlines(), 0
     while i < len(lines):
         match = re.match(r"^(\s*)(`{3,}|~{3,})\s*(.*)$", lines[i])
@@ -183,7 +185,7 @@ def blocks(path):
         while j < len(lines) and not re.match(rf"^\s*{re.escape(fence[0])}{{{len(fence)},}}\s*$", lines[j]):
             body.append(lines[j][indent:] if lines[j][:indent].strip() == "" else lines[j].lstrip())
             j += 1
-        found.append((i + 1, info, "\n".join(body) + "\n"))
+        found.append((i + 1, j + 1, info, "\n".join(body) + "\n"))
         i = j + 1
     return found
 
@@ -274,10 +276,21 @@ def check_commands(build_dir, files, timeout):
     to_run, skipped = [], 0
     for path in files:
         rel = path.relative_to(REPO)
-        for line, info, text in blocks(path):
+        lines = path.read_text().splitlines()
+        found = blocks(path)
+        for k, (line, end, info, text) in enumerate(found):
             words = info.split()
+            if words[1:] == ["output"]:
+                previous = found[k - 1] if k else None
+                if (not previous or previous[2].split()[:1] not in ([w] for w in RUN_LANGUAGES)
+                        or any(l.strip() for l in lines[previous[1]:line - 1])):
+                    failures.append(f"{rel}:{line}: an output block must follow its ```sh block directly")
             if not words or words[0] not in RUN_LANGUAGES:
                 continue
+            expected = None
+            if k + 1 < len(found) and found[k + 1][2].split()[1:] == ["output"] and not any(
+                    l.strip() for l in lines[end:found[k + 1][0] - 1]):
+                expected = found[k + 1][3]
             if words[1:] == ["ci"]:
                 for command in command_lines(text):
                     if " ".join(command.split()) not in ci_lines:
@@ -288,31 +301,36 @@ def check_commands(build_dir, files, timeout):
             if not command_lines(kept):
                 skipped += 1
                 continue
-            to_run.append((rel, line, kept + "\n"))
+            to_run.append((rel, line, kept + "\n", expected))
 
     before_untracked = untracked()
     before_tracked = tracked_digests()
     existed_before = {p.name for p in REPO.iterdir()}
     start = time.monotonic()
     slowest = []
-    for rel, line, text in to_run:
+    for rel, line, text, expected in to_run:
         script = "set -eo pipefail\n" + redirect_build(text, build_dir)
         t0 = time.monotonic()
         try:
             done = subprocess.run(["bash", "-c", script], cwd=REPO, stdin=subprocess.DEVNULL,
                                   capture_output=True, text=True, timeout=timeout)
             code = done.returncode
-            err = done.stderr.strip().splitlines()
+            err = (done.stderr.strip() or done.stdout.strip()).splitlines()
         except subprocess.TimeoutExpired:
-            code, err = None, [f"longer than {timeout} s"]
+            code, err, done = None, [f"longer than {timeout} s"], None
         seconds = time.monotonic() - t0
         slowest.append((seconds, f"{rel}:{line}"))
         if code != 0:
             why = f"exited {code}" if code is not None else "timed out"
             failures.append(f"{rel}:{line}: the block {why}" + (f": {err[-1]}" if err else ""))
+        elif expected is not None and done.stdout != expected:
+            got, want = done.stdout.splitlines(), expected.splitlines()
+            n = next((i for i, (a, b) in enumerate(zip(got, want)) if a != b), min(len(got), len(want)))
+            failures.append(f"{rel}:{line}: prints other than its output block, from its line {n + 1}: "
+                            f"{(got[n] if n < len(got) else '(nothing)')!r}")
     elapsed = time.monotonic() - start
 
-    texts = [text for _, _, text in to_run]
+    texts = [text for _, _, text, _ in to_run]
     after_tracked = tracked_digests()
     for rel in sorted(before_tracked):
         if after_tracked.get(rel) != before_tracked[rel]:
