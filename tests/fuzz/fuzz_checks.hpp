@@ -1,5 +1,5 @@
 // The checks the fuzz targets run on one input, shared with the doctest suite: the targets in this
-// directory call them from LLVMFuzzerTestOneInput, and tests/test_fuzz_regressions.cpp replays the seed
+// directory call them from LLVMFuzzerTestOneInput, and tests/acceptance/fuzz_replay_test.cpp replays the seed
 // corpora and every input the fuzzers ever broke through the same functions (no clang needed).
 //
 // The documented error of each entry point (UsageError, CurveFileError) is expected and its message is
@@ -25,7 +25,7 @@
 #include <fmt/format.h>
 
 #include "cli.hpp"
-#include "../csv_fields.hpp"
+#include "../support/csv_fields.hpp"
 #include "ogive/geometry/curve_families.hpp"
 #include "values.hpp"
 

@@ -1,4 +1,5 @@
-// Issue 4's acceptance: every family solved, against physics and against the closed form.
+// Every curve family solved, against physics (the semicircle, the catenary's funicular limit) and against
+// the closed form and a finer survey.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -6,8 +7,8 @@
 
 #include "ogive/geometry/curve_families.hpp"
 #include "ogive/solve/solve.hpp"
-#include "scenes.hpp"
-#include "tolerances.hpp"
+#include "support/scenes.hpp"
+#include "support/tolerances.hpp"
 
 using namespace ogive;
 
@@ -25,7 +26,6 @@ Solution run(std::shared_ptr<const Curve> curve, double t_over_L, Method m, doub
   o.integrator = integ;
   return solve(scene, o);
 }
-
 
 }  // namespace
 

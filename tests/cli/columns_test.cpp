@@ -1,18 +1,18 @@
-// CSV that reads itself (issue 15): every command's output read by a strict reader; every column
-// documented with its unit; inputs echoed as typed; one spelling for booleans and for "no number".
+// The CLI's CSV: every command's output read by a strict reader, every column documented with its unit,
+// inputs echoed as typed, one spelling for booleans and for "no number", the columns chosen by default
+// and by --columns, the thrust line's summary and the section's faces against the profile, and lists of
+// solver options.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <iostream>
 #include <map>
-#include <sstream>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
-#include "cli_run.hpp"
-#include "ogive/output/csv.hpp"
+#include "support/cli_run.hpp"
 #include "values.hpp"
 
 using namespace ogive::test;
@@ -145,7 +145,7 @@ TEST_CASE("csv: the thrust line's summary - largest |e| - where - in kern and in
   CHECK(std::abs(std::stod(column(t.out, "max_thrust_eccentricity_at")) - 0.5 * 3.141592653589793 * 5) <= 1e-5);
   CHECK(column(t.out, "thrust_in_kern") == "false");
   CHECK(column(t.out, "thrust_in_section") == "true");
-  // Thick equilateral arch: inside the kern everywhere (largest linear |e| 99 %, MODEL.md's Fig. 11).
+  // Thick equilateral arch: inside the kern everywhere (largest linear |e| 99 %, docs/model.md, Figure 11).
   const Run thick = run_command({"thrust", "--eccentricity", "0.5", "--thickness-ratio", "0.2", "--columns",
                                  "max_thrust_eccentricity,thrust_in_kern"});
   CHECK(std::stod(column(thick.out, "max_thrust_eccentricity")) < 100);
@@ -156,47 +156,6 @@ TEST_CASE("csv: the thrust line's summary - largest |e| - where - in kern and in
   CHECK(column(spread.out, "thrust_in_section") == "false");
 }
 
-TEST_CASE("csv: RFC 4180 quoting where a field needs it") {
-  ogive::CsvRow row;
-  row.add("plain").add("a, b").add("say \"x\"").add(1.5);
-  CHECK(row.take() == "plain,\"a, b\",\"say \"\"x\"\"\",1.5\n");
-  std::vector<bool> keep = {true, false, true};
-  ogive::CsvRow selected(&keep);
-  selected.add(1.0).add(2.0).add(3.0);
-  CHECK(selected.take() == "1,3\n");
-}
-
-
-TEST_CASE("csv: a repeated number (its magnitude copied from earlier in the row) reads as if formatted anew") {
-  // Every field against append_number alone, with repeats, signs, zeros, a selection, and the text
-  // before and after a rewind to a mark (the entries beyond it are stale).
-  auto formatted = [](double x) {
-    std::string s;
-    ogive::append_number(s, x);
-    return s;
-  };
-  const std::vector<double> values = {57387.507300707, -57387.507300707, 0.1, 1e-300, -0.0, 0.0, 0.1, -0.1,
-                                      57387.507300707, 3.0, 4.0, 5.0, 6.0, 0.1, -57387.507300707};
-  ogive::CsvRow row;
-  std::string expected;
-  for (double v : values) {
-    row.add(v);
-    expected += (expected.empty() ? "" : ",") + formatted(v);
-  }
-  CHECK(row.take() == expected + "\n");
-  ogive::CsvRow marked;
-  marked.add(2.5).add(-7.25);
-  marked.mark();
-  marked.add(123.456).add(-123.456);
-  CHECK(marked.take_to_mark() == "2.5,-7.25,123.456,-123.456\n");
-  // 123.456's text was beyond the mark: now 9.5 is written where it was, and a repeat must not copy it.
-  marked.add(9.5).add(123.456).add(7.25).add(-2.5);
-  CHECK(marked.take_to_mark() == "2.5,-7.25,9.5,123.456,7.25,-2.5\n");
-  std::vector<bool> keep = {true, false, true};
-  ogive::CsvRow selected(&keep);
-  selected.add(1.25).add(8.5).add(8.5);
-  CHECK(selected.take() == "1.25,8.5\n");
-}
 TEST_CASE("csv: profile prints each section's intrados and extrados points - t apart, centred on the axis") {
   const Run r = run_command({"profile", "--eccentricity", "0.5", "--thickness-ratio", "0.2", "--stations", "21"});
   REQUIRE(r.status == 0);
@@ -209,27 +168,6 @@ TEST_CASE("csv: profile prints each section's intrados and extrados points - t a
     // Inside the kern (|e| <= 100 %): the thrust point lies between the faces, within t/6 of the axis.
     CHECK(std::hypot(at("thrust_x") - at("x"), at("thrust_y") - at("y")) <= t / 6 * (1 + 1e-12));
   }
-}
-
-TEST_CASE("help that teaches: a misspelt option or subcommand gets a suggestion - a points file on standard input") {
-  const Run r = run_command({"thrust", "--eccentricty", "0.5"});
-  CHECK(r.status == 2);
-  CHECK(r.out.empty());
-  CHECK(r.err.find("did you mean '--eccentricity'?") != std::string::npos);
-  CHECK(lines(r.err).size() == 1);
-  CHECK(run_command({"thrus"}).err.find("did you mean 'thrust'?") != std::string::npos);
-  // --curve-file - reads the points from standard input: the same rows as the file.
-  const std::string path = OGIVE_DATA_DIR "/curves/semicircle-24.csv";
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  std::istringstream piped(text.str());
-  std::streambuf* saved = std::cin.rdbuf(piped.rdbuf());
-  const Run from_stdin = run_command({"thrust", "--curve", "points", "--curve-file", "-"});
-  std::cin.rdbuf(saved);
-  const Run from_file = run_command({"thrust", "--curve", "points", "--curve-file", path});
-  CHECK(from_stdin.status == 0);
-  CHECK(from_stdin.out == from_file.out);
 }
 
 TEST_CASE("csv: --method, --integrator and --rtol take lists (and --rtol ranges) like every scene option") {

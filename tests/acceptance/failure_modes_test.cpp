@@ -1,4 +1,4 @@
-// Every failure mode the stability map (benchmarks/stability_map/stability_map.py, README) found, and the proof that
+// Every failure mode the stability map (benchmarks/stability_map/, docs/methods.md) found, and the proof that
 // ogive notices it: a status, never a wrong number printed as if it were right. Each test first shows
 // that the raw method (Options::verify off, status `unverified`) really misses its tolerance there, so
 // that it has teeth. A verified `success` must be within_tolerance (solve.hpp): error <= rtol.
@@ -13,8 +13,8 @@
 #include "cli.hpp"
 #include "ogive/geometry/curve_families.hpp"
 #include "ogive/solve/solve.hpp"
-#include "scenes.hpp"
-#include "tolerances.hpp"
+#include "support/scenes.hpp"
+#include "support/tolerances.hpp"
 
 using namespace ogive;
 
@@ -68,8 +68,8 @@ const std::string kSurvey = OGIVE_DATA_DIR "/curves/catenary-survey.csv";
 }  // namespace
 
 TEST_CASE("failure mode: single shooting's profile strays past rtol (BDF - pointed arch) - verification flags it") {
-  // The map found BDF's profile at up to 37 rtol when CVODE ran at rtol / 100; it now runs at
-  // rtol / 1000 (cvode_tolerances), and what remains is still caught.
+  // BDF's profile strays past rtol on this scene even with CVODE at rtol / 1000 (cvode_tolerances):
+  // verification must catch what remains.
   const Scene scene = paper_scene(1.0, 0.02);
   const Solution ref = reference(scene);
   REQUIRE(ref.field);
@@ -136,9 +136,9 @@ TEST_CASE("failure mode: a rough survey - single shooting's profile at 67 rtol -
 }
 
 TEST_CASE("conditioning: flat segmental arches meet rtol 1e-12 - ill_conditioned only where condition x round-off exceeds rtol") {
-  // The map flagged flat arches as ill-conditioned while the 6 x 6 system's springing rows were in the
-  // estimate (condition ~1e4 at rise/L 0.02, for answers right to 1e-14). The reduced problem's
-  // condition (bvp.hpp) is 30 there; the verified solves at rtol 1e-12 are right, and say success.
+  // The condition is the reduced problem's (bvp.hpp): 30 at rise/L 0.02, where the 6 x 6 system's
+  // springing rows would give ~1e4 for answers right to 1e-14. The verified solves at rtol 1e-12 are
+  // right, and say success.
   const Scene flat = scene_of(make_segmental(10.0, 0.02));
   const Solution ref = reference(flat);
   REQUIRE(ref.ok());
@@ -203,42 +203,6 @@ TEST_CASE("verification: over corners of the map every verified success is withi
   }
   CHECK(successes > flagged);  // the check is not vacuous
   CHECK(flagged > 0);
-}
-
-TEST_CASE("auto: the closed form on circular arcs - the quadrature on smooth curves - CVODE where it does not apply") {
-  Options o;  // Method::automatic by default
-  CHECK(solve(paper_scene(0.5), o).method == Method::closed_form);
-  CHECK(solve(scene_of(make_four_centred(10.0, 0.5)), o).method == Method::closed_form);
-  const Scene catenary = scene_of(make_catenary(10.0, 0.5));
-  const Solution thrust_only = solve(catenary, o);
-  REQUIRE(thrust_only.ok());
-  CHECK(thrust_only.method == Method::quadrature);
-  CHECK(thrust_only.diagnostics.segments == 1);  // one panel: the catenary has no breakpoints
-  CHECK(thrust_only.profile.empty());  // stations only when asked for
-  CHECK(std::isfinite(thrust_only.diagnostics.error_estimate));
-  // A parabola sampled at 40 points, without its breakpoints: the quadrature does not apply; verified
-  // shooting meets rtol (with the segments it needs).
-  Options no_breakpoints = o;
-  no_breakpoints.restart_at_breakpoints = false;
-  const Scene survey = scene_of(read_points_curve(OGIVE_DATA_DIR "/curves/parabola-40.csv"));
-  Options quadrature = no_breakpoints;
-  quadrature.method = Method::quadrature;
-  CHECK(solve(survey, quadrature).status == Status::not_applicable);
-  const Solution fallback = solve(survey, no_breakpoints);
-  REQUIRE(fallback.ok());
-  CHECK(fallback.method != Method::quadrature);
-  CHECK(within_tolerance(fallback.diagnostics.error_estimate, o.rtol));
-}
-
-TEST_CASE("no silent numbers: e is undefined where N = 0 - never an unbounded number") {
-  const ArchModel model(paper_scene(0.0));
-  StateVector y = StateVector::Zero();
-  const ArchState st = model.to_physical(0.3, y);
-  CHECK(st.N == 0.0);
-  CHECK(std::isnan(st.e));
-  CHECK(std::isnan(st.thrust_x));
-  y[kFx] = -1.0;  // any compression: e defined
-  CHECK(std::isfinite(model.to_physical(0.3, y).e));
 }
 
 TEST_CASE("no silent numbers: no nan or inf in any output - tension and a resultant outside the section are flagged") {

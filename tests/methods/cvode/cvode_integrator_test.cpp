@@ -10,7 +10,7 @@
 
 #include "methods/cvode/cvode_integrator.hpp"
 #include "ogive/model/arch_model.hpp"
-#include "tolerances.hpp"
+#include "support/tolerances.hpp"
 
 using namespace ogive;
 

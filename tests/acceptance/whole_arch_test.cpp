@@ -1,30 +1,25 @@
-// Whole arches: loads, supports, hinges and asymmetric scenes on the one core (issue 11), checked against
-// independent references: statics, Euler-Bernoulli limits, mirror images and the other methods.
+// Whole arches: loads, supports, hinges and asymmetric scenes, checked against independent references:
+// statics, Euler-Bernoulli limits, funicular shapes, mirror images, an independent quadrature of the
+// fill, and the methods against one another; whole points curves solved as their mirrored half and in
+// equilibrium.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
+#include <memory>
 #include <numbers>
-#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
-#include "methods/bvp.hpp"
-#include "cli_run.hpp"
 #include "ogive/geometry/curve_families.hpp"
 #include "ogive/model/loads_file.hpp"
 #include "ogive/solve/solve.hpp"
-#include "scenes.hpp"
-#include "tolerances.hpp"
+#include "support/scenes.hpp"
+#include "support/tolerances.hpp"
 
 namespace ogive {
 namespace {
-
-using test::check_refused;
-using test::column;
-using test::lines;
-using test::run_command;
 
 constexpr double kSpan = 10.0;
 // The tolerance asked of the CVODE methods below: single shooting's global error grows over a whole arch
@@ -75,6 +70,18 @@ double equilibrium_gap(const Reactions& r, double load, double moment, double sp
   const double vertical = r.V_left + r.V_right - load;
   const double rotation = r.M_left + r.M_right + span * r.V_right - moment;
   return std::max({std::abs(horizontal), std::abs(vertical), std::abs(rotation) / span}) / std::abs(load);
+}
+
+std::string data_file(const char* name) { return std::string(OGIVE_DATA_DIR) + "/curves/" + name; }
+
+// The symmetric parabola y = 4 h x (L - x) / L^2 at n equally spaced x over [0, x_end].
+std::vector<std::pair<double, double>> parabola_points(double L, double h, int n, double x_end) {
+  std::vector<std::pair<double, double>> xy;
+  for (int i = 0; i < n; ++i) {
+    const double x = x_end * i / (n - 1);
+    xy.emplace_back(x, 4 * h * x * (L - x) / (L * L));
+  }
+  return xy;
 }
 
 }  // namespace
@@ -313,7 +320,7 @@ TEST_CASE("whole arches: a symmetric scene gives the same numbers over the half 
 }
 
 TEST_CASE("whole arches: closed form, single and multiple shooting agree on asymmetric scenes, each verified") {
-  // Every method's status keeps issue 7's promise on the whole arch: multiple shooting meets rtol; single
+  // Every method's status keeps its promise (solve.hpp) on the whole arch: multiple shooting meets rtol; single
   // shooting, whose global error grows over the whole arch's length (1 to 10 rtol here at CVODE's rtol/10),
   // says success only where it is within rtol, and its estimate bounds its true error either way.
   std::vector<Scene> scenes(3, paper_scene(0.5, 0.1));
@@ -369,41 +376,12 @@ TEST_CASE("whole arches: a load at a springing goes into its support") {
   }
 }
 
-TEST_CASE("whole arches: the CLI's influence line, loads file and sign conventions") {
-  // An influence line in one call: H is the same for a and 1 - a, and vanishes at the springings.
-  const test::Run r = run_command({"thrust", "--density", "0", "--point-load", "1e4", "--point-load-at", "0:1:11",
-                                   "--columns", "point_load_at,status,H_left,V_left,V_right"});
-  REQUIRE(r.status == 0);
-  REQUIRE(lines(r.out).size() == 12);
-  for (std::size_t k = 1; k <= 11; ++k) {
-    const double H = std::stod(column(r.out, "H_left", k)), H_mirror = std::stod(column(r.out, "H_left", 12 - k));
-    CHECK(std::abs(H - H_mirror) <= kExact * 1e4);
-    CHECK(close(std::stod(column(r.out, "V_left", k)) + std::stod(column(r.out, "V_right", k)), 1e4, kExact));
-  }
-  CHECK(std::abs(std::stod(column(r.out, "H_left", 1))) <= kExact * 1e4);
-  // The loads file: the same numbers as the options.
-  const test::Run file = run_command({"thrust", "--loads-file", OGIVE_DATA_DIR "/loads/quarter-point-and-half-live.csv",
-                                      "--columns", "H_left,M_right"});
-  const test::Run options = run_command({"thrust", "--point-load", "2e4", "--point-load-at", "0.25", "--live-load",
-                                         "5000", "--live-load-to", "0.5", "--columns", "H_left,M_right"});
-  REQUIRE(file.status == 0);
-  CHECK(file.out == options.out);
-  // Sign conventions: an outward spread of the left springing lowers H (the arch is let out); a
-  // settlement of the left springing moves load to the right one.
-  const double H0 = std::stod(column(run_command({"thrust", "--columns", "H_left"}).out, "H_left"));
-  const double H_spread =
-      std::stod(column(run_command({"thrust", "--left-spread-ratio", "1e-4", "--columns", "H_left"}).out, "H_left"));
-  CHECK(H_spread < H0);
-  const test::Run settled = run_command({"thrust", "--left-settlement-ratio", "1e-4", "--columns", "V_left,V_right"});
-  CHECK(std::stod(column(settled.out, "V_left")) < std::stod(column(settled.out, "V_right")));
-}
-
 TEST_CASE("whole arches: a live load switches where the integrator restarts, so shooting converges") {
-  // The load used to switch where x(s) >= a L, a point the edge's breakpoint (x inverted by bisection)
-  // could miss by one rounding: CVODE then met a jump inside a span, and no CVODE method verified this
-  // scene (single shooting's estimate 8.5e-6 at rtol 1e-8, even the 1e-12 reference missed). Now single
-  // shooting (one run over the whole arch) and multiple shooting (segments side by side) verify the
-  // rtol asked of them here and are within it of a reference at 1e-12.
+  // A live load's edge is a breakpoint of the integration: the load must switch exactly where the
+  // integrator restarts, not where x(s) >= a L (which a breakpoint found by bisection in x can miss by one
+  // rounding, leaving CVODE a jump inside a span that no tolerance verifies). Single shooting (one run
+  // over the whole arch) and multiple shooting (segments side by side) verify the rtol asked of them
+  // here and are within it of a reference at 1e-12.
   Scene s;
   s.curve = make_catenary(kSpan, 0.4);
   s.thickness = 0.1 * kSpan;
@@ -444,90 +422,34 @@ TEST_CASE("whole arches: segments integrated together (Adams) agree with segment
   CHECK(difference <= 2 * kAsked);
 }
 
-TEST_CASE("whole arches: bad loads, supports and movements are refused with one line, exit 2") {
-  check_refused({"thrust", "--point-load", "1e4", "--point-load-at", "1.2"});      // outside the span
-  check_refused({"thrust", "--point-load", "1e4", "--point-load-at", "-0.1"});
-  check_refused({"thrust", "--fill-density", "-5", "--fill-height-ratio", "0.5"});  // negative density
-  check_refused({"thrust", "--fill-density", "1800", "--fill-height-ratio", "0"});  // at the springing line
-  check_refused({"thrust", "--fill-density", "1800", "--fill-height-ratio", "-0.2"});
-  check_refused({"thrust", "--fill-density", "1800"});                              // no level
-  check_refused({"thrust", "--middle-spread-ratio", "1e-4"});                       // no such side
-  check_refused({"thrust", "--supports", "pinned", "--left-rotation", "1e-4"});     // a pinned side turns freely
-  check_refused({"thrust", "--left-support", "hinged"});
-  check_refused({"thrust", "--point-load-at", "0.3"});
-  check_refused({"thrust", "--left-spread-ratio", "1e-4", "--support-displacement-ratio", "1e-4"});
-  check_refused({"thrust", "--live-load", "100", "--live-load-from", "0.6", "--live-load-to", "0.4"});
-  check_refused({"thrust", "--density", "0"});                                      // no load at all
-  check_refused({"thrust", "--loads-file", OGIVE_DATA_DIR "/no-such-file.csv"});
-}
-
-TEST_CASE("whole arches: a loads file's errors name the line") {
-  auto refused_at = [](const std::string& text, const std::string& where) {
-    std::istringstream in(text);
-    CAPTURE(text);
-    try {
-      parse_loads(in, "loads.csv");
-      FAIL("accepted");
-    } catch (const std::invalid_argument& e) {
-      CHECK(std::string(e.what()).rfind(where, 0) == 0);
-    }
-  };
-  refused_at("", "loads.csv:1:");
-  refused_at("kind,value\n", "loads.csv:1:");
-  refused_at("kind,value,a,b\npoint,1e4,1.5,\n", "loads.csv:2:");
-  refused_at("kind,value,a,b\npoint,1e4,0.5,\nlive,1e3,0.7,0.2\n", "loads.csv:3:");
-  refused_at("kind,value,a,b\nfill,-1,0.5,\n", "loads.csv:2:");
-  refused_at("kind,value,a,b\nfill,1800,0,\n", "loads.csv:2:");
-  refused_at("kind,value,a,b\nwind,1,0.5,\n", "loads.csv:2:");
-  refused_at("kind,value,a,b\npoint,abc,0.5,\n", "loads.csv:2:");
-  std::istringstream ok("Kind, Value, A, B\r\npoint,1e4,0.25,\r\nlive,5e3,0,0.5\r\nfill,1800,0.6,\r\n\r\n");
-  const Loads loads = parse_loads(ok, "ok.csv");
-  CHECK(loads.points.size() == 1);
-  CHECK(loads.live.size() == 1);
-  CHECK(loads.fills.size() == 1);
-  CHECK(loads.live[0].to == 0.5);
-}
-
-}  // namespace ogive
-
-namespace ogive {
-
-TEST_CASE("whole arches: a surveyed rampant arch from the CLI, and whole-arch files refused with their line") {
-  // The rampant survey: springings at different heights, solved over the whole arch; its reactions
-  // balance its weight (w times the axis length) and H_left = H_right.
-  const test::Run r = test::run_command({"thrust", "--curve", "whole-points", "--curve-file",
-                                         OGIVE_DATA_DIR "/curves/rampant-survey.csv", "--columns",
-                                         "status,domain,H_left,H_right,V_left,V_right"});
-  REQUIRE(r.status == 0);
-  CHECK(test::column(r.out, "domain") == "whole");
-  Scene s;
-  s.curve = read_whole_points_curve(OGIVE_DATA_DIR "/curves/rampant-survey.csv");
-  CHECK(s.curve->right_springing_height() > 1.0);
-  s.thickness = 0.08 * s.span();
-  const double weight = s.weight_per_length() * s.curve->length();
-  const double V = std::stod(test::column(r.out, "V_left")) + std::stod(test::column(r.out, "V_right"));
-  CHECK(close(V, weight, 1e-8));  // the rtol asked (auto's default)
-  CHECK(close(std::stod(test::column(r.out, "H_left")), std::stod(test::column(r.out, "H_right")), kExact));
-
-  const std::string dir = std::filesystem::temp_directory_path().string();
-  auto file = [&](const std::string& name, const std::string& text) {
-    const std::string path = dir + "/ogive-test-" + name;
-    std::ofstream(path) << text;
-    return path;
-  };
-  // Folds back: x decreases at line 5.
-  const std::string folds = file("folds.csv", "x,y\n0,0\n1,2\n2,3\n1.5,3.2\n4,2\n5,0\n");
-  const test::Run f = test::run_command({"thrust", "--curve", "whole-points", "--curve-file", folds});
-  CHECK(f.status == 2);
-  CHECK(f.out.empty());
-  CHECK(f.err.find(folds + ":5:") != std::string::npos);
-  // Fewer points than the fit needs: named at the last point's line.
-  const std::string few = file("few.csv", "x,y\n0,0\n1,1\n2,0\n");
-  const test::Run t = test::run_command({"thrust", "--curve", "whole-points", "--curve-file", few});
-  CHECK(t.status == 2);
-  CHECK(t.err.find(few + ":4:") != std::string::npos);
-  test::check_refused({"thrust", "--curve", "whole-points"});  // no file
-  test::check_refused({"thrust", "--curve", "whole-points", "--curve-file", folds, "--span", "10"});
+TEST_CASE("a whole points curve solves: the symmetric file as its mirrored half, the rampant one in equilibrium") {
+  Scene scene;
+  scene.thickness = 0.5;
+  // The symmetric parabola's whole file and the half fit of its left half, solved over the half arch (the
+  // half's own model): the same arch, so the same thrust to the solves' tolerance.
+  scene.curve = make_points_curve(parabola_points(10, 5, 21, 5));
+  REQUIRE(scene.symmetric());
+  const Solution half = solve(scene);
+  scene.curve = read_whole_points_curve(data_file("parabola-whole-41.csv"));
+  CHECK_FALSE(scene.symmetric());  // a whole curve is solved over the whole arch
+  const Solution whole = solve(scene);
+  REQUIRE(half.ok());
+  REQUIRE(whole.ok());
+  const double rtol = Options{}.rtol;
+  CHECK(relative_difference(whole.H, half.H) <= 10 * rtol);
+  CHECK(relative_difference(whole.V, half.V) <= 10 * rtol);
+  CHECK(relative_difference(whole.reactions.V_right, whole.V) <= 10 * rtol);
+  // The rampant survey under its own weight: the springings carry the weight between them and push
+  // equally (no horizontal load), the lower springing more of the weight (its half of the arch is longer).
+  scene.curve = read_whole_points_curve(data_file("rampant-survey.csv"));
+  const Solution rampant = solve(scene);
+  REQUIRE(rampant.ok());
+  const double weight = scene.weight_per_length() * scene.curve->length();
+  const Reactions& r = rampant.reactions;
+  CHECK(close(r.V_left + r.V_right, weight, kExact));  // measured 1e-15
+  CHECK(close(r.H_left, r.H_right, kExact));
+  CHECK(r.V_left > r.V_right);
+  CHECK(r.H_left > 0);
 }
 
 }  // namespace ogive

@@ -1,7 +1,8 @@
-// CVODE single and multiple shooting against the closed form: accuracy, convergence, slender arches,
-// profiles, breakpoints and failure reporting.
+// CVODE single and multiple shooting (src/methods/shooting.hpp) against the closed form: accuracy,
+// convergence, slender arches, profiles, breakpoints and failure reporting.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -9,15 +10,15 @@
 #include "methods/closed_form.hpp"
 #include "methods/shooting.hpp"
 #include "ogive/solve/solve.hpp"
-#include "scenes.hpp"
-#include "tolerances.hpp"
+#include "support/scenes.hpp"
+#include "support/tolerances.hpp"
 
 using namespace ogive;
 
 namespace {
 
 // The raw methods (Options::verify off): these tests measure CVODE's own accuracy, which the
-// tolerance factors of shooting.cpp rest on. Verification is tested in test_failure_modes.cpp.
+// tolerance factors of shooting.cpp rest on. Verification is tested in acceptance/failure_modes_test.cpp.
 Solution run(const Scene& scene, Method m, Integrator i = Integrator::adams, double rtol = 1e-8, int stations = 0,
              int segments = 8) {
   Options o;
@@ -198,26 +199,4 @@ TEST_CASE("shooting: a CVODE failure is a status naming the flag and where - nev
   CHECK(std::isnan(sol.H_over_V));
   CHECK(sol.profile.empty());
   CHECK_THROWS_AS(sol.at(1.0), std::logic_error);
-}
-
-TEST_CASE("closed form on a non-circular curve is not applicable - with a reason") {
-  struct Sine final : Curve {
-    std::string family() const override { return "sine"; }
-    double span() const override { return 10.0; }
-    double length() const override { return 8.0; }
-    CurvePoint at(double s) const override {
-      // A made-up smooth curve: theta = pi/2 (1 - s/8)^2 is enough for this test's purpose.
-      const double th = std::numbers::pi / 2 * (1 - s / 8) * (1 - s / 8);
-      return {s < 8 ? 5.0 * s / 8 : 5.0, 0.0, th, -std::numbers::pi / 8 * (1 - s / 8)};
-    }
-  };
-  Scene scene;
-  scene.curve = std::make_shared<Sine>();
-  scene.thickness = 0.5;
-  Options o;
-  o.method = Method::closed_form;
-  const Solution sol = solve(scene, o);
-  CHECK(sol.status == Status::not_applicable);
-  CHECK(sol.message.find("piecewise-circular") != std::string::npos);
-  CHECK(std::isnan(sol.H_over_V));
 }

@@ -1,6 +1,6 @@
 // The fuzz targets' checks (tests/fuzz/fuzz_checks.hpp) in the ordinary suite: every seed of the corpora
 // in tests/fuzz/corpus/ (the found-* files are inputs the fuzzers broke), and each bug the fuzzers found,
-// with its input as a literal and what it gives now.
+// with its input as a literal and the answer it must get.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -15,7 +15,7 @@
 
 #include "fuzz/fuzz_checks.hpp"
 #include "ogive/model/scene.hpp"
-#include "tolerances.hpp"
+#include "support/tolerances.hpp"
 
 namespace {
 
@@ -137,7 +137,7 @@ TEST_CASE("fuzz found: a catenary of rise ratio 1e-320 had nan geometry") {
   CHECK_THROWS_WITH_AS(ogive::make_catenary(10, 31.90041e-320),
                        doctest::Contains("rise_ratio: must lie in [1e-06, 2] for a catenary arch, got 3.19"),
                        std::invalid_argument);
-  CHECK_THROWS_AS(ogive::make_parabolic(10, 1e-300), std::invalid_argument);  // its first moment was 0/0
+  CHECK_THROWS_AS(ogive::make_parabolic(10, 1e-300), std::invalid_argument);  // its first moment would be 0/0
   check_refused({"curve", "--curve", "catenary", "--rise-ratio", "31.90041e-320"}, "--rise-ratio: must lie in [1e-06, 2]");
   // The smallest allowed rise gives finite geometry.
   for (auto make : {ogive::make_catenary, ogive::make_parabolic, ogive::make_elliptical})
@@ -173,7 +173,7 @@ TEST_CASE("fuzz found: points files with coordinates near 1e300 gave a nan curve
 TEST_CASE("fuzz found: a points fit that stops at its crown took minutes to tabulate") {
   // 4 points, a steep last step before the crown whose tangent the fit makes horizontal: the spline
   // turned back (dx/dtau < 0) or nearly stopped at the crown, and the adaptive arc-length table split
-  // panels down to 1e-13 of the range. Now each is refused, at once, naming the crown's line.
+  // panels down to 1e-13 of the range. Each must be refused at once, naming the crown's line.
   const auto back = file_error("x, y\n0.05, 0.000\n0.200,1\n1.75, 1.105\n2.02, 2.309\n");
   CHECK(back.line() == 5);
   CHECK(back.rule().find("stops or turns back at the crown") != std::string::npos);

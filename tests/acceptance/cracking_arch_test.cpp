@@ -1,0 +1,119 @@
+// The cracking arch as a whole: where the no-tension arch cracks against where the linear model leaves
+// the kern, its thrust against the linear one at fixed supports (the paper's agreement with its cracked
+// DEM arches), and along a spreading support the limit analysis' minimum thrust as the floor it
+// approaches, on a path without hysteresis.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include "ogive/limit/limit.hpp"
+#include "ogive/solve/solve.hpp"
+#include "support/scenes.hpp"
+#include "support/tolerances.hpp"
+
+namespace ogive {
+namespace {
+
+constexpr double kRtol = 1e-8;  // asked of the no-tension solves below; success guarantees it
+
+Scene no_tension(double eps, double t_over_L, double d_over_L = 0) {
+  Scene s = paper_scene(eps, t_over_L, d_over_L);
+  s.section = SectionKind::no_tension;
+  return s;
+}
+
+Options shooting(Method m = Method::shooting, double rtol = kRtol) {
+  Options o;
+  o.method = m;
+  o.rtol = rtol;
+  return o;
+}
+
+}  // namespace
+
+TEST_CASE("no-tension: cracks where the linear model leaves the kern, and H/V stays close to it at fixed supports") {
+  Options o = shooting(Method::automatic);
+  o.stations = 129;
+  for (double eps : {0.0, 0.5}) {
+    const Solution nt = solve(no_tension(eps, 0.08), o);
+    Options exact;
+    exact.method = Method::closed_form;
+    exact.stations = 129;
+    const Solution linear = solve(paper_scene(eps, 0.08), exact);
+    REQUIRE(nt.ok());
+    REQUIRE(linear.ok());
+    // Cracks start where the linear model leaves the kern: every cracked zone of the no-tension arch
+    // holds stations where the linear |e| exceeds 100 %, and every such zone of the linear model is
+    // cracked at its peak (the redistribution widens the zones; it makes no new one).
+    const std::size_t n = nt.profile.size();
+    for (std::size_t i = 0; i < n;) {
+      if (nt.profile[i].cracked) {
+        std::size_t j = i;
+        bool overlaps = false;
+        for (; j < n && nt.profile[j].cracked; ++j) overlaps = overlaps || std::abs(linear.profile[j].e) > 100;
+        CAPTURE(eps);
+        CAPTURE(nt.profile[i].s);
+        CHECK(overlaps);
+        i = j;
+      } else {
+        ++i;
+      }
+    }
+    for (std::size_t i = 0; i < n;) {
+      if (std::abs(linear.profile[i].e) > 100) {
+        std::size_t peak = i, j = i;
+        for (; j < n && std::abs(linear.profile[j].e) > 100; ++j)
+          if (std::abs(linear.profile[j].e) > std::abs(linear.profile[peak].e)) peak = j;
+        CAPTURE(eps);
+        CAPTURE(linear.profile[peak].s);
+        CHECK(nt.profile[peak].cracked);
+        i = j;
+      } else {
+        ++i;
+      }
+    }
+    // ... and H/V stays within 1.5 % of the linear value (the paper's agreement of its cracked DEM
+    // arches with the continuous model at fixed supports).
+    CAPTURE(eps);
+    CHECK(relative_difference(nt.H_over_V, linear.H_over_V) <= 0.015);
+  }
+}
+
+TEST_CASE("no-tension: along spreading H/V falls towards the minimum thrust, and the path has no hysteresis") {
+  const double t = 0.08;
+  Scene s = no_tension(0.0, t);
+  LimitOptions lo;
+  lo.weight = WeightModel::axis;  // this model's convention: the weight on the axis
+  Scene rigid = paper_scene(0.0, t);
+  const LimitResult limit = analyse_limit(rigid, lo);
+  REQUIRE(limit.status == LimitStatus::success);
+  const double floor = limit.H_min() / limit.V;
+  std::vector<double> ds{0};
+  for (int i = 0; i <= 16; ++i) ds.push_back(std::pow(10.0, -6 + 4.0 * i / 16));
+  std::vector<Solution> path;
+  const Options o = shooting(Method::automatic);
+  for (double d : ds) {
+    s.set_support_displacement(d * 10.0);
+    path.push_back(solve(s, o, path.empty() ? nullptr : &path.back()));
+    REQUIRE(path.back().ok());
+  }
+  for (std::size_t k = 1; k < path.size(); ++k) {
+    CAPTURE(ds[k]);
+    CHECK(path[k].H_over_V <= path[k - 1].H_over_V * (1 + kRtol));  // never rises
+    CHECK(path[k].H_over_V >= floor);                               // never below the minimum thrust
+  }
+  CHECK(path.back().H_over_V <= floor * 1.02);  // within 2 % of it at d = 1 % of the span
+  // Back down to d = 0 along the same values: the model is elastic, the states return.
+  Solution back = path.back();
+  for (std::size_t k = ds.size() - 1; k-- > 0;) {
+    s.set_support_displacement(ds[k] * 10.0);
+    back = solve(s, o, &back);
+    REQUIRE(back.ok());
+    CAPTURE(ds[k]);
+    CHECK(relative_difference(back.H_over_V, path[k].H_over_V) <= 4 * kRtol);
+  }
+}
+
+}  // namespace ogive

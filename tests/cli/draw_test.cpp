@@ -1,0 +1,228 @@
+// `ogive draw`: the SVG is well-formed (xmllint) and to scale: its thrust line is the profile's point by
+// point, --limit's lines are ogive limit's joint by joint with the hinges circled, the faces lie at t/2
+// from the axis; one file per scene with --output-dir; bad targets refused; an unsolved scene drawn
+// without a thrust line; a thrust line that runs off split where it leaves the drawing.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ogive/output/svg.hpp"
+#include "support/cli_run.hpp"
+#include "support/files.hpp"
+#include "support/tolerances.hpp"
+
+using namespace ogive::test;
+
+namespace {
+
+// The points of the SVG path with the given id, in the arch's metres: SVG (x, -y) times the drawing's
+// unit (data-metres-per-unit) back to (x, y). Each subpath ("M") is one run; the drawing writes
+// "M x,y L x,y ..." (include/ogive/output/svg.hpp).
+std::vector<std::vector<std::pair<double, double>>> svg_path_points(const std::string& svg, const std::string& id) {
+  const std::size_t unit_at = svg.find("data-metres-per-unit=\"");
+  REQUIRE(unit_at != std::string::npos);
+  const double unit = std::stod(svg.substr(unit_at + 22));
+  const std::size_t at = svg.find("id=\"" + id + "\"");
+  REQUIRE_MESSAGE(at != std::string::npos, "no element " << id);
+  const std::size_t d = svg.find(" d=\"", at) + 4;
+  std::istringstream in(svg.substr(d, svg.find('"', d) - d));
+  std::vector<std::vector<std::pair<double, double>>> runs;
+  for (std::string command, xy; in >> command >> xy;) {
+    REQUIRE((command == "M" || command == "L"));
+    if (command == "M") runs.emplace_back();
+    const std::size_t comma = xy.find(',');
+    runs.back().emplace_back(unit * std::stod(xy.substr(0, comma)), -unit * std::stod(xy.substr(comma + 1)));
+  }
+  return runs;
+}
+
+bool xmllint_accepts(const std::string& path) {
+  return std::system(("xmllint --noout '" + path + "' 2>/dev/null").c_str()) == 0;
+}
+
+}  // namespace
+
+TEST_CASE("draw: the SVG is well-formed and its thrust line is the profile's, point by point") {
+  TempDir dir("ogive_test_draw");
+  // Closed form, CVODE shooting on a smooth curve, spreading supports, a pointed crown, a model arch
+  // of 5 mm drawn in units of 1 mm.
+  const std::vector<std::vector<std::string>> scenes = {
+      {"--eccentricity", "0.5"},
+      {"--span", "0.005"},
+      {"--curve", "catenary", "--rise-ratio", "0.4"},
+      {"--curve", "semicircular", "--support-displacement-ratio", "0.0001"},
+      {"--eccentricity", "1", "--thickness-ratio", "0.2"}};
+  for (const auto& scene : scenes) {
+    std::vector<std::string> draw = {"draw", "--stations", "41", "--output", dir / "arch.svg"};
+    std::vector<std::string> profile = {"profile", "--stations", "41", "--all-columns"};
+    draw.insert(draw.end(), scene.begin(), scene.end());
+    profile.insert(profile.end(), scene.begin(), scene.end());
+    CAPTURE(scene.back());
+    const Run drawn = run_command(draw), profiled = run_command(profile);
+    REQUIRE(drawn.status == 0);
+    REQUIRE(profiled.status == 0);
+    CHECK(drawn.err.empty());
+    CHECK(column(drawn.out, "file") == dir / "arch.svg");
+    CHECK(column(drawn.out, "H_over_V") == column(profiled.out, "H_over_V"));
+    CHECK(xmllint_accepts(dir / "arch.svg"));
+    const auto runs = svg_path_points(read_text(dir / "arch.svg"), "thrust-line");
+    REQUIRE(runs.size() == 1);  // every station has a thrust point in these scenes
+    REQUIRE(runs[0].size() == 41);
+    const double span = std::stod(column(profiled.out, "span"));
+    for (std::size_t k = 0; k < 41; ++k) {
+      // Both print the shortest decimal that reads back to the same double: they agree to round-off (of
+      // the division by the drawing's unit, exact when the unit is 1 m).
+      CHECK(std::abs(runs[0][k].first - std::stod(column(profiled.out, "thrust_x", k + 1))) <= ogive::kExact * span);
+      CHECK(std::abs(runs[0][k].second - std::stod(column(profiled.out, "thrust_y", k + 1))) <= ogive::kExact * span);
+    }
+  }
+}
+
+TEST_CASE("draw --limit: the minimum and maximum thrust lines are ogive limit's, joint by joint - hinges circled") {
+  TempDir dir("ogive_test_draw_limit");
+  const std::vector<std::string> scene = {"--eccentricity", "0.5", "--thickness-ratio", "0.1"};
+  std::vector<std::string> draw = {"draw", "--limit", "--output", dir / "limit.svg"};
+  draw.insert(draw.end(), scene.begin(), scene.end());
+  const Run drawn = run_command(draw);
+  REQUIRE(drawn.status == 0);
+  CHECK(xmllint_accepts(dir / "limit.svg"));
+  const std::string svg = read_text(dir / "limit.svg");
+  for (const char* state : {"min", "max"}) {
+    std::vector<std::string> limit = {"limit", "--thrust-line", state};
+    limit.insert(limit.end(), scene.begin(), scene.end());
+    const Run joints = run_command(limit);
+    REQUIRE(joints.status == 0);
+    const auto runs = svg_path_points(svg, std::string("thrust-line-") + state);
+    REQUIRE(runs.size() == 1);
+    REQUIRE(runs[0].size() + 1 == lines(joints.out).size());
+    std::size_t hinges = 0;
+    for (std::size_t k = 0; k < runs[0].size(); ++k) {
+      CHECK(std::abs(runs[0][k].first - std::stod(column(joints.out, "thrust_x", k + 1))) <= ogive::kExact * 10);
+      CHECK(std::abs(runs[0][k].second - std::stod(column(joints.out, "thrust_y", k + 1))) <= ogive::kExact * 10);
+      hinges += column(joints.out, "hinge", k + 1).empty() ? 0 : 1;
+    }
+    const std::size_t group = svg.find(std::string("id=\"thrust-line-") + state + "-hinges\"");
+    REQUIRE(group != std::string::npos);
+    std::size_t circles = 0;
+    for (std::size_t at = svg.find("<circle", group); at < svg.find("</g>", group); at = svg.find("<circle", at + 1))
+      ++circles;
+    CHECK(circles == hinges);
+    CHECK(hinges >= 3);  // a mechanism's worth
+  }
+}
+
+TEST_CASE("draw: the faces lie at t/2 from the axis - the semicircle's on circles of radius (L +- t)/2") {
+  TempDir dir("ogive_test_draw_faces");
+  REQUIRE(run_command({"draw", "--curve", "semicircular", "--thickness-ratio", "0.1", "--output", dir / "s.svg"}).status == 0);
+  const std::string svg = read_text(dir / "s.svg");
+  const double L = 10, t = 1;
+  for (const auto& [id, radius] : {std::pair{"intrados", (L - t) / 2}, std::pair{"extrados", (L + t) / 2},
+                                   std::pair{"axis", L / 2}}) {
+    CAPTURE(id);
+    const auto runs = svg_path_points(svg, id);
+    REQUIRE(runs.size() == 1);
+    CHECK(runs[0].size() == 2 * 101 - 1);  // the left half's samples and their mirror images
+    for (const auto& [x, y] : runs[0]) CHECK(std::abs(std::hypot(x - L / 2, y) - radius) <= ogive::kExact * L);
+    CHECK(std::abs(runs[0].front().first - (L - 2 * radius) / 2) <= ogive::kExact * L);  // springings on y = 0
+    CHECK(std::abs(runs[0].back().first - (L + 2 * radius) / 2) <= ogive::kExact * L);
+  }
+  CHECK(svg.find("id=\"support-left\"") != std::string::npos);
+  CHECK(svg.find("id=\"support-right\"") != std::string::npos);
+  CHECK(svg.find("id=\"scale-bar\"") != std::string::npos);
+  CHECK(svg.find("id=\"support-movement\"") == std::string::npos);  // d = 0: nothing moves
+  CHECK(svg.find("H/V = 0.3") != std::string::npos);
+}
+
+TEST_CASE("draw: --output-dir writes one file per scene, named after what varies - one CSV row each") {
+  TempDir dir("ogive_test_draw_dir");
+  const Run r = run_command({"draw", "--eccentricity", "0,0.5", "--support-displacement-ratio", "0,0.0002", "--output-dir",
+                     dir.path.string()});
+  REQUIRE(r.status == 0);
+  REQUIRE(lines(r.out).size() == 1 + 4);
+  const std::string expected = dir / "pointed_support-displacement-ratio-0.0002_eccentricity-0.5.svg";
+  CHECK(column(r.out, "file", 4) == expected);
+  for (std::size_t row = 1; row <= 4; ++row) CHECK(xmllint_accepts(column(r.out, "file", row)));
+  const std::string moved = read_text(expected);
+  CHECK(moved.find("id=\"support-movement\"") != std::string::npos);
+  CHECK(moved.find("d = 2 mm outwards") != std::string::npos);  // 0.0002 of 10 m
+}
+
+TEST_CASE("draw: bad targets are one line naming the option - exit 2 - nothing on stdout") {
+  TempDir dir("ogive_test_draw_bad");
+  std::filesystem::create_directories(dir.path / "sub.svg");
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {"draw"},                                                            // no target
+           {"draw", "--output", dir / "a.svg", "--output-dir", dir.path.string()},  // two targets
+           {"draw", "--output", dir / "sub.svg"},                               // a directory
+           {"draw", "--output", dir / "missing/a.svg"},                         // cannot be created
+           {"draw", "--output", dir / "a,b.svg"},                               // would break the CSV
+           {"draw", "--output", dir / "a.svg", "--eccentricity", "0,1"},         // a sweep into one file
+           {"draw", "--output-dir", dir / "missing", "--eccentricity", "0,1"},   // no such directory
+           {"draw", "--output-dir", dir / "a.svg"},                              // not a directory
+           {"draw", "--output-dir", dir.path.string(), "--eccentricity", "0.5,0.5"},  // two scenes, one name
+           {"draw", "--output-dir", dir.path.string(), "--eccentricity", "0:1:1001"},  // too many pictures
+           {"draw", "--output", dir / "a.svg", "--stations", "1"},
+           {"draw", "--output", dir / "a.svg", "--rise-ratio", "0.3"}}) {
+    check_refused(args);
+    const Run r = run_command(args);
+    CHECK((r.err.find("--output") != std::string::npos || r.err.find("--stations") != std::string::npos ||
+           r.err.find("--rise-ratio") != std::string::npos));
+  }
+  CHECK(run_command({"draw"}).err.find("--output FILE.svg") != std::string::npos);
+}
+
+TEST_CASE("draw: an unsolved scene is drawn without a thrust line - its row says why - exit 3") {
+  TempDir dir("ogive_test_draw_unsolved");
+  const Run r = run_command({"draw", "--curve", "catenary", "--method", "closed-form", "--output", dir / "c.svg"});
+  CHECK(r.status == 3);
+  CHECK(column(r.out, "status") == "not_applicable");
+  CHECK(column(r.out, "H_over_V").empty());
+  const std::string svg = read_text(dir / "c.svg");
+  CHECK(xmllint_accepts(dir / "c.svg"));
+  CHECK(svg.find("id=\"thrust-line\"") == std::string::npos);
+  CHECK(svg.find("no solution: not_applicable") != std::string::npos);
+  CHECK(svg_path_points(svg, "extrados").size() == 1);
+}
+
+TEST_CASE("draw: a thrust line that runs off keeps the profile's points in order - drops only the far ones") {
+  // Where N changes sign the thrust point runs to infinity: the semicircle at d/L = 0.02 % has such a
+  // station; the drawing leaves out points farther than kFarFromArch spans from the arch.
+  TempDir dir("ogive_test_draw_far");
+  const std::vector<std::string> scene = {"--curve", "semicircular", "--support-displacement-ratio", "0.0002",
+                                          "--stations", "101"};
+  std::vector<std::string> draw = {"draw", "--output", dir / "far.svg"}, profile = {"profile"};
+  draw.insert(draw.end(), scene.begin(), scene.end());
+  profile.insert(profile.end(), scene.begin(), scene.end());
+  const Run drawn = run_command(draw), profiled = run_command(profile);
+  REQUIRE(drawn.status == 0);
+  REQUIRE(profiled.status == 0);
+  const auto runs = svg_path_points(read_text(dir / "far.svg"), "thrust-line");
+  std::vector<std::pair<double, double>> points;
+  for (const auto& run : runs) points.insert(points.end(), run.begin(), run.end());
+  const double L = 10, t = 0.8;
+  std::size_t next = 0, far = 0;
+  for (std::size_t k = 1; k <= 101; ++k) {
+    const std::string tx = column(profiled.out, "thrust_x", k), ty = column(profiled.out, "thrust_y", k);
+    const double x = std::stod(tx), y = std::stod(ty);
+    // The arch's box: x in [-t/2, L + t/2], y in [0, L/2 + t/2].
+    const bool near = x >= -t / 2 - ogive::kFarFromArch * L && x <= L + t / 2 + ogive::kFarFromArch * L &&
+                      y >= -ogive::kFarFromArch * L && y <= L / 2 + t / 2 + ogive::kFarFromArch * L;
+    if (!near) {
+      ++far;
+      continue;
+    }
+    REQUIRE(next < points.size());
+    CHECK(std::abs(points[next].first - x) <= ogive::kExact * L);
+    CHECK(std::abs(points[next].second - y) <= ogive::kExact * L);
+    ++next;
+  }
+  CHECK(next == points.size());
+  CHECK(far >= 1);           // the scene does run off ...
+  CHECK(runs.size() == far + 1);  // ... and each dropped station splits the line (none at the ends here)
+}

@@ -1,0 +1,159 @@
+// `ogive limit` (the CLI's limit subcommand): one row per scene with inadmissible arches as rows and
+// hinges as x/L:face, the load factor and its mechanism's, one row per joint with --thrust-line, the
+// scene's loads and pins, and the refusal of bad input.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli.hpp"
+#include "support/tolerances.hpp"
+
+using namespace ogive;
+
+namespace {
+
+// The static and kinematic multipliers of one mechanism are the same number computed twice: they agree
+// to round-off.
+constexpr double kVirtualWork = 1e-6;
+// The thrusts of a statically determinate arch found twice by the LP agree to its feasibility
+// tolerance (1e-11 of the load scale) and a little more.
+constexpr double kSameRing = 1e-9;
+
+struct Run {
+  int status;
+  std::string out, err;
+};
+
+Run limit_cli(std::vector<std::string> args) {
+  args.insert(args.begin(), "limit");
+  std::ostringstream out, err;
+  const int status = ogive::cli::run_cli(args, out, err);
+  return {status, out.str(), err.str()};
+}
+
+std::vector<std::string> split(const std::string& text, char sep) {
+  std::vector<std::string> out;
+  std::string item;
+  std::istringstream in(text);
+  while (std::getline(in, item, sep)) out.push_back(item);
+  if (!text.empty() && text.back() == sep && sep != '\n') out.push_back("");
+  return out;
+}
+
+std::string field(const std::string& csv, const std::string& name, std::size_t row = 1) {
+  const auto lines = split(csv, '\n');
+  const auto header = split(lines.at(0), ',');
+  const auto it = std::find(header.begin(), header.end(), name);
+  REQUIRE_MESSAGE(it != header.end(), "no column " << name);
+  return split(lines.at(row), ',').at(static_cast<std::size_t>(it - header.begin()));
+}
+
+}  // namespace
+
+TEST_CASE("cli: limit prints one row per scene, inadmissible arches as rows, hinges as x/L:face") {
+  const Run r = limit_cli({"--eccentricity", "0,0.5", "--thickness-ratio", "0.03,0.15"});
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  const auto lines = split(r.out, '\n');
+  REQUIRE(lines.size() == 1 + 4);
+  CHECK(field(r.out, "status", 1) == "inadmissible");
+  CHECK(field(r.out, "H_min", 1).empty());
+  CHECK(!field(r.out, "thickness_min_ratio", 1).empty());
+  CHECK(field(r.out, "status", 3) == "success");
+  // The semicircle's minimum-thrust hinges: haunch intrados, crown extrados, haunch intrados.
+  const auto hinges = split(field(r.out, "hinges_min", 3), ';');
+  REQUIRE(hinges.size() == 3);
+  CHECK(hinges[1] == "0.5:extrados");
+  CHECK(hinges[0].find(":intrados") != std::string::npos);
+  CHECK(close(std::stod(field(r.out, "geometric_safety_factor", 3)),
+              0.15 / std::stod(field(r.out, "thickness_min_ratio", 3)), kExact));
+  CHECK(r.out.find("nan") == std::string::npos);
+  CHECK(r.out.find("inf") == std::string::npos);
+}
+
+TEST_CASE("cli: limit with a point load prints the load factor and its mechanism's, --thrust-line one row per joint") {
+  const Run r = limit_cli({"--point-load", "2e5", "--point-load-at", "0.25", "--thickness-ratio", "0.12"});
+  REQUIRE(r.status == 0);
+  const double lf = std::stod(field(r.out, "load_factor")), mech = std::stod(field(r.out, "load_factor_mechanism"));
+  CHECK(close(lf, mech, kVirtualWork));
+  CHECK(split(field(r.out, "hinges_collapse"), ';').size() == 4);
+
+  const Run lines = limit_cli({"--thrust-line", "collapse", "--point-load", "2e5", "--point-load-at", "0.25",
+                               "--thickness-ratio", "0.12", "--joints-count", "41"});
+  REQUIRE(lines.status == 0);
+  REQUIRE(split(lines.out, '\n').size() == 1 + 41);
+  int hinges = 0;
+  for (std::size_t j = 1; j <= 41; ++j) {
+    // Every crossing lies on its joint, between intrados and extrados.
+    const double ix = std::stod(field(lines.out, "intrados_x", j)), iy = std::stod(field(lines.out, "intrados_y", j));
+    const double ex = std::stod(field(lines.out, "extrados_x", j)), ey = std::stod(field(lines.out, "extrados_y", j));
+    const double tx = std::stod(field(lines.out, "thrust_x", j)), ty = std::stod(field(lines.out, "thrust_y", j));
+    const double length = std::hypot(ex - ix, ey - iy);
+    const double u = ((tx - ix) * (ex - ix) + (ty - iy) * (ey - iy)) / (length * length);
+    CHECK(std::abs((tx - ix) * (ey - iy) - (ty - iy) * (ex - ix)) <= 1e-9 * length * 10.0);
+    CHECK(u >= -1e-9);
+    CHECK(u <= 1 + 1e-9);
+    hinges += !field(lines.out, "hinge", j).empty();
+  }
+  CHECK(hinges == 4);
+
+  // A state that does not exist (the arch cannot stand): one row that says so, without numbers.
+  const Run none = limit_cli({"--thrust-line", "max", "--thickness-ratio", "0.03", "--joints-count", "41"});
+  REQUIRE(none.status == 0);
+  REQUIRE(split(none.out, '\n').size() == 2);
+  CHECK(field(none.out, "status") == "inadmissible");
+  CHECK(field(none.out, "thrust_x").empty());
+}
+
+TEST_CASE("cli: limit takes the scene's loads and pins: a live load's factor, the three-hinged arch's single thrust") {
+  const Run live = limit_cli({"--live-load", "2e4", "--live-load-to", "0.5", "--fill-density", "1800",
+                              "--fill-height-ratio", "0.5", "--thickness-ratio", "0.12"});
+  REQUIRE(live.status == 0);
+  CHECK(field(live.out, "status") == "success");
+  CHECK(close(std::stod(field(live.out, "load_factor")), std::stod(field(live.out, "load_factor_mechanism")), kVirtualWork));
+  // The fill is dead: without a live load no load factor.
+  const Run dead = limit_cli({"--fill-density", "1800", "--fill-height-ratio", "0.5", "--thickness-ratio", "0.12"});
+  REQUIRE(dead.status == 0);
+  CHECK(field(dead.out, "load_factor").empty());
+
+  const Run pinned = limit_cli({"--supports", "pinned", "--crown-hinge", "--eccentricity", "0", "--thickness-ratio", "0.15"});
+  REQUIRE(pinned.status == 0);
+  CHECK(field(pinned.out, "hinges_min") == "0:axis;0.5:axis;1:axis");
+  CHECK(close(std::stod(field(pinned.out, "H_min")), std::stod(field(pinned.out, "H_max")), kSameRing));
+}
+
+TEST_CASE("cli: limit refuses bad input with one line and exit 2") {
+  const std::vector<std::vector<std::string>> cases = {
+      {"--friction", "0"},
+      {"--friction", "-0.3"},
+      {"--joints-count", "3"},
+      {"--joints-count", "200"},
+      {"--joints-count", "x"},
+      {"--joints", "diagonal"},
+      {"--weight", "lumped"},
+      {"--point-load", "1e5", "--point-load-at", "1.5"},
+      {"--point-load", "1e5", "--point-load-at", "-0.1"},
+      {"--point-load-at", "0.3"},
+      {"--thrust-line", "collapse"},
+      {"--thrust-line", "middle"},
+      {"--support-displacement-ratio", "0.0001"},
+      {"--left-spread-ratio", "0.0001"},
+      {"--thrust-line", "collapse", "--fill-density", "1800", "--fill-height-ratio", "0.5"},
+      {"--thickness-ratio", "1.2"},
+      {"--repeats", "-1"},
+  };
+  for (const auto& args : cases) {
+    std::string joined;
+    for (const auto& a : args) joined += a + " ";
+    CAPTURE(joined);
+    const Run r = limit_cli(args);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(split(r.err, '\n').size() == 1);
+    CHECK(r.err.rfind("ogive: ", 0) == 0);
+  }
+}

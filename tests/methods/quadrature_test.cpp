@@ -1,0 +1,145 @@
+// The quadrature (force) method (src/methods/quadrature.hpp) and its own error estimate: against the
+// closed form on every circular family, against verified CVODE multiple shooting on the smooth curves
+// and the surveys, against the catenary's funicular limit, and where it does not apply.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "methods/quadrature.hpp"
+#include "ogive/geometry/curve_families.hpp"
+#include "ogive/solve/solve.hpp"
+#include "support/scenes.hpp"
+#include "support/tolerances.hpp"
+
+using namespace ogive;
+
+namespace {
+
+constexpr int kStations = 41;  // as ogive bench measures profiles
+
+Scene scene_of(std::shared_ptr<const Curve> curve, double t_over_L = 0.08, double d_over_L = 0.0) {
+  Scene s;
+  s.curve = std::move(curve);
+  s.thickness = t_over_L * s.curve->span();
+  s.set_support_displacement(d_over_L * s.curve->span());
+  return s;
+}
+
+Solution solve_with(const Scene& scene, Method m, double rtol, int stations = kStations) {
+  Options o;
+  o.method = m;
+  o.rtol = rtol;
+  o.stations = stations;
+  return solve(scene, o);
+}
+
+// The error of everything a solution prints: H/V and the profile.
+double true_error(const Solution& sol, const Solution& ref, const Scene& scene) {
+  return std::max(relative_difference(sol.H_over_V, ref.H_over_V),
+                  profile_difference(sol.profile, ref.profile, scene.thickness));
+}
+
+}  // namespace
+
+TEST_CASE("quadrature: the closed form's H/V and profile on every circular family, rtol 1e-4 .. 1e-12") {
+  std::vector<Scene> scenes;
+  for (double eps : {0.0, 0.25, 0.5, 1.0, 2.0}) scenes.push_back(scene_of(make_pointed(10.0, eps)));
+  scenes.push_back(scene_of(make_pointed(10.0, 0.5), 0.2, 3e-4));  // thick, supports spread
+  scenes.push_back(scene_of(make_segmental(10.0, 0.1)));
+  scenes.push_back(scene_of(make_segmental(10.0, 0.3)));
+  scenes.push_back(scene_of(make_three_centred(10.0, 0.25, 50.0)));
+  scenes.push_back(scene_of(make_four_centred(10.0, 0.42)));
+  scenes.push_back(scene_of(make_four_centred(10.0, 0.5, 40.0, 10.0)));
+  for (const Scene& scene : scenes) {
+    const Solution ref = solve_with(scene, Method::closed_form, 1e-12);
+    REQUIRE(ref.ok());
+    for (double rtol : {1e-4, 1e-6, 1e-8, 1e-10, 1e-12}) {
+      const Solution sol = solve_with(scene, Method::quadrature, rtol);
+      CAPTURE(scene.curve->family());
+      CAPTURE(rtol);
+      REQUIRE(sol.ok());
+      CHECK(sol.method == Method::quadrature);
+      const double error = true_error(sol, ref, scene);
+      CHECK(error <= 10 * rtol);
+      // Its own estimate bounds its true error, up to the closed form's own round-off.
+      CHECK(error <= sol.diagnostics.error_estimate +
+                         ref.diagnostics.condition_estimate * std::numeric_limits<double>::epsilon());
+      CHECK(sol.diagnostics.error_estimate <= 10 * rtol);
+    }
+  }
+}
+
+TEST_CASE("quadrature: verified CVODE multiple shooting's H/V and profile on smooth curves and surveys") {
+  const std::vector<Scene> scenes = {
+      scene_of(make_catenary(10.0, 0.5)),        scene_of(make_catenary(10.0, 0.2), 0.02),
+      scene_of(make_parabolic(10.0, 0.5)),       scene_of(make_parabolic(10.0, 0.3)),
+      scene_of(make_elliptical(10.0, 0.3)),      scene_of(make_elliptical(10.0, 0.7), 0.1, 2e-4),
+      scene_of(read_points_curve(OGIVE_DATA_DIR "/curves/catenary-survey.csv")),
+      scene_of(read_points_curve(OGIVE_DATA_DIR "/curves/parabola-40.csv")),
+      scene_of(read_points_curve(OGIVE_DATA_DIR "/curves/semicircle-24.csv")),
+  };
+  for (const Scene& scene : scenes) {
+    Options o;
+    o.method = Method::multiple_shooting;
+    o.rtol = 1e-12;
+    o.segments = 32;
+    o.stations = kStations;
+    const Solution ref = solve(scene, o);
+    REQUIRE(ref.field);  // success, or ill_conditioned on the survey (condition 1e4): solved
+    // The reference's own error: its verification estimate, or its conditioning, whichever is larger.
+    const double ref_error = std::max(ref.diagnostics.error_estimate,
+                                      ref.diagnostics.condition_estimate * std::numeric_limits<double>::epsilon());
+    REQUIRE(ref_error <= 1e-11);
+    for (double rtol : {1e-6, 1e-8, 1e-10}) {
+      const Solution sol = solve_with(scene, Method::quadrature, rtol);
+      CAPTURE(scene.curve->family());
+      CAPTURE(rtol);
+      REQUIRE(sol.ok());
+      const double error = true_error(sol, ref, scene);
+      CHECK(error <= 10 * rtol);
+      CHECK(error <= sol.diagnostics.error_estimate + ref_error);
+    }
+  }
+}
+
+TEST_CASE("quadrature: the catenary tends to its funicular H/V = 1/sinh(L/2a) as t/L falls") {
+  const double L = 10.0, rise = 0.5;
+  const double funicular = 1.0 / std::sinh(L / (2.0 * catenary_parameter(L, rise)));
+  // (That the eccentricity falls with t/L is checked in acceptance/curve_solves_test.cpp, where auto runs
+  // this method.)
+  double previous_gap = 0, previous_t = 0;
+  for (double t : {0.08, 0.02, 0.005, 0.001, 1e-4}) {
+    const Solution sol = solve_with(scene_of(make_catenary(L, rise), t), Method::quadrature, 1e-12, 0);
+    REQUIRE(sol.ok());
+    const double gap = relative_difference(sol.H_over_V, funicular);
+    CAPTURE(t);
+    if (previous_t > 0) {
+      // The remainder comes from axial shortening and shear, both of order (t/L)^2.
+      const double order = std::log(previous_gap / gap) / std::log(previous_t / t);
+      CHECK(order > 1.9);
+      CHECK(order < 2.1);
+    }
+    previous_gap = gap;
+    previous_t = t;
+  }
+  CHECK(previous_gap < 1e-7);  // t/L = 1e-4: 3.5e-8
+}
+
+TEST_CASE("quadrature: misuse and what does not apply") {
+  // Ignoring the breakpoints would put a jump of curvature inside a panel: refused as not applicable.
+  Options o;
+  o.method = Method::quadrature;
+  o.restart_at_breakpoints = false;
+  const Solution sol = solve(scene_of(make_four_centred(10.0, 0.42)), o);
+  CHECK(sol.status == Status::not_applicable);
+  CHECK(!sol.message.empty());
+  CHECK(!sol.field);
+  // A curve without breakpoints has none to ignore.
+  CHECK(solve(scene_of(make_catenary(10.0, 0.5)), o).ok());
+  CHECK(std::string(to_string(Method::quadrature)) == "quadrature");
+}

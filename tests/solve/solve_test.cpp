@@ -1,0 +1,69 @@
+// The dispatcher (include/ogive/solve/solve.hpp): misuse throws naming the field, and Method::automatic
+// chooses the closed form on circular arcs, the quadrature on smooth curves and CVODE where neither
+// applies.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "ogive/geometry/curve_families.hpp"
+#include "ogive/solve/solve.hpp"
+#include "support/scenes.hpp"
+#include "support/tolerances.hpp"
+
+using namespace ogive;
+
+namespace {
+
+Scene scene_of(std::shared_ptr<const Curve> curve, double t_over_L = 0.08) {
+  Scene s;
+  s.curve = std::move(curve);
+  s.thickness = t_over_L * s.curve->span();
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("closed form: misuse throws naming the field") {
+  Scene bad = paper_scene(0.0);
+  bad.material.poisson_ratio = 0.7;
+  CHECK_THROWS_WITH_AS(solve(bad), doctest::Contains("poisson_ratio"), std::invalid_argument);
+  bad = paper_scene(0.0);
+  bad.thickness = 0;
+  CHECK_THROWS_WITH_AS(solve(bad), doctest::Contains("thickness"), std::invalid_argument);
+  bad = paper_scene(0.0);
+  bad.thickness = 10.0;  // deeper than twice the radius (5 m)
+  CHECK_THROWS_WITH_AS(solve(bad), doctest::Contains("thickness"), std::invalid_argument);
+  Options o;
+  o.rtol = 0;
+  CHECK_THROWS_WITH_AS(solve(paper_scene(0.0), o), doctest::Contains("rtol"), std::invalid_argument);
+  o = {};
+  o.stations = 1;
+  CHECK_THROWS_WITH_AS(solve(paper_scene(0.0), o), doctest::Contains("stations"), std::invalid_argument);
+}
+
+TEST_CASE("auto: the closed form on circular arcs - the quadrature on smooth curves - CVODE where it does not apply") {
+  Options o;  // Method::automatic by default
+  CHECK(solve(paper_scene(0.5), o).method == Method::closed_form);
+  CHECK(solve(scene_of(make_four_centred(10.0, 0.5)), o).method == Method::closed_form);
+  const Scene catenary = scene_of(make_catenary(10.0, 0.5));
+  const Solution thrust_only = solve(catenary, o);
+  REQUIRE(thrust_only.ok());
+  CHECK(thrust_only.method == Method::quadrature);
+  CHECK(thrust_only.diagnostics.segments == 1);  // one panel: the catenary has no breakpoints
+  CHECK(thrust_only.profile.empty());  // stations only when asked for
+  CHECK(std::isfinite(thrust_only.diagnostics.error_estimate));
+  // A parabola sampled at 40 points, without its breakpoints: the quadrature does not apply; verified
+  // shooting meets rtol (with the segments it needs).
+  Options no_breakpoints = o;
+  no_breakpoints.restart_at_breakpoints = false;
+  const Scene survey = scene_of(read_points_curve(OGIVE_DATA_DIR "/curves/parabola-40.csv"));
+  Options quadrature = no_breakpoints;
+  quadrature.method = Method::quadrature;
+  CHECK(solve(survey, quadrature).status == Status::not_applicable);
+  const Solution fallback = solve(survey, no_breakpoints);
+  REQUIRE(fallback.ok());
+  CHECK(fallback.method != Method::quadrature);
+  CHECK(within_tolerance(fallback.diagnostics.error_estimate, o.rtol));
+}
