@@ -4,7 +4,9 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -153,6 +155,307 @@ void pinned_support(std::string& out, const char* id, const SectionFaces& faces,
   out += "</g>\n";
 }
 
+// The sizes the drawing is made to, in drawing units (svg.hpp): the span is 100 to 1000 units, whatever
+// its size in metres, so that fonts and strokes are a few units (rsvg draws no text below about 0.1
+// unit, nothing at 1e-5).
+struct Frame {
+  double unit = 1;            // metres per drawing unit
+  double L = 0, t = 0;        // span and thickness
+  Box box;                    // the arch's outline
+  double W = 0;               // the outline's width
+  double stroke = 0, font = 0;
+  double reach = 0;           // how far a support reaches beyond the section's faces
+  PlanePoint at(double x, double y) const { return PlanePoint{x / unit, y / unit}; }
+  SectionFaces faces(const SectionFaces& f) const {
+    return SectionFaces{at(f.intrados.x, f.intrados.y), at(f.extrados.x, f.extrados.y)};
+  }
+};
+
+std::string face_style(double stroke) {
+  return fmt::format("fill=\"none\" stroke=\"black\" stroke-width=\"{}\"", stroke);
+}
+std::string axis_style(double stroke) {
+  return fmt::format("fill=\"none\" stroke=\"#555555\" stroke-width=\"{}\" stroke-dasharray=\"{},{}\"", stroke,
+                     6 * stroke, 3 * stroke);
+}
+std::string thrust_style(double stroke) {
+  return fmt::format("fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"", kThrustColour, 1.5 * stroke);
+}
+// A further line of thrust: dashed, in its colour.
+std::string extra_line_style(const ExtraThrustLine& extra, double stroke) {
+  return fmt::format("stroke=\"{}\" stroke-width=\"{}\" stroke-dasharray=\"{},{}\"", extra.colour, 1.2 * stroke,
+                     4 * stroke, 2 * stroke);
+}
+
+// The arch's axis and faces, in drawing units.
+struct Outline {
+  std::vector<PlanePoint> axis, intrados, extrados;
+};
+
+// A face of the left half ends at the crown's vertical joint x = `joint`: carried to it along the
+// crown's tangent when short of it, cut where the polyline crosses it when past it.
+void end_at_crown_joint(std::vector<PlanePoint>& v, double joint, double crown_theta) {
+  if (v.back().x < joint) {
+    const double along = (joint - v.back().x) / std::cos(crown_theta);
+    v.push_back({joint, v.back().y + along * std::sin(crown_theta)});
+  } else if (v.back().x > joint) {
+    std::size_t k = v.size() - 1;
+    while (k > 0 && v[k - 1].x > joint) --k;
+    if (k > 0) {
+      const PlanePoint a = v[k - 1], b = v[k];
+      const double f = (joint - a.x) / (b.x - a.x);
+      v.resize(k);
+      v.push_back({joint, a.y + f * (b.y - a.y)});
+    }
+  }
+}
+
+// The arch: axis and faces at equal steps of arc length over the left half, mirrored onto the right.
+// At a pointed crown the two halves' sections differ (their tangents do), so each face is cut at, or
+// carried along its crown tangent to, the crown's vertical joint x = L/2, as the voussoirs meet there.
+// A whole arch (a survey) is drawn as it is, springing to springing.
+Outline arch_outline(const Scene& scene, int samples, const Frame& frame) {
+  const Curve& curve = *scene.curve;
+  const double S = curve.length();
+  Outline o;
+  auto add = [&](double s) {
+    const CurvePoint p = curve.at(s);
+    const SectionFaces f = frame.faces(section_faces(p, scene.thickness));
+    o.axis.push_back(frame.at(p.x, p.y));
+    o.intrados.push_back(f.intrados);
+    o.extrados.push_back(f.extrados);
+  };
+  if (curve.extent() == CurveExtent::whole) {
+    for (int k = 0; k < 2 * samples - 1; ++k) add(k == 2 * samples - 2 ? S : S * k / (2 * samples - 2));
+    return o;
+  }
+  for (int k = 0; k < samples; ++k) add(k == samples - 1 ? S : S * k / (samples - 1));
+  const CurvePoint crown = curve.at(S);
+  for (std::vector<PlanePoint>* face : {&o.intrados, &o.extrados})
+    end_at_crown_joint(*face, 0.5 * frame.L, crown.theta);
+  for (std::vector<PlanePoint>* line : {&o.axis, &o.intrados, &o.extrados}) {
+    std::vector<PlanePoint>& v = *line;
+    for (std::size_t k = v.size() - 1; k-- > 0;) v.push_back({frame.L - v[k].x, v[k].y});
+  }
+  return o;
+}
+
+// A springing: its axis point (m), its section's faces (drawing units), the side of its support beyond
+// the end of the axis.
+struct Springing {
+  const char* id;
+  SupportKind kind;
+  CurvePoint point;
+  SectionFaces faces;
+  PlanePoint away;
+};
+
+std::vector<Springing> springings(const Scene& scene, const Frame& frame) {
+  const Curve& curve = *scene.curve;
+  const CurvePoint left = curve.at_whole_arch(0), right = curve.at_whole_arch(curve.whole_length());
+  return {{"support-left", scene.left.kind, left, frame.faces(section_faces(left, scene.thickness)),
+           PlanePoint{-std::cos(left.theta), -std::sin(left.theta)}},
+          {"support-right", scene.right.kind, right, frame.faces(section_faces(right, scene.thickness)),
+           PlanePoint{std::cos(right.theta), std::sin(right.theta)}}};
+}
+
+// The supports, drawn on the springing sections; the view takes in their reach.
+std::string supports_svg(const std::vector<Springing>& ends, const Frame& frame, Box& drawn) {
+  std::string out;
+  for (const Springing& e : ends) {
+    if (e.kind == SupportKind::clamped) clamped_support(out, e.id, e.faces, e.away, frame.reach, frame.stroke);
+    else pinned_support(out, e.id, e.faces, e.away, frame.reach, frame.stroke);
+  }
+  for (const Springing& e : ends)
+    for (PlanePoint p : {e.faces.intrados, e.faces.extrados}) {
+      drawn.add({p.x, p.y - 1.5 * frame.reach});
+      drawn.add({p.x, p.y + 1.5 * frame.reach});
+    }
+  return out;
+}
+
+// The thrust line: runs of drawable stations (finite, not far from the arch); the view follows the
+// line a little way out of the arch, no farther.
+std::vector<std::vector<PlanePoint>> thrust_runs(const Solution& solution, const Frame& frame, Box& drawn) {
+  const Box& box = frame.box;
+  const double W = frame.W;
+  std::vector<std::vector<PlanePoint>> thrust(1);
+  for (const ArchState& st : solution.profile) {
+    const PlanePoint p = frame.at(st.thrust_x, st.thrust_y);
+    if (std::isfinite(p.x) && std::isfinite(p.y) && box.contains(p, kFarFromArch * frame.L)) {
+      thrust.back().push_back(p);
+      drawn.add({std::clamp(p.x, box.x0 - 0.25 * W, box.x1 + 0.25 * W),
+                 std::clamp(p.y, box.y0 - 0.25 * W, box.y1 + 0.25 * W)});
+    } else if (!thrust.back().empty()) {
+      thrust.emplace_back();
+    }
+  }
+  if (thrust.back().empty()) thrust.pop_back();
+  return thrust;
+}
+
+// The masonry: the filled section, the faces and the dashed axis.
+void draw_arch(std::string& body, const Outline& o, double stroke) {
+  body += "<path id=\"section\" fill=\"#e8e0d0\" stroke=\"none\" d=\"";
+  std::vector<PlanePoint> outline = o.extrados;
+  outline.insert(outline.end(), o.intrados.rbegin(), o.intrados.rend());
+  body += path_data({outline}) + " Z\"/>\n";
+  path(body, "extrados", {o.extrados}, face_style(stroke).c_str());
+  path(body, "intrados", {o.intrados}, face_style(stroke).c_str());
+  path(body, "axis", {o.axis}, axis_style(stroke).c_str());
+}
+
+// The elastic line of thrust, clipped to the arch's surroundings (where the view follows it), so that
+// a line that runs off stays clear of the title, the arrows and the scale bar; its points are all in
+// the path.
+void draw_thrust_line(std::string& body, const std::vector<std::vector<PlanePoint>>& thrust, const Box& drawn,
+                      double stroke) {
+  if (thrust.empty()) return;
+  body += "<clipPath id=\"near-the-arch\"><rect";
+  for (const auto& [name, v] : {std::pair{"x", drawn.x0}, std::pair{"y", -drawn.y1},
+                                std::pair{"width", drawn.x1 - drawn.x0}, std::pair{"height", drawn.y1 - drawn.y0}})
+    attribute(body, name, v);
+  body += "/></clipPath>\n";
+  path(body, "thrust-line", thrust, (thrust_style(stroke) + " clip-path=\"url(#near-the-arch)\"").c_str());
+}
+
+// Further lines of thrust (limit states): dashed, their hinges circled.
+void draw_extra_lines(std::string& body, const std::vector<ExtraThrustLine>& extra_lines, const Frame& frame) {
+  for (const ExtraThrustLine& extra : extra_lines) {
+    std::vector<PlanePoint> points;
+    for (PlanePoint p : extra.points) points.push_back(frame.at(p.x, p.y));
+    if (!points.empty())
+      path(body, extra.id.c_str(), {points}, ("fill=\"none\" " + extra_line_style(extra, frame.stroke)).c_str());
+    body += fmt::format("<g id=\"{}-hinges\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\">\n", extra.id,
+                        extra.colour, frame.stroke);
+    for (PlanePoint h : extra.hinges) {
+      const PlanePoint c = frame.at(h.x, h.y);
+      body += "<circle";
+      attribute(body, "cx", c.x);
+      attribute(body, "cy", -c.y);
+      attribute(body, "r", 0.6 * frame.font);
+      body += "/>\n";
+    }
+    body += "</g>\n";
+  }
+}
+
+// The crown hinge: a pin at the crown's axis point.
+void draw_crown_hinge(std::string& body, const Curve& curve, const Frame& frame) {
+  const CurvePoint crown = curve.at(curve.crown());
+  const PlanePoint c = frame.at(crown.x, crown.y);
+  body += fmt::format("<circle id=\"crown-hinge\" cx=\"{}\" cy=\"{}\" r=\"{}\" stroke=\"black\" stroke-width=\"{}\" "
+                      "fill=\"white\"/>\n",
+                      c.x, -c.y, 0.4 * frame.reach, 1.5 * frame.stroke);
+}
+
+// Support movement: an arrow below each springing that spreads, outwards for d > 0, with its value.
+// Returns the new bottom of the drawing.
+double draw_support_movement(std::string& body, const Scene& scene, const std::vector<Springing>& ends,
+                             const Frame& frame, Box& drawn, double bottom) {
+  if (scene.left.spread == 0 && scene.right.spread == 0) return bottom;
+  const double font = frame.font;
+  const double y = bottom - 1.2 * font, length = 0.08 * frame.W;
+  body += "<g id=\"support-movement\" stroke=\"#1f4e9c\" fill=\"#1f4e9c\">\n";
+  for (const auto& [x, outward, d] : {std::tuple{ends[0].point.x / frame.unit, -1.0, scene.left.spread},
+                                      std::tuple{ends[1].point.x / frame.unit, 1.0, scene.right.spread}}) {
+    if (d == 0) continue;
+    const double sign = d > 0 ? 1.0 : -1.0;
+    const std::string label = fmt::format("d = {:.3g} mm {}", std::abs(d) * 1000, d > 0 ? "outwards" : "inwards");
+    line(body, {x, y}, {x + sign * outward * length, y},
+         fmt::format("stroke-width=\"{}\" marker-end=\"url(#arrowhead)\"", 1.5 * frame.stroke));
+    // The label below the arrow, towards the arch so that it stays in the picture.
+    text(body, {x - outward * 0.5 * font, y - 1.3 * font}, 0.8 * font, outward < 0 ? "start" : "end", label);
+    drawn.add({x + outward * (length + font), y});
+  }
+  body += "</g>\n";
+  return y - 1.6 * font;
+}
+
+// Scale bar: a round length near a quarter of the arch's width, ticks at its ends and middle. Returns
+// the new bottom of the drawing.
+double draw_scale_bar(std::string& body, const Frame& frame, double bottom) {
+  const double font = frame.font, stroke = frame.stroke;
+  const double length = round_length(0.25 * frame.W);
+  const double y = bottom - 1.5 * font, x = frame.box.x0, tick = 0.4 * font;
+  body += "<g id=\"scale-bar\" stroke=\"black\" fill=\"black\">\n";
+  line(body, {x, y}, {x + length, y}, fmt::format("stroke-width=\"{}\"", stroke));
+  for (double f : {0.0, 0.5, 1.0})
+    line(body, {x + f * length, y}, {x + f * length, y + tick}, fmt::format("stroke-width=\"{}\"", stroke));
+  text(body, {x, y - 1.1 * font}, 0.8 * font, "middle", "0");
+  text(body, {x + 0.5 * length, y - 1.1 * font}, 0.8 * font, "middle", fmt::format("{:g}", 0.5 * length * frame.unit));
+  text(body, {x + length, y - 1.1 * font}, 0.8 * font, "middle", fmt::format("{:g} m", length * frame.unit));
+  body += "</g>\n";
+  return y - 1.6 * font;
+}
+
+// The reactions' line of the title, or why there are none.
+std::string result_text(const Solution& solution) {
+  if (std::isfinite(solution.H_over_V))
+    return fmt::format("H/V = {:.6g}, H = {:.4g} kN/m, V = {:.4g} kN/m ({}, {})", solution.H_over_V, solution.H / 1000,
+                       solution.V / 1000, to_string(solution.method), to_string(solution.status));
+  return fmt::format("no solution: {}{}{}", to_string(solution.status), solution.message.empty() ? "" : ": ",
+                     solution.message);
+}
+
+// Title at title_y: the caption, then the reactions (or why there are none), then a legend.
+std::string title_svg(const Scene& scene, const Solution& solution, const DrawingOptions& options, const Frame& frame,
+                      double title_y) {
+  const double font = frame.font, x0 = frame.box.x0;
+  std::string title = "<g id=\"title\" fill=\"black\">\n";
+  text(title, {x0, title_y}, font, "start", options.title);
+  text(title, {x0, title_y - 1.4 * font}, 0.85 * font, "start", result_text(solution));
+  const double legend_y = title_y - 2.6 * font;
+  line(title, {x0, legend_y + 0.3 * font}, {x0 + 2 * font, legend_y + 0.3 * font}, thrust_style(frame.stroke));
+  text(title, {x0 + 2.5 * font, legend_y}, 0.8 * font, "start", "elastic line of thrust");
+  line(title, {x0 + 14 * font, legend_y + 0.3 * font}, {x0 + 16 * font, legend_y + 0.3 * font},
+       axis_style(frame.stroke));
+  text(title, {x0 + 16.5 * font, legend_y}, 0.8 * font, "start",
+       fmt::format("axis; section t = {:g} m; springings {}, {}", scene.thickness,
+                   scene.left.kind == SupportKind::clamped ? "clamped" : "pinned",
+                   scene.right.kind == SupportKind::clamped ? "clamped" : "pinned"));
+  for (std::size_t k = 0; k < options.extra_lines.size(); ++k) {
+    const ExtraThrustLine& extra = options.extra_lines[k];
+    const double y = legend_y - 1.3 * font * static_cast<double>(k + 1);
+    line(title, {x0, y + 0.3 * font}, {x0 + 2 * font, y + 0.3 * font}, extra_line_style(extra, frame.stroke));
+    text(title, {x0 + 2.5 * font, y}, 0.8 * font, "start", extra.label);
+  }
+  title += "</g>\n";
+  return title;
+}
+
+// The document around the drawing: its size, the view (everything drawn, the title's width of about
+// 40 font sizes and a margin), the unit, the arrowhead and a white background.
+std::string document(const std::string& content, const Frame& frame, const Box& drawn, double title_y, double bottom,
+                     double width_px) {
+  const double font = frame.font, unit = frame.unit;
+  const double margin = 1.5 * font;
+  const double vx = drawn.x0 - margin, vy = -(title_y + font) - margin;
+  const double vw = std::max(drawn.x1, frame.box.x0 + 40 * font) + margin - vx;
+  const double vh = -(bottom - font) + margin - vy;
+  std::string svg = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"";
+  attribute(svg, "width", width_px);
+  attribute(svg, "height", std::round(width_px * vh / vw));
+  svg += " viewBox=\"";
+  for (double v : {vx, vy, vw, vh}) {
+    number(svg, v);
+    svg += ' ';
+  }
+  svg.back() = '"';
+  svg += " font-family=\"sans-serif\" data-metres-per-unit=\"";
+  number(svg, unit);
+  svg += "\">\n";
+  svg += fmt::format("<desc>ogive draw: one user unit is {:g} m; the arch's point (x, y) is drawn at (x, -y) / {:g}.</desc>\n",
+                     unit, unit);
+  svg += "<defs><marker id=\"arrowhead\" viewBox=\"0 0 10 10\" refX=\"8\" refY=\"5\" markerWidth=\"4\" "
+         "markerHeight=\"4\" orient=\"auto\"><path d=\"M 0 0 L 10 5 L 0 10 Z\" fill=\"#1f4e9c\"/></marker></defs>\n";
+  svg += "<rect";
+  for (const auto& [name, v] : {std::pair{"x", vx}, std::pair{"y", vy}, std::pair{"width", vw}, std::pair{"height", vh}})
+    attribute(svg, name, v);
+  svg += " fill=\"white\"/>\n";
+  return svg + content + "</svg>\n";
+}
+
 }  // namespace
 
 double drawing_unit(double span) { return std::pow(10.0, std::floor(std::log10(span)) - 2); }
@@ -172,248 +475,34 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
   scene.validate();
-  const Curve& curve = *scene.curve;
-  const double S = curve.length();
-  // The drawing's unit (svg.hpp): the span is 100 to 1000 units, whatever its size in metres, so that
-  // fonts and strokes are a few units (rsvg draws no text below about 0.1 unit, nothing at 1e-5).
-  const double unit = drawing_unit(scene.span());
-  auto drawn_at = [unit](double x, double y) { return PlanePoint{x / unit, y / unit}; };
-  auto to_drawing = [&](PlanePoint p) { return drawn_at(p.x, p.y); };
-  auto faces_in_drawing = [&](const SectionFaces& f) { return SectionFaces{to_drawing(f.intrados), to_drawing(f.extrados)}; };
-  // From here on, lengths are in drawing units.
-  const double L = scene.span() / unit, t = scene.thickness / unit;
+  Frame frame;
+  frame.unit = drawing_unit(scene.span());
+  frame.L = scene.span() / frame.unit;
+  frame.t = scene.thickness / frame.unit;
+  const Outline outline = arch_outline(scene, options.samples, frame);
+  for (const auto* points : {&outline.axis, &outline.intrados, &outline.extrados})
+    for (PlanePoint p : *points) frame.box.add(p);
+  frame.W = frame.box.width();
+  frame.stroke = 0.002 * frame.W;
+  frame.font = 0.022 * frame.W;
+  frame.reach = 0.3 * std::max(frame.t, 0.05 * frame.L);
 
-  // The arch: axis and faces at equal steps of arc length over the left half, mirrored onto the right.
-  // At a pointed crown the two halves' sections differ (their tangents do), so each face is cut at, or
-  // carried along its crown tangent to, the crown's vertical joint x = L/2, as the voussoirs meet there.
-  std::vector<PlanePoint> axis, intrados, extrados;
-  const CurvePoint crown = curve.at(S);
-  const bool whole = curve.extent() == CurveExtent::whole;  // a whole arch (a survey): drawn as it is
-  if (whole)
-    for (int k = 0; k < 2 * options.samples - 1; ++k) {
-      const CurvePoint p = curve.at(k == 2 * options.samples - 2 ? S : S * k / (2 * options.samples - 2));
-      const SectionFaces f = faces_in_drawing(section_faces(p, scene.thickness));
-      axis.push_back(drawn_at(p.x, p.y));
-      intrados.push_back(f.intrados);
-      extrados.push_back(f.extrados);
-    }
-  for (int k = 0; k < options.samples && !whole; ++k) {
-    const CurvePoint p = curve.at(k == options.samples - 1 ? S : S * k / (options.samples - 1));
-    const SectionFaces f = faces_in_drawing(section_faces(p, scene.thickness));
-    axis.push_back(drawn_at(p.x, p.y));
-    intrados.push_back(f.intrados);
-    extrados.push_back(f.extrados);
-  }
-  for (std::vector<PlanePoint>* face : {&intrados, &extrados}) {
-    if (whole) break;
-    std::vector<PlanePoint>& v = *face;
-    const double joint = 0.5 * L;
-    if (v.back().x < joint) {  // short of the joint: along the crown's tangent
-      const double along = (joint - v.back().x) / std::cos(crown.theta);
-      v.push_back({joint, v.back().y + along * std::sin(crown.theta)});
-    } else if (v.back().x > joint) {  // past it: cut where the polyline crosses it
-      std::size_t k = v.size() - 1;
-      while (k > 0 && v[k - 1].x > joint) --k;
-      if (k > 0) {
-        const PlanePoint a = v[k - 1], b = v[k];
-        const double f = (joint - a.x) / (b.x - a.x);
-        v.resize(k);
-        v.push_back({joint, a.y + f * (b.y - a.y)});
-      }
-    }
-  }
-  for (std::vector<PlanePoint>* line : {&axis, &intrados, &extrados}) {
-    if (whole) break;
-    std::vector<PlanePoint>& v = *line;
-    for (std::size_t k = v.size() - 1; k-- > 0;) v.push_back({L - v[k].x, v[k].y});
-  }
-  Box box;
-  for (const auto* line : {&axis, &intrados, &extrados})
-    for (PlanePoint p : *line) box.add(p);
-  const double W = box.width();
-  const double stroke = 0.002 * W;
-  const double font = 0.022 * W;
-
-  // Supports: the springing sections, the side of the support beyond each end of the axis.
-  const CurvePoint left = curve.at_whole_arch(0), right = curve.at_whole_arch(curve.whole_length());
-  const SectionFaces left_faces = faces_in_drawing(section_faces(left, scene.thickness));
-  const SectionFaces right_faces = faces_in_drawing(section_faces(right, scene.thickness));
-  const PlanePoint left_away{-std::cos(left.theta), -std::sin(left.theta)};
-  const PlanePoint right_away{std::cos(right.theta), std::sin(right.theta)};
-  const double reach = 0.3 * std::max(t, 0.05 * L);
-  std::string supports;
-  for (const auto& [kind, id, faces, away] :
-       {std::tuple{scene.left.kind, "support-left", left_faces, left_away},
-        std::tuple{scene.right.kind, "support-right", right_faces, right_away}}) {
-    if (kind == SupportKind::clamped) clamped_support(supports, id, faces, away, reach, stroke);
-    else pinned_support(supports, id, faces, away, reach, stroke);
-  }
-  Box drawn = box;
-  for (const SectionFaces& f : {left_faces, right_faces})
-    for (PlanePoint p : {f.intrados, f.extrados}) {
-      drawn.add({p.x, p.y - 1.5 * reach});
-      drawn.add({p.x, p.y + 1.5 * reach});
-    }
-
-  // The thrust line: runs of drawable stations.
-  std::vector<std::vector<PlanePoint>> thrust(1);
-  for (const ArchState& st : solution.profile) {
-    const PlanePoint p = drawn_at(st.thrust_x, st.thrust_y);
-    if (std::isfinite(p.x) && std::isfinite(p.y) && box.contains(p, kFarFromArch * L)) {
-      thrust.back().push_back(p);
-      // The view follows the line a little way out of the arch, no farther.
-      drawn.add({std::clamp(p.x, box.x0 - 0.25 * W, box.x1 + 0.25 * W), std::clamp(p.y, box.y0 - 0.25 * W, box.y1 + 0.25 * W)});
-    } else if (!thrust.back().empty()) {
-      thrust.emplace_back();
-    }
-  }
-  if (thrust.back().empty()) thrust.pop_back();
-
+  // What is drawn grows the view beyond the arch: the supports, the thrust line, the arrows.
+  Box drawn = frame.box;
+  const std::vector<Springing> ends = springings(scene, frame);
+  const std::string supports = supports_svg(ends, frame, drawn);
+  const std::vector<std::vector<PlanePoint>> thrust = thrust_runs(solution, frame, drawn);
   std::string body;
-  body += "<path id=\"section\" fill=\"#e8e0d0\" stroke=\"none\" d=\"";
-  {
-    std::vector<PlanePoint> outline = extrados;
-    outline.insert(outline.end(), intrados.rbegin(), intrados.rend());
-    body += path_data({outline}) + " Z\"/>\n";
-  }
-  const std::string face_style = fmt::format("fill=\"none\" stroke=\"black\" stroke-width=\"{}\"", stroke);
-  path(body, "extrados", {extrados}, face_style.c_str());
-  path(body, "intrados", {intrados}, face_style.c_str());
-  const std::string axis_style = fmt::format(
-      "fill=\"none\" stroke=\"#555555\" stroke-width=\"{}\" stroke-dasharray=\"{},{}\"", stroke, 6 * stroke, 3 * stroke);
-  path(body, "axis", {axis}, axis_style.c_str());
-  const std::string thrust_style =
-      fmt::format("fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"", kThrustColour, 1.5 * stroke);
-  if (!thrust.empty()) {
-    // Clipped to the arch's surroundings (where the view follows it), so that a line that runs off
-    // stays clear of the title, the arrows and the scale bar; its points are all in the path.
-    body += "<clipPath id=\"near-the-arch\"><rect";
-    for (const auto& [name, v] : {std::pair{"x", drawn.x0}, std::pair{"y", -drawn.y1}, std::pair{"width", drawn.x1 - drawn.x0},
-                                  std::pair{"height", drawn.y1 - drawn.y0}})
-      attribute(body, name, v);
-    body += "/></clipPath>\n";
-    path(body, "thrust-line", thrust, (thrust_style + " clip-path=\"url(#near-the-arch)\"").c_str());
-  }
-  // Further lines of thrust (limit states): dashed, their hinges circled.
-  for (const ExtraThrustLine& extra : options.extra_lines) {
-    std::vector<PlanePoint> points;
-    for (PlanePoint p : extra.points) points.push_back(drawn_at(p.x, p.y));
-    if (!points.empty())
-      path(body, extra.id.c_str(), {points},
-           fmt::format("fill=\"none\" stroke=\"{}\" stroke-width=\"{}\" stroke-dasharray=\"{},{}\"", extra.colour,
-                       1.2 * stroke, 4 * stroke, 2 * stroke)
-               .c_str());
-    body += fmt::format("<g id=\"{}-hinges\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\">\n", extra.id, extra.colour,
-                        stroke);
-    for (PlanePoint h : extra.hinges) {
-      const PlanePoint c = drawn_at(h.x, h.y);
-      body += "<circle";
-      attribute(body, "cx", c.x);
-      attribute(body, "cy", -c.y);
-      attribute(body, "r", 0.6 * font);
-      body += "/>\n";
-    }
-    body += "</g>\n";
-  }
+  draw_arch(body, outline, frame.stroke);
+  draw_thrust_line(body, thrust, drawn, frame.stroke);
+  draw_extra_lines(body, options.extra_lines, frame);
   body += supports;
-  if (scene.crown_hinge) {  // the hinge: a pin at the crown's axis point
-    const PlanePoint c = to_drawing({curve.at(curve.crown()).x, curve.at(curve.crown()).y});
-    body += fmt::format("<circle id=\"crown-hinge\" cx=\"{}\" cy=\"{}\" r=\"{}\" stroke=\"black\" stroke-width=\"{}\" "
-                        "fill=\"white\"/>\n",
-                        c.x, -c.y, 0.4 * reach, 1.5 * stroke);
-  }
-
-  // Support movement: each springing's horizontal spread, outwards for d > 0.
-  double bottom = drawn.y0;
-  if (scene.left.spread != 0 || scene.right.spread != 0) {
-    const double y = bottom - 1.2 * font, length = 0.08 * W;
-    body += "<g id=\"support-movement\" stroke=\"#1f4e9c\" fill=\"#1f4e9c\">\n";
-    for (const auto& [x, outward, d] : {std::tuple{left.x / unit, -1.0, scene.left.spread},
-                                        std::tuple{right.x / unit, 1.0, scene.right.spread}}) {
-      if (d == 0) continue;
-      const double sign = d > 0 ? 1.0 : -1.0;
-      const std::string label = fmt::format("d = {:.3g} mm {}", std::abs(d) * 1000, d > 0 ? "outwards" : "inwards");
-      line(body, {x, y}, {x + sign * outward * length, y},
-           fmt::format("stroke-width=\"{}\" marker-end=\"url(#arrowhead)\"", 1.5 * stroke));
-      // The label below the arrow, towards the arch so that it stays in the picture.
-      text(body, {x - outward * 0.5 * font, y - 1.3 * font}, 0.8 * font, outward < 0 ? "start" : "end", label);
-      drawn.add({x + outward * (length + font), y});
-    }
-    body += "</g>\n";
-    bottom = y - 1.6 * font;
-  }
-
-  // Scale bar: a round length near a quarter of the arch's width, ticks at its ends and middle.
-  {
-    const double length = round_length(0.25 * W);
-    const double y = bottom - 1.5 * font, x = box.x0, tick = 0.4 * font;
-    body += "<g id=\"scale-bar\" stroke=\"black\" fill=\"black\">\n";
-    line(body, {x, y}, {x + length, y}, fmt::format("stroke-width=\"{}\"", stroke));
-    for (double f : {0.0, 0.5, 1.0}) line(body, {x + f * length, y}, {x + f * length, y + tick}, fmt::format("stroke-width=\"{}\"", stroke));
-    text(body, {x, y - 1.1 * font}, 0.8 * font, "middle", "0");
-    text(body, {x + 0.5 * length, y - 1.1 * font}, 0.8 * font, "middle", fmt::format("{:g}", 0.5 * length * unit));
-    text(body, {x + length, y - 1.1 * font}, 0.8 * font, "middle", fmt::format("{:g} m", length * unit));
-    body += "</g>\n";
-    bottom = y - 1.6 * font;
-  }
-
-  // Title: the caption, then the reactions (or why there are none), then a legend.
-  const double title_y = drawn.y1 + (4.2 + 1.3 * static_cast<double>(options.extra_lines.size())) * font;
-  std::string result;
-  if (std::isfinite(solution.H_over_V))
-    result = fmt::format("H/V = {:.6g}, H = {:.4g} kN/m, V = {:.4g} kN/m ({}, {})", solution.H_over_V, solution.H / 1000,
-                         solution.V / 1000, to_string(solution.method), to_string(solution.status));
-  else
-    result = fmt::format("no solution: {}{}{}", to_string(solution.status), solution.message.empty() ? "" : ": ",
-                         solution.message);
-  std::string title = "<g id=\"title\" fill=\"black\">\n";
-  text(title, {box.x0, title_y}, font, "start", options.title);
-  text(title, {box.x0, title_y - 1.4 * font}, 0.85 * font, "start", result);
-  const double legend_y = title_y - 2.6 * font;
-  line(title, {box.x0, legend_y + 0.3 * font}, {box.x0 + 2 * font, legend_y + 0.3 * font}, thrust_style);
-  text(title, {box.x0 + 2.5 * font, legend_y}, 0.8 * font, "start", "elastic line of thrust");
-  line(title, {box.x0 + 14 * font, legend_y + 0.3 * font}, {box.x0 + 16 * font, legend_y + 0.3 * font}, axis_style);
-  text(title, {box.x0 + 16.5 * font, legend_y}, 0.8 * font, "start",
-       fmt::format("axis; section t = {:g} m; springings {}, {}", scene.thickness,
-                   scene.left.kind == SupportKind::clamped ? "clamped" : "pinned",
-                   scene.right.kind == SupportKind::clamped ? "clamped" : "pinned"));
-  for (std::size_t k = 0; k < options.extra_lines.size(); ++k) {
-    const ExtraThrustLine& extra = options.extra_lines[k];
-    const double y = legend_y - 1.3 * font * static_cast<double>(k + 1);
-    line(title, {box.x0, y + 0.3 * font}, {box.x0 + 2 * font, y + 0.3 * font},
-         fmt::format("stroke=\"{}\" stroke-width=\"{}\" stroke-dasharray=\"{},{}\"", extra.colour, 1.2 * stroke,
-                     4 * stroke, 2 * stroke));
-    text(title, {box.x0 + 2.5 * font, y}, 0.8 * font, "start", extra.label);
-  }
-  title += "</g>\n";
-
-  // The view: everything drawn, the title's width (about 40 font sizes) and a margin.
-  const double margin = 1.5 * font;
-  const double vx = drawn.x0 - margin, vy = -(title_y + font) - margin;
-  const double vw = std::max(drawn.x1, box.x0 + 40 * font) + margin - vx;
-  const double vh = -(bottom - font) + margin - vy;
-  std::string svg = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"";
-  attribute(svg, "width", options.width_px);
-  attribute(svg, "height", std::round(options.width_px * vh / vw));
-  svg += " viewBox=\"";
-  for (double v : {vx, vy, vw, vh}) {
-    number(svg, v);
-    svg += ' ';
-  }
-  svg.back() = '"';
-  svg += " font-family=\"sans-serif\" data-metres-per-unit=\"";
-  number(svg, unit);
-  svg += "\">\n";
-  svg += fmt::format("<desc>ogive draw: one user unit is {:g} m; the arch's point (x, y) is drawn at (x, -y) / {:g}.</desc>\n",
-                     unit, unit);
-  svg += "<defs><marker id=\"arrowhead\" viewBox=\"0 0 10 10\" refX=\"8\" refY=\"5\" markerWidth=\"4\" "
-         "markerHeight=\"4\" orient=\"auto\"><path d=\"M 0 0 L 10 5 L 0 10 Z\" fill=\"#1f4e9c\"/></marker></defs>\n";
-  svg += "<rect";
-  for (const auto& [name, v] : {std::pair{"x", vx}, std::pair{"y", vy}, std::pair{"width", vw}, std::pair{"height", vh}})
-    attribute(svg, name, v);
-  svg += " fill=\"white\"/>\n";
-  svg += body + title + "</svg>\n";
-  return svg;
+  if (scene.crown_hinge) draw_crown_hinge(body, *scene.curve, frame);
+  double bottom = draw_support_movement(body, scene, ends, frame, drawn, drawn.y0);
+  bottom = draw_scale_bar(body, frame, bottom);
+  const double title_y = drawn.y1 + (4.2 + 1.3 * static_cast<double>(options.extra_lines.size())) * frame.font;
+  body += title_svg(scene, solution, options, frame, title_y);
+  return document(body, frame, drawn, title_y, bottom, options.width_px);
 }
 
 }  // namespace ogive

@@ -1,0 +1,258 @@
+#include "columns.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "option_text.hpp"
+#include "values.hpp"
+
+namespace ogive::cli {
+namespace {
+
+struct ColumnDoc {
+  std::string_view name, unit, meaning;
+};
+
+constexpr ColumnDoc kColumnDocs[] = {
+    {"scene", "", "scene number in the sweep, from 1"},
+    {"curve", "", "generator curve family"},
+    {"eccentricity", "", "pointed arch: centres eccentricity x span beyond mid-span (0 semicircle, 0.5 equilateral)"},
+    {"rise_ratio", "", "rise / span: as asked, or for curves without --rise-ratio their own (12 digits)"},
+    {"haunch_angle", "deg", "three- and four-centred arches: angle turned by the haunch arc"},
+    {"crown_angle", "deg", "four-centred arch: tangent's angle at the pointed crown"},
+    {"span", "m", "span L between the springings, on the axis"},
+    {"thickness_ratio", "", "thickness t / span"},
+    {"support_displacement_ratio", "", "outward movement d of each springing / span"},
+    {"youngs_modulus", "Pa", "Young's modulus E"},
+    {"poisson_ratio", "", "Poisson's ratio nu"},
+    {"density", "kg/m^3", "density rho"},
+    {"gravity", "m/s^2", "gravitational acceleration g"},
+    {"shear_coefficient", "", "Timoshenko shear coefficient k"},
+    {"plane_strain", "", "true: plane strain, E / (1 - nu^2); false: plane stress"},
+    {"section", "", "elastic (linear) or no-tension (cracks beyond the kern)"},
+    {"left_support", "", "left springing: clamped (rotation given) or pinned (M = 0)"},
+    {"right_support", "", "right springing: clamped or pinned"},
+    {"crown_hinge", "", "true: a hinge at the crown (M = 0 there)"},
+    {"left_spread_ratio", "", "left springing's horizontal movement, outwards positive / span"},
+    {"right_spread_ratio", "", "right springing's horizontal movement, outwards positive / span"},
+    {"left_settlement_ratio", "", "left springing's vertical movement, downwards positive / span"},
+    {"right_settlement_ratio", "", "right springing's vertical movement, downwards positive / span"},
+    {"left_rotation", "rad", "left springing's given rotation, counter-clockwise positive"},
+    {"right_rotation", "rad", "right springing's given rotation, counter-clockwise positive"},
+    {"point_load", "N/m", "vertical point load P on the axis, downwards, per metre of vault width"},
+    {"point_load_at", "", "where P acts, x / span from the left springing"},
+    {"live_load", "N/m^2", "uniform load q per horizontal length, downwards, per metre of vault width"},
+    {"live_load_from", "", "where the live load starts, x / span"},
+    {"live_load_to", "", "where the live load ends, x / span"},
+    {"fill_density", "kg/m^3", "fill density rho_f (load rho_f g max(0, h_f - y_extrados) per horizontal length)"},
+    {"fill_height_ratio", "", "the fill's level h_f above the springing line / span"},
+    {"loads_file", "", "the --loads-file whose loads the scene carries too"},
+    {"method", "", "method that produced the numbers (closed-form, shooting, multiple-shooting)"},
+    {"integrator", "", "CVODE's method (adams, bdf); empty for the closed form"},
+    {"rtol", "", "relative error asked (--rtol); success guarantees it"},
+    {"status", "", "success, or why not (README: What status promises); limit: success or inadmissible"},
+    {"domain", "", "the model solved: half (a symmetric scene, the right half by symmetry) or whole (springing to springing)"},
+    {"H", "N/m", "horizontal reaction H_left: inward push of the left support on the arch, per metre of vault (limit --thrust-line: of that state)"},
+    {"V", "N/m", "vertical reaction V_left of the left support (half the load of a symmetric scene; limit: half the total vertical load), per metre of vault"},
+    {"H_over_V", "", "normalized horizontal reaction H_left / V_left"},
+    {"H_left", "N/m", "left support's horizontal reaction on the arch, positive pointing into the span (+x)"},
+    {"V_left", "N/m", "left support's vertical reaction on the arch, upwards positive"},
+    {"M_left", "N m/m", "left support's couple on the arch, counter-clockwise positive (0 when pinned)"},
+    {"H_right", "N/m", "right support's horizontal reaction on the arch, positive pointing into the span (-x)"},
+    {"V_right", "N/m", "right support's vertical reaction on the arch, upwards positive"},
+    {"M_right", "N m/m", "right support's couple on the arch, counter-clockwise positive (0 when pinned)"},
+    {"max_thrust_eccentricity", "%", "largest |thrust_eccentricity| along the arch; empty if N is not a compression everywhere"},
+    {"max_thrust_eccentricity_at", "m", "arc length from the left springing where it occurs"},
+    {"thrust_in_kern", "", "true: compression everywhere and |thrust_eccentricity| <= 100 % (no tension in the section)"},
+    {"thrust_in_section", "", "true: compression everywhere and |thrust_eccentricity| <= 300 % (resultant inside the masonry)"},
+    {"steps", "", "CVODE steps, all solves of the row"},
+    {"rhs_evaluations", "", "CVODE right-hand-side evaluations"},
+    {"segments", "", "shooting segments (arcs for the closed form)"},
+    {"newton_iterations", "", "no-tension section: Newton iterations, all solves of the row (0 for the elastic section)"},
+    {"condition_estimate", "", "Skeel condition number of the boundary-value problem"},
+    {"error_estimate", "", "estimated relative error of the row's numbers (thrust eccentricities in units of the kern)"},
+    {"boundary_residual", "", "largest residual of the six boundary conditions (and a hinge's M = 0), scaled units"},
+    {"equilibrium_residual", "", "largest residual of the domain's equilibrium (forces, moments) / its load"},
+    {"message", "", "why the status is not success; empty on success"},
+    {"s", "m", "arc length from the left springing (limit --thrust-line: of the joint's axis point)"},
+    {"x", "m", "axis point, horizontal from the left springing"},
+    {"y", "m", "axis point, up from the springing line"},
+    {"theta", "rad", "tangent angle to the horizontal, in the direction of increasing s"},
+    {"kappa", "1/m", "curvature d theta / ds (negative: turning downwards)"},
+    {"intrados_x", "m", "the section's (limit: the joint's) end on the intrados, horizontal (profile: axis point - t/2 along the normal)"},
+    {"intrados_y", "m", "the section's end on the intrados, vertical"},
+    {"extrados_x", "m", "the section's (limit: the joint's) end on the extrados, horizontal (profile: axis point + t/2 along the normal)"},
+    {"extrados_y", "m", "the section's end on the extrados, vertical"},
+    {"Ux", "m", "horizontal displacement of the axis"},
+    {"Uy", "m", "vertical displacement of the axis"},
+    {"psi", "rad", "rotation of the cross-section, counter-clockwise positive"},
+    {"N", "N/m", "normal force, negative in compression"},
+    {"shear_force", "N/m", "shear force (V of the model's equations)"},
+    {"M", "N m/m", "bending moment: couple of the part beyond s on the part before s"},
+    {"thrust_eccentricity", "%", "e = 600 M / (N t): offset of the compression in per cent of the kern half-width t/6; < 0 towards the extrados"},
+    {"thrust_x", "m", "where the resultant crosses the section or joint (line of thrust), horizontal"},
+    {"thrust_y", "m", "where the resultant crosses the section (line of thrust), vertical"},
+    {"compressed_depth", "", "no-tension section: the compressed depth c over t (1 while the resultant is in the kern; 0 at a hinge); empty for the elastic section"},
+    {"cracked", "", "no-tension section: true where the resultant lies beyond the kern (the section is cracked); empty for the elastic section"},
+    {"warning", "", "tension, outside_section (|e| > 300 %), outside_kern (|e| > 100 %), no_normal_force, or empty"},
+    {"reference_method", "", "check: what the row is compared with"},
+    {"reference_status", "", "check: the reference's own status"},
+    {"reference_error", "", "check and bench: the reference's own estimated error"},
+    {"reference_H_over_V", "", "check: the reference's H / V"},
+    {"relative_difference", "", "check: |H/V - reference| / max(|reference|, 0.01)"},
+    {"tolerance", "", "check: the rtol the row is held to"},
+    {"within_tolerance", "", "check: true when the row says success and relative_difference <= rtol + reference_error"},
+    {"chosen_method", "", "bench: the method auto chose (or the method itself)"},
+    {"error_H_over_V", "", "bench: true error of H/V against the reference"},
+    {"error_profile", "", "bench: true error of the profile (profile_difference) against the reference"},
+    {"median_seconds", "s", "bench: median time of one solve"},
+    {"file", "", "draw: the SVG file written for the scene"},
+    {"joints", "", "limit: joint orientation, radial (normal to the axis) or vertical"},
+    {"weight", "", "limit: voussoir (each voussoir's weight at its centroid) or axis (rho g t per axis length)"},
+    {"joints_count", "", "limit: joints springing to springing, both included"},
+    {"friction", "", "limit: friction coefficient of the joints; empty: no sliding check"},
+    {"H_min", "N/m", "limit: minimum horizontal thrust of an admissible state"},
+    {"H_max", "N/m", "limit: maximum horizontal thrust of an admissible state"},
+    {"H_min_over_V", "", "limit: H_min / V"},
+    {"H_max_over_V", "", "limit: H_max / V"},
+    {"thickness_min_ratio", "", "limit: t_min / span, the thinnest arch of the same axis that stands"},
+    {"geometric_safety_factor", "", "limit: t / t_min"},
+    {"hinges_min", "", "limit: hinges of the minimum-thrust state, x/L:face joined by ';' (face: intrados, extrados, or axis for a pin)"},
+    {"hinges_max", "", "limit: hinges of the maximum-thrust state, x/L:face joined by ';'"},
+    {"load_factor", "", "limit: multiplier on the live load (every point and live load) at collapse (static LP)"},
+    {"load_factor_mechanism", "", "limit: the same from the mechanism of those hinges by virtual work"},
+    {"hinges_collapse", "", "limit: hinges of the collapse mechanism, x/L:face joined by ';'"},
+    {"lp_solves", "", "limit: linear programs solved for the row"},
+    {"state", "", "limit --thrust-line: min, max or collapse"},
+    {"joint", "", "limit --thrust-line: joint index from the left springing"},
+    {"hinge", "", "limit --thrust-line: intrados, extrados (a hinge) or axis (a pin), else empty"},
+};
+
+const ColumnDoc* find_column_doc(std::string_view name) {
+  for (const ColumnDoc& d : kColumnDocs)
+    if (d.name == name) return &d;
+  return nullptr;
+}
+
+// Twelve significant digits: a rise derived from the geometry (exact to about 1e-15) prints as the
+// number it is meant to be, 0.5 for the semicircle and not 0.4999999999999999.
+double rounded(double value) {
+  if (!std::isfinite(value) || value == 0) return value;
+  return std::stod(fmt::format("{:.12g}", value));
+}
+
+}  // namespace
+
+const std::vector<std::string>& scene_columns() {
+  static const std::vector<std::string> columns = {
+      "scene", "curve", "eccentricity", "rise_ratio", "haunch_angle", "crown_angle", "span", "thickness_ratio",
+      "support_displacement_ratio", "youngs_modulus", "poisson_ratio", "density", "gravity", "shear_coefficient",
+      "plane_strain", "section", "left_support", "right_support", "crown_hinge", "left_spread_ratio",
+      "right_spread_ratio", "left_settlement_ratio", "right_settlement_ratio", "left_rotation", "right_rotation",
+      "point_load", "point_load_at", "live_load", "live_load_from", "live_load_to", "fill_density",
+      "fill_height_ratio", "loads_file"};
+  return columns;
+}
+
+bool ColumnText::given() const { return option && option->count() > 0; }
+
+void add_column_options(CLI::App& cmd, ColumnText& text) {
+  text.option = cmd.add_option("--columns", text.columns,
+                               "columns to print, comma-separated, in the output's order; 'help' lists every column "
+                               "with its unit (default: scene, the inputs that vary, the results)");
+  cmd.add_flag("--all-columns", text.all_columns, "print every column, the inputs that do not vary included");
+}
+
+Columns::Columns(const std::vector<std::string>& results, std::vector<std::string> defaults)
+    : all_(scene_columns()), defaults_(std::move(defaults)) {
+  all_.insert(all_.end(), results.begin(), results.end());
+}
+
+void Columns::select(const ColumnText& ct, const std::vector<std::string>& varying_inputs,
+                     const std::vector<std::string>& varying_solver) {
+  if (ct.given() && ct.all_columns) throw UsageError("--columns: give either --columns or --all-columns");
+  keep_.assign(all_.size(), ct.all_columns);
+  if (ct.all_columns) return;
+  std::vector<std::string> wanted;
+  if (!ct.given()) {
+    wanted = defaults_;
+    wanted.push_back("scene");
+    wanted.insert(wanted.end(), varying_inputs.begin(), varying_inputs.end());
+    wanted.insert(wanted.end(), varying_solver.begin(), varying_solver.end());
+  } else {
+    for (const std::string& name : split_names(ct.columns)) {
+      if (std::find(all_.begin(), all_.end(), name) == all_.end())
+        throw UsageError(fmt::format("--columns: no column '{}' in this command's output{} (--columns help lists them)",
+                                     name.substr(0, 60), did_you_mean(name, all_)));
+      wanted.push_back(name);
+    }
+  }
+  for (std::size_t i = 0; i < all_.size(); ++i)
+    keep_[i] = std::find(wanted.begin(), wanted.end(), all_[i]) != wanted.end();
+}
+
+bool Columns::selected(std::string_view name) const {
+  for (std::size_t i = 0; i < all_.size(); ++i)
+    if (all_[i] == name) return keep_[i];
+  return false;
+}
+
+std::string Columns::header() const {
+  std::string out;
+  for (std::size_t i = 0; i < all_.size(); ++i)
+    if (keep_[i]) out += (out.empty() ? "" : ",") + all_[i];
+  return out + "\n";
+}
+
+std::string Columns::help() const {
+  std::string out = "column,unit,meaning\n";
+  CsvRow row;
+  for (const std::string& name : all_) {
+    const ColumnDoc* d = find_column_doc(name);
+    row.add(name).add(d ? d->unit : "").add(d ? d->meaning : "");
+    out += row.take();
+  }
+  return out;
+}
+
+void add_parameter(CsvRow& row, double value) {
+  if (std::isnan(value)) row.add(std::string_view{});
+  else row.add(value);
+}
+
+void add_scene_columns(CsvRow& row, const SceneParameters& p, const Curve* curve) {
+  row.add(static_cast<std::int64_t>(p.scene)).add(p.curve);
+  add_parameter(row, p.eccentricity);
+  if (!std::isnan(p.rise_ratio)) row.add(p.rise_ratio);  // the rise asked for
+  else if (curve) row.add(rounded(curve->rise() / curve->span()));
+  else row.add(std::string_view{});
+  add_parameter(row, p.haunch_angle);
+  add_parameter(row, p.crown_angle);
+  row.add(p.span).add(p.thickness_ratio).add(p.support_displacement_ratio);
+  row.add(p.youngs_modulus).add(p.poisson_ratio).add(p.density).add(p.gravity).add(p.shear_coefficient);
+  row.add_bool(p.plane_strain);
+  row.add(p.section).add(p.left_support).add(p.right_support).add_bool(p.crown_hinge);
+  for (double v : {p.left_spread_ratio, p.right_spread_ratio, p.left_settlement_ratio, p.right_settlement_ratio,
+                   p.left_rotation, p.right_rotation, p.point_load, p.point_load_at, p.live_load, p.live_load_from,
+                   p.live_load_to, p.fill_density, p.fill_height_ratio})
+    add_parameter(row, v);
+  row.add(p.loads_file);
+}
+
+std::string sparse_row(const Columns& columns, const SceneParameters& p, const Curve* curve,
+                       const std::vector<std::pair<std::string_view, std::string>>& fields) {
+  CsvRow row(columns.keep());
+  add_scene_columns(row, p, curve);
+  for (std::size_t i = scene_columns().size(); i < columns.all().size(); ++i) {
+    const auto it =
+        std::find_if(fields.begin(), fields.end(), [&](const auto& f) { return f.first == columns.all()[i]; });
+    row.add(it == fields.end() ? std::string_view{} : std::string_view(it->second));
+  }
+  return row.take();
+}
+
+}  // namespace ogive::cli

@@ -1,0 +1,211 @@
+// ogive draw: one SVG file per scene (ogive/output/svg.hpp), and one CSV row per file on stdout.
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <ostream>
+#include <set>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "cli.hpp"
+#include "columns.hpp"
+#include "commands.hpp"
+#include "ogive/limit/limit.hpp"
+#include "ogive/output/svg.hpp"
+#include "ogive/solve/solve.hpp"
+#include "option_text.hpp"
+#include "row_writer.hpp"
+#include "scene_options.hpp"
+#include "scene_plan.hpp"
+#include "solver_options.hpp"
+#include "sweep.hpp"
+#include "values.hpp"
+
+namespace ogive::cli {
+namespace {
+
+// Scenes one draw may write: each is a file, and a sweep of thousands of pictures is a mistake.
+constexpr std::size_t kMaxDrawings = 1000;
+
+struct DrawTargets {
+  std::string output;      // --output FILE: exactly one scene
+  std::string output_dir;  // --output-dir DIR: one file per scene, named by draw_file_name
+  bool limit = false;      // --limit: the limit analysis' minimum and maximum thrust lines too
+};
+
+struct DrawOptions {
+  SceneOptions scene;
+  Options solver;
+  SolverText solver_text;
+  DrawTargets targets;
+  ColumnText columns;
+};
+
+Columns draw_columns() {
+  const std::vector<std::string> results = {"method", "status", "H", "V", "H_over_V", "message", "file"};
+  return Columns(results, results);
+}
+
+// The minimum and maximum thrust states of the limit analysis (default options: radial joints, the
+// voussoirs' own weight) as lines to draw, with their hinges; none where the arch cannot stand.
+std::vector<ExtraThrustLine> limit_lines(const Scene& scene) {
+  const LimitResult r = analyse_limit(scene, LimitOptions{});
+  std::vector<ExtraThrustLine> lines;
+  for (const auto& [state, id, name, colour] :
+       {std::tuple{&r.min_state, "thrust-line-min", "minimum", "#1e8449"},
+        std::tuple{&r.max_state, "thrust-line-max", "maximum", "#7d3c98"}}) {
+    if (!state->found()) continue;
+    ExtraThrustLine line;
+    line.id = id;
+    line.colour = colour;
+    line.label = fmt::format("{} thrust (limit analysis, rigid voussoirs): H/V = {:.4g}, {} hinges", name,
+                             state->H / r.V, state->hinges.size());
+    for (const Eigen::Vector2d& c : state->crossing) line.points.push_back({c.x(), c.y()});
+    for (const Hinge& h : state->hinges) line.hinges.push_back({h.point.x(), h.point.y()});
+    lines.push_back(std::move(line));
+  }
+  return lines;
+}
+
+// The drawing's caption: the curve, its shape parameters, span, t/L and d/L, as the options name them.
+std::string draw_title(const SceneParameters& p) {
+  std::string title = p.curve;
+  for (const auto& [name, v] : {std::pair{"eccentricity", p.eccentricity}, std::pair{"rise ratio", p.rise_ratio},
+                                std::pair{"haunch angle", p.haunch_angle}, std::pair{"crown angle", p.crown_angle}})
+    if (!std::isnan(v)) title += fmt::format(", {} {}", name, v);
+  title += fmt::format(", span {:.6g} m, t/L {}, d/L {}{}", p.span, p.thickness_ratio, p.support_displacement_ratio,
+                       p.plane_strain ? ", plane strain" : "");
+  if (!std::isnan(p.point_load)) title += fmt::format(", P {:g} N/m at x/L {:g}", p.point_load, p.point_load_at);
+  if (!std::isnan(p.live_load))
+    title += fmt::format(", q {:g} N/m^2 over x/L {:g}..{:g}", p.live_load, p.live_load_from, p.live_load_to);
+  if (!std::isnan(p.fill_density)) title += fmt::format(", fill {:g} kg/m^3 to {:g} L", p.fill_density, p.fill_height_ratio);
+  if (p.crown_hinge) title += ", crown hinge";
+  return title;
+}
+
+// The file of one scene in --output-dir: the curve, then each option that varies in the sweep with the
+// scene's value, e.g. "pointed_thickness-ratio-0.2_eccentricity-0.5.svg" (the order of --help).
+std::string draw_file_name(const SceneParameters& p, const SceneOptions& so) {
+  std::string name = p.curve;
+  for (const Axis& a : so.axes)
+    if (a.values.size() > 1) name += fmt::format("_{}-{}", a.flag.substr(2), p.*(a.field));
+  return name + ".svg";
+}
+
+// Refuses, before anything is solved or printed, a target that cannot be written: a directory where a
+// file should be, a missing directory, a file that cannot be opened for writing.
+void check_writable(const std::string& path, const char* flag) {
+  if (path.find_first_of(",\r\n") != std::string::npos)
+    throw UsageError(fmt::format("{}: the path must not contain a comma or a line break (it is printed in the CSV)", flag));
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw UsageError(fmt::format("{}: '{}' is a directory, not a file", flag, path));
+  // Appending creates the file if needed and leaves an existing one as it is until it is drawn.
+  std::ofstream probe(path, std::ios::app);
+  if (!probe) throw UsageError(fmt::format("{}: cannot write '{}': {}", flag, path, std::strerror(errno)));
+}
+
+// The file each scene of the plan is drawn into, each checked writable.
+std::vector<std::string> target_files(const ScenePlan& plan, const SceneOptions& so, const DrawTargets& to) {
+  std::vector<std::string> files;
+  if (!to.output.empty()) {
+    files.push_back(to.output);
+  } else {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(to.output_dir, ec))
+      throw UsageError(fmt::format("--output-dir: '{}' is not an existing directory", to.output_dir));
+    std::set<std::string> seen;
+    for (std::size_t i = 0; i < plan.size(); ++i) {
+      const std::string name = draw_file_name(plan.parameters(i), so);
+      if (!seen.insert(name).second)
+        throw UsageError(fmt::format("--output-dir: two scenes would both be drawn into {} (a value repeats)", name));
+      files.push_back((std::filesystem::path(to.output_dir) / name).string());
+    }
+  }
+  for (const std::string& f : files) check_writable(f, to.output.empty() ? "--output-dir" : "--output");
+  return files;
+}
+
+// The one solver combination a picture is drawn with.
+Options drawing_solver(const DrawOptions& d) {
+  const SolverSweep sweep = solver_sweep(d.solver, d.solver_text);
+  if (sweep.combinations.size() != 1)
+    throw UsageError("--rtol: draw takes one method, integrator and rtol (a picture per scene)");
+  return sweep.combinations.front();
+}
+
+int run_draw(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
+  Columns columns = draw_columns();
+  if (d.columns.columns == "help") {
+    write_all(out, columns.help());
+    return kExitOk;
+  }
+  const Options o = drawing_solver(d);
+  const DrawTargets& to = d.targets;
+  check_stations(o.stations);
+  check_options(o);
+  if (to.output.empty() == to.output_dir.empty())
+    throw UsageError(to.output.empty() ? "--output: draw needs --output FILE.svg (one scene) or --output-dir DIR "
+                                         "(one file per scene)"
+                                       : "--output-dir: give --output FILE.svg or --output-dir DIR, not both");
+  const ScenePlan plan(d.scene, cmd);
+  if (!to.output.empty() && plan.size() > 1)
+    throw UsageError(fmt::format("--output: the options give {} scenes and one file holds one drawing; use "
+                                 "--output-dir DIR for one file per scene", plan.size()));
+  if (plan.size() > kMaxDrawings)
+    throw UsageError(fmt::format("--output-dir: the options give {} scenes, more than {} drawings", plan.size(), kMaxDrawings));
+  columns.select(d.columns, plan.varying_inputs());
+  const std::vector<std::string> files = target_files(plan, d.scene, to);
+  const bool all_ok = write_scenes(
+      plan, columns, out, 1,  // one file at a time
+      [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
+        const Solution sol = solve(scene, o);
+        DrawingOptions drawing;
+        drawing.title = draw_title(p);
+        if (to.limit) drawing.extra_lines = limit_lines(scene);
+        const std::string& path = files[p.scene - 1];
+        std::ofstream file(path, std::ios::trunc);
+        file << arch_svg(scene, sol, drawing);
+        file.close();
+        if (!file) throw OutputError(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
+        CsvRow row(columns.keep());
+        add_scene_columns(row, p, scene.curve.get());
+        row.add(to_string(sol.method)).add(to_string(sol.status)).add(sol.H).add(sol.V).add(sol.H_over_V);
+        row.add(sol.message).add(path);
+        emit(row.take());
+        return sol.ok();
+      });
+  return all_ok ? kExitOk : kExitNotConverged;
+}
+
+}  // namespace
+
+Run add_draw_options(CLI::App& cmd) {
+  auto options = std::make_shared<DrawOptions>();
+  options->solver.stations = 101;
+  DrawTargets& to = options->targets;
+  add_scene_options(cmd, options->scene);
+  add_solver_options(cmd, options->solver, options->solver_text);
+  cmd.add_option("--stations", options->solver.stations,
+                 "points of the thrust line, springing to springing; must lie in [2, 1000000]")
+      ->check(whole_count())
+      ->capture_default_str();
+  cmd.add_option("--output", to.output, "the SVG file of the one scene (refused for a sweep)");
+  cmd.add_flag("--limit", to.limit,
+               "also draw the limit analysis' minimum and maximum thrust lines with their hinges (ogive limit's "
+               "defaults: radial joints, the voussoirs' weight)");
+  cmd.add_option("--output-dir", to.output_dir,
+                 "an existing directory: one SVG per scene, named after the curve and the options that vary");
+  add_column_options(cmd, options->columns);
+  return [options, &cmd](std::ostream& out) { return run_draw(*options, cmd, out); };
+}
+
+}  // namespace ogive::cli

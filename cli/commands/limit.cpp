@@ -1,0 +1,225 @@
+// ogive limit: limit analysis of rigid voussoirs that resist no tension: H_min, H_max, t_min, the
+// collapse load; one row per scene, or (--thrust-line) one per joint of one state.
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "cli.hpp"
+#include "columns.hpp"
+#include "commands.hpp"
+#include "ogive/limit/limit.hpp"
+#include "option_text.hpp"
+#include "row_writer.hpp"
+#include "scene_options.hpp"
+#include "scene_plan.hpp"
+#include "sweep.hpp"
+#include "values.hpp"
+
+namespace ogive::cli {
+namespace {
+
+const std::map<std::string, JointOrientation> kJointOrientations = {{"radial", JointOrientation::radial},
+                                                                    {"vertical", JointOrientation::vertical}};
+const std::map<std::string, WeightModel> kWeightModels = {{"voussoir", WeightModel::voussoir},
+                                                          {"axis", WeightModel::axis}};
+enum class ThrustLine { min, max, collapse };
+const std::map<std::string, ThrustLine> kThrustLines = {
+    {"min", ThrustLine::min}, {"max", ThrustLine::max}, {"collapse", ThrustLine::collapse}};
+
+struct LimitText {
+  std::string joints = "radial", weight = "voussoir", thrust_line;
+  int joints_count = kDefaultJointsCount;
+  double friction = 0;
+  int repeats = 0;
+};
+
+struct LimitCommandOptions {
+  SceneOptions scene;
+  LimitText text;
+  ColumnText columns;
+};
+
+void add_analysis_options(CLI::App& cmd, LimitText& t) {
+  cmd.add_option("--joints", t.joints, "interior joints: radial (normal to the axis) or vertical")->capture_default_str();
+  cmd.add_option("--weight", t.weight, "voussoir (the ring's true weight at each centroid) or axis (rho g t per axis length)")
+      ->capture_default_str();
+  cmd.add_option("--joints-count", t.joints_count, "joints springing to springing, both included; odd, >= 5")
+      ->check(whole_count())
+      ->capture_default_str();
+  cmd.add_option("--friction", t.friction, "friction coefficient of the joints (> 0): adds the sliding check")
+      ->check(finite_number());
+  cmd.add_option("--thrust-line", t.thrust_line, "instead of the summary, one row per joint of the min, max or collapse state");
+  cmd.add_option("--repeats", t.repeats, "solve each scene this many times and add median_seconds (benchmark)")
+      ->check(whole_count());
+}
+
+// The options as the library's, refused with the option's name when they break a rule.
+LimitOptions limit_options(const LimitText& t, const CLI::App& cmd) {
+  LimitOptions o;
+  o.joints = lookup(kJointOrientations, t.joints, "--joints");
+  o.weight = lookup(kWeightModels, t.weight, "--weight");
+  o.joints_count = t.joints_count;
+  if (cmd.count("--friction") > 0 && !(t.friction > 0))
+    throw UsageError(fmt::format("--friction: must be > 0 (omit it for no sliding check), got {}", t.friction));
+  o.friction = t.friction;
+  // The loads are the scene's (--point-load, --live-load, --fill-density, --loads-file) and so are the
+  // pins (--supports pinned, --crown-hinge); the supports' movements do not enter rigid voussoirs.
+  for (const char* flag : {"--support-displacement-ratio", "--left-spread-ratio", "--right-spread-ratio",
+                           "--left-settlement-ratio", "--right-settlement-ratio", "--left-rotation", "--right-rotation"})
+    if (cmd.count(flag) > 0)
+      throw UsageError(fmt::format("{}: does not apply to limit (rigid voussoirs ignore the supports' movements: a "
+                                   "spreading support brings the arch to H_min)",
+                                   flag));
+  if (!t.thrust_line.empty()) lookup(kThrustLines, t.thrust_line, "--thrust-line");
+  if (t.repeats < 0 || t.repeats > 100000)
+    throw UsageError(fmt::format("--repeats: must lie in [0, 100000] (0: no timing), got {}", t.repeats));
+  std::string why;
+  if (!o.is_valid(&why)) throw UsageError(as_option_message(why));
+  return o;
+}
+
+// Hinges as "x/L:face" joined by ';' (x of the hinge point, on the intrados or extrados), e.g.
+// "0.1129:intrados;0.5:extrados": no commas inside the CSV field.
+std::string hinge_text(const std::vector<Hinge>& hinges, double span) {
+  std::string text;
+  for (const Hinge& h : hinges) {
+    if (!text.empty()) text += ';';
+    text += fmt::format("{:.6g}:{}", h.point.x() / span, to_string(h.face));
+  }
+  return text;
+}
+
+void add_limit_setup(CsvRow& row, const LimitOptions& o) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  row.add(to_string(o.joints)).add(to_string(o.weight)).add(o.joints_count);
+  row.add(o.friction > 0 ? o.friction : nan);
+}
+
+// The columns of limit: a summary per scene, or (--thrust-line) one row per joint of one state.
+Columns limit_columns(bool lines, bool timed) {
+  std::vector<std::string> results = {"joints", "weight", "joints_count", "friction"}, defaults;
+  const std::vector<std::string> summary = {
+      "status", "H_min", "H_max", "V", "H_min_over_V", "H_max_over_V", "thickness_min_ratio",
+      "geometric_safety_factor", "hinges_min", "hinges_max", "load_factor", "load_factor_mechanism",
+      "hinges_collapse", "lp_solves", "message", "median_seconds"};
+  const std::vector<std::string> joints = {"state",      "status",     "H",          "load_factor", "joint",
+                                           "s",          "intrados_x", "intrados_y", "extrados_x",  "extrados_y",
+                                           "thrust_x",   "thrust_y",   "hinge"};
+  const std::vector<std::string>& own = lines ? joints : summary;
+  results.insert(results.end(), own.begin(), own.end());
+  for (const std::string& name : own)
+    if (name != "lp_solves" && (name != "median_seconds" || timed)) defaults.push_back(name);
+  return Columns(results, defaults);
+}
+
+// The analysis, `repeats` times when timed (at least once); *median_seconds the median time.
+LimitResult analyse_timed(const Scene& scene, const LimitOptions& o, int repeats, double* median_seconds) {
+  LimitResult r;
+  std::vector<double> seconds;
+  for (int k = 0; k < std::max(1, repeats); ++k) {
+    const auto t0 = std::chrono::steady_clock::now();
+    r = analyse_limit(scene, o);
+    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::nth_element(seconds.begin(), seconds.begin() + seconds.size() / 2, seconds.end());
+  *median_seconds = seconds[seconds.size() / 2];
+  return r;
+}
+
+std::string summary_row(const Columns& columns, const SceneParameters& p, const Scene& scene, const LimitOptions& o,
+                        const LimitResult& r, bool timed, double median_seconds) {
+  const double L = scene.span();
+  CsvRow row(columns.keep());
+  add_scene_columns(row, p, scene.curve.get());
+  add_limit_setup(row, o);
+  row.add(to_string(r.status)).add(r.H_min()).add(r.H_max()).add(r.V).add(r.H_min() / r.V).add(r.H_max() / r.V);
+  row.add(r.thickness_min / L).add(scene.thickness / r.thickness_min);
+  row.add(hinge_text(r.min_state.hinges, L)).add(hinge_text(r.max_state.hinges, L));
+  row.add(r.load_factor()).add(r.load_factor_mechanism).add(hinge_text(r.collapse_state.hinges, L));
+  row.add(r.lp_solves).add(r.message);
+  if (timed) row.add(median_seconds);
+  else row.add(std::string_view{});
+  return row.take();
+}
+
+// One row per joint of the state `which` names (one row without numbers when there is no such state).
+std::string joint_rows(const Columns& columns, const SceneParameters& p, const Scene& scene, const LimitOptions& o,
+                       const LimitResult& r, const std::string& which) {
+  const ThrustLine line = kThrustLines.at(which);
+  const ThrustState& st = line == ThrustLine::min   ? r.min_state
+                          : line == ThrustLine::max ? r.max_state
+                                                    : r.collapse_state;
+  CsvRow row(columns.keep());
+  add_scene_columns(row, p, scene.curve.get());
+  add_limit_setup(row, o);
+  row.add(which).add(to_string(r.status)).add(st.H).add(st.load_factor);
+  if (!st.found()) {
+    for (int k = 0; k < 9; ++k) row.add(std::string_view{});
+    return row.take();
+  }
+  row.mark();
+  // Rebuild the ring the state belongs to (the same options give the same joints).
+  const Ring ring = make_ring(*scene.curve, scene.thickness, scene.material.density * scene.material.gravity, o);
+  std::string text;
+  for (std::size_t j = 0; j < ring.joints.size(); ++j) {
+    const Joint& joint = ring.joints[j];
+    std::string hinge;
+    for (const Hinge& h : st.hinges)
+      if (h.joint == static_cast<int>(j)) hinge = to_string(h.face);
+    row.add(static_cast<std::int64_t>(j)).add(joint.s).add(joint.intrados.x()).add(joint.intrados.y());
+    row.add(joint.extrados.x()).add(joint.extrados.y()).add(st.crossing[j].x()).add(st.crossing[j].y()).add(hinge);
+    text += row.take_to_mark();
+  }
+  return text;
+}
+
+// Exit 0 when every scene has an answer (success, or inadmissible: an arch that cannot stand is an
+// answer, not a failure), 3 when an LP failed or a scene could not be made.
+int run_limit(LimitCommandOptions& lo, const CLI::App& cmd, std::ostream& out) {
+  const LimitText& text = lo.text;
+  const bool lines = !text.thrust_line.empty(), timed = text.repeats > 0;
+  Columns columns = limit_columns(lines, timed);
+  if (lo.columns.columns == "help") {
+    write_all(out, columns.help());
+    return kExitOk;
+  }
+  const LimitOptions o = limit_options(text, cmd);
+  const ScenePlan plan(lo.scene, cmd);
+  if (lines && kThrustLines.at(text.thrust_line) == ThrustLine::collapse && cmd.count("--point-load") == 0 &&
+      cmd.count("--live-load") == 0 && lo.scene.file_loads.points.empty() && lo.scene.file_loads.live.empty())
+    throw UsageError("--thrust-line collapse: a load factor needs a live load (--point-load, --live-load or a "
+                     "--loads-file with point or live rows)");
+  if (lines) check_rows(plan.size(), o.joints_count);
+  columns.select(lo.columns, plan.varying_inputs());
+  const bool all_answered = write_scenes(
+      plan, columns, out, 1,  // one thread: the timings (--repeats), and Clp kept to one thread
+      [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
+        double median_seconds = 0;
+        const LimitResult r = analyse_timed(scene, o, text.repeats, &median_seconds);
+        emit(lines ? joint_rows(columns, p, scene, o, r, text.thrust_line)
+                   : summary_row(columns, p, scene, o, r, timed, median_seconds));
+        return r.status != LimitStatus::lp_failure;
+      });
+  return all_answered ? kExitOk : kExitNotConverged;
+}
+
+}  // namespace
+
+Run add_limit_options(CLI::App& cmd) {
+  auto options = std::make_shared<LimitCommandOptions>();
+  add_scene_options(cmd, options->scene);
+  add_analysis_options(cmd, options->text);
+  add_column_options(cmd, options->columns);
+  return [options, &cmd](std::ostream& out) { return run_limit(*options, cmd, out); };
+}
+
+}  // namespace ogive::cli

@@ -1,0 +1,120 @@
+// ogive thrust: the reactions H, V and H/V, one row per scene and solver combination.
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "cli.hpp"
+#include "columns.hpp"
+#include "commands.hpp"
+#include "ogive/core/thrust_line.hpp"
+#include "ogive/solve/solve.hpp"
+#include "row_writer.hpp"
+#include "scene_options.hpp"
+#include "scene_plan.hpp"
+#include "solver_options.hpp"
+#include "sweep.hpp"
+
+namespace ogive::cli {
+namespace {
+
+struct ThrustOptions {
+  SceneOptions scene;
+  Options solver;
+  SolverText solver_text;
+  ColumnText columns;
+  int threads = 1;
+};
+
+Columns thrust_columns() {
+  return Columns(
+      {"method", "integrator", "rtol", "status", "domain", "H", "V", "H_over_V", "H_left", "V_left", "M_left",
+       "H_right", "V_right", "M_right", "max_thrust_eccentricity", "max_thrust_eccentricity_at", "thrust_in_kern",
+       "thrust_in_section", "steps", "rhs_evaluations", "segments", "newton_iterations", "condition_estimate",
+       "error_estimate", "boundary_residual", "equilibrium_residual", "message"},
+      // The thrust line's summary is asked for by name (or --all-columns): it samples the whole field,
+      // about 50 times the cost of the reactions in closed form, which a sweep of 10^6 scenes would feel.
+      {"method", "status", "domain", "H", "V", "H_over_V", "H_left", "V_left", "M_left", "H_right", "V_right",
+       "M_right", "error_estimate", "message"});
+}
+
+// Stations at which a verified solve checks the profile when the thrust line is summarised.
+constexpr int kSummaryStations = 65;
+
+// "half" or "whole": the model a solution used (empty without one).
+std::string_view domain_of(const Solution& sol) {
+  if (!sol.model) return "";
+  return sol.model->half() ? "half" : "whole";
+}
+
+// One scene's row for one solver combination.
+std::string thrust_row(const Columns& columns, const SceneParameters& p, const Scene& scene, const Options& o,
+                       const Solution& sol, bool summary) {
+  const ThrustLineSummary line = summary ? summarize_thrust_line(sol) : ThrustLineSummary{};
+  CsvRow row(columns.keep());
+  add_scene_columns(row, p, scene.curve.get());
+  row.add(to_string(sol.method)).add(integrator_of(sol.method, o)).add(o.rtol);
+  row.add(to_string(sol.status)).add(domain_of(sol)).add(sol.H).add(sol.V).add(sol.H_over_V);
+  const Reactions& r = sol.reactions;
+  if (sol.field) row.add(r.H_left).add(r.V_left).add(r.M_left).add(r.H_right).add(r.V_right).add(r.M_right);
+  else for (int k = 0; k < 6; ++k) row.add(std::string_view{});
+  row.add(line.max_abs_e).add(line.max_abs_e_at);
+  if (line.ok) row.add_bool(line.in_kern).add_bool(line.in_section);
+  else row.add(std::string_view{}).add(std::string_view{});
+  const Diagnostics& d = sol.diagnostics;
+  row.add(d.steps).add(d.rhs_evaluations).add(d.segments).add(d.newton_iterations);
+  row.add(d.condition_estimate).add(d.error_estimate);
+  row.add(d.boundary_residual).add(d.equilibrium_residual).add(sol.message);
+  return row.take();
+}
+
+int run_thrust(ThrustOptions& to, const CLI::App& cmd, std::ostream& out) {
+  check_threads(to.threads);
+  Columns columns = thrust_columns();
+  if (to.columns.columns == "help") {
+    write_all(out, columns.help());
+    return kExitOk;
+  }
+  SolverSweep sweep = solver_sweep(to.solver, to.solver_text);
+  const ScenePlan plan(to.scene, cmd);
+  columns.select(to.columns, plan.varying_inputs(), sweep.varying);
+  const bool summary = columns.selected("max_thrust_eccentricity") || columns.selected("max_thrust_eccentricity_at") ||
+                       columns.selected("thrust_in_kern") || columns.selected("thrust_in_section");
+  // The summary prints eccentricities: their accuracy must be part of the error estimate.
+  if (summary)
+    for (Options& o : sweep.combinations) o.stations = kSummaryStations;
+  // No-tension scenes are traced in order, each from the previous one (continuation): one thread.
+  const bool continued = plan.no_tension();
+  std::vector<Solution> previous(sweep.combinations.size());
+  const int threads = continued ? 1 : to.threads;
+  const bool all_ok =
+      write_scenes(plan, columns, out, threads, [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
+        bool ok = true;
+        std::string text;
+        for (std::size_t c = 0; c < sweep.combinations.size(); ++c) {
+          const Options& o = sweep.combinations[c];
+          const Solution sol = solve(scene, o, continued ? &previous[c] : nullptr);
+          if (continued && sol.field) previous[c] = sol;
+          text += thrust_row(columns, p, scene, o, sol, summary);
+          ok = ok && sol.ok();
+        }
+        emit(text);
+        return ok;
+      });
+  return all_ok ? kExitOk : kExitNotConverged;
+}
+
+}  // namespace
+
+Run add_thrust_options(CLI::App& cmd) {
+  auto options = std::make_shared<ThrustOptions>();
+  add_scene_options(cmd, options->scene);
+  add_solver_options(cmd, options->solver, options->solver_text);
+  add_column_options(cmd, options->columns);
+  add_threads_option(cmd, options->threads);
+  return [options, &cmd](std::ostream& out) { return run_thrust(*options, cmd, out); };
+}
+
+}  // namespace ogive::cli

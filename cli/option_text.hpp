@@ -1,0 +1,44 @@
+// The text of options: names looked up among the known ones, the library's messages restated in terms
+// of the options, suggestions for misspelt names, and CLI11 validators for numeric options.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "values.hpp"
+
+namespace CLI {
+class Validator;
+}
+
+namespace ogive::cli {
+
+// The value `text` names in `names`; UsageError listing the known names otherwise.
+template <class Enum>
+Enum lookup(const std::map<std::string, Enum>& names, const std::string& text, const char* flag) {
+  const auto it = names.find(text);
+  if (it != names.end()) return it->second;
+  std::string known;
+  for (const auto& [name, value] : names) known += (known.empty() ? "" : ", ") + name;
+  throw UsageError(fmt::format("{}: unknown value '{}' (known: {})", flag, text, known));
+}
+
+// Comma-separated names ("a,b"): each one, empty ones included (the lookup refuses them).
+std::vector<std::string> split_names(const std::string& text);
+
+// "rise_ratio: rule" from the library becomes "--rise-ratio: rule"; the scene's lengths are given
+// as ratios of the span on the command line, so "thickness: ..." names --thickness-ratio.
+std::string as_option_message(const std::string& what);
+
+// " (did you mean 'x'?)" for the candidate closest to a misspelt name (edit distance at most 2), or "".
+std::string did_you_mean(const std::string& name, const std::vector<std::string>& candidates);
+
+// CLI11 would read "" as 0 and saturate huge integers: numeric options must be what parse_number
+// accepts (the whole text, finite), and counts whole numbers within what an int holds.
+const CLI::Validator& finite_number();
+const CLI::Validator& whole_count();
+
+}  // namespace ogive::cli

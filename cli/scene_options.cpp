@@ -1,0 +1,146 @@
+#include "scene_options.hpp"
+
+#include <cmath>
+#include <map>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+namespace ogive::cli {
+namespace {
+
+constexpr CurveFamily kFamilies[] = {
+    {"pointed", true},
+    {"semicircular"},
+    {"segmental", false, true, false, false, false, "0.25"},
+    {"three-centred", false, true, true, false, false, "0.3333333333333333", "60"},
+    {"four-centred", false, true, true, true, false, "0.42", "45", "15"},
+    {"elliptical", false, true, false, false, false, "0.5"},
+    {"parabolic", false, true, false, false, false, "0.5"},
+    {"catenary", false, true, false, false, false, "0.5"},
+    {"points", false, false, false, false, true},
+    {"whole-points", false, false, false, false, true},
+};
+
+bool positive(double v) { return v > 0; }
+bool any_number(double) { return true; }
+bool within_span(double v) { return v >= 0 && v <= 1; }
+bool small_movement(double v) { return std::abs(v) <= 0.01; }
+constexpr const char* kSpanRule = "must lie in [0, 1] (x / L within the span)";
+constexpr const char* kMovementRule = "must lie in [-0.01, 0.01] (beyond, small-displacement theory does not hold)";
+
+// What each scene option is, with its unit, for --help (the rules are scene_axes').
+const std::map<std::string, std::string>& axis_meanings() {
+  static const std::map<std::string, std::string> meanings = {
+      {"--span", "span L between the springings' axis points, m"},
+      {"--youngs-modulus", "Young's modulus E, Pa"},
+      {"--poisson-ratio", "Poisson's ratio nu (shear modulus G = E / (2 (1 + nu)))"},
+      {"--density", "density rho, kg/m^3"},
+      {"--gravity", "gravitational acceleration g, m/s^2"},
+      {"--shear-coefficient", "Timoshenko shear coefficient k (5/6 for a rectangle)"},
+      {"--thickness-ratio", "thickness over span t/L"},
+      {"--support-displacement-ratio", "outward movement of each springing over span d/L (0.0003 = 0.03 %)"},
+      {"--haunch-angle", "three- and four-centred: angle the haunch arc turns through, degrees"},
+      {"--crown-angle", "four-centred: the tangent's angle above the horizontal at the crown, degrees"},
+      {"--rise-ratio", "rise over span h/L (not for pointed, semicircular, points, whole-points)"},
+      {"--eccentricity",
+       "pointed: the centres' offset beyond mid-span over the span (0 semicircle, 0.5 equilateral)"},
+      {"--point-load", "vertical point load P on the axis, N per metre of vault width, downwards"},
+      {"--point-load-at", "where the point load acts, x / L from the left springing (default 0.5)"},
+      {"--live-load", "uniform load q per horizontal length, N/m^2 (N/m per metre of width), downwards"},
+      {"--live-load-from", "where the live load starts, x / L (default 0)"},
+      {"--live-load-to", "where the live load ends, x / L (default 1)"},
+      {"--fill-density",
+       "fill density rho_f, kg/m^3: load rho_f g max(0, h_f - y_extrados(x)) per horizontal length"},
+      {"--fill-height-ratio", "the fill's level h_f above the springing line, over the span"},
+      {"--left-spread-ratio", "left springing's horizontal movement, outwards positive, over the span"},
+      {"--right-spread-ratio", "right springing's horizontal movement, outwards positive, over the span"},
+      {"--left-settlement-ratio", "left springing's vertical movement, downwards positive, over the span"},
+      {"--right-settlement-ratio", "right springing's vertical movement, downwards positive, over the span"},
+      {"--left-rotation", "left springing's rotation, rad, counter-clockwise positive (clamped only)"},
+      {"--right-rotation", "right springing's rotation, rad, counter-clockwise positive (clamped only)"},
+  };
+  return meanings;
+}
+
+// What an option without a default text means when it is not given.
+std::string absent_default(const std::string& flag) {
+  if (flag == "--rise-ratio" || flag == "--haunch-angle" || flag == "--crown-angle") return " (default: the curve's)";
+  if (flag == "--left-spread-ratio" || flag == "--right-spread-ratio") return " (default: --support-displacement-ratio)";
+  if (flag == "--point-load-at" || flag == "--live-load-from" || flag == "--live-load-to") return "";
+  return " (default: none)";
+}
+
+}  // namespace
+
+std::span<const CurveFamily> curve_families() { return kFamilies; }
+
+std::string curve_family_names() {
+  std::string names;
+  for (const CurveFamily& f : kFamilies) names += (names.empty() ? "" : ", ") + std::string(f.name);
+  return names;
+}
+
+std::vector<Axis> scene_axes() {
+  using P = SceneParameters;
+  return {
+      {"--point-load", "", &P::point_load, any_number, "must be a finite number"},
+      {"--point-load-at", "", &P::point_load_at, within_span, kSpanRule},
+      {"--live-load", "", &P::live_load, any_number, "must be a finite number"},
+      {"--live-load-from", "", &P::live_load_from, within_span, kSpanRule},
+      {"--live-load-to", "", &P::live_load_to, within_span, kSpanRule},
+      {"--fill-density", "", &P::fill_density, [](double v) { return v >= 0; }, "must be >= 0"},
+      {"--fill-height-ratio", "", &P::fill_height_ratio, [](double v) { return v > 0 && v <= 100; },
+       "must lie in (0, 100] (the fill's level above the springing line, over the span)"},
+      {"--left-spread-ratio", "", &P::left_spread_ratio, small_movement, kMovementRule},
+      {"--right-spread-ratio", "", &P::right_spread_ratio, small_movement, kMovementRule},
+      {"--left-settlement-ratio", "0", &P::left_settlement_ratio, small_movement, kMovementRule},
+      {"--right-settlement-ratio", "0", &P::right_settlement_ratio, small_movement, kMovementRule},
+      {"--left-rotation", "0", &P::left_rotation, small_movement, kMovementRule},
+      {"--right-rotation", "0", &P::right_rotation, small_movement, kMovementRule},
+      {"--span", "10", &P::span, positive, "must be > 0"},
+      {"--youngs-modulus", "14.8e9", &P::youngs_modulus, positive, "must be > 0"},
+      {"--poisson-ratio", "0.2", &P::poisson_ratio, [](double v) { return v > -1 && v <= 0.5; },
+       "must lie in (-1, 0.5]"},
+      {"--density", "2348", &P::density, [](double v) { return v >= 0; },
+       "must be >= 0 (0: no self-weight, with another load)"},
+      {"--gravity", "9.81", &P::gravity, positive, "must be > 0"},
+      {"--shear-coefficient", "0.8333333333333334", &P::shear_coefficient, [](double v) { return v > 0 && v <= 2; },
+       "must lie in (0, 2]"},
+      {"--thickness-ratio", "0.08", &P::thickness_ratio, [](double v) { return v > 0 && v < 1; },
+       "must lie in (0, 1)"},
+      {"--support-displacement-ratio", "0", &P::support_displacement_ratio, small_movement,
+       "must lie in [-0.01, 0.01] (d/L; beyond, small-displacement theory does not hold)"},
+      {"--haunch-angle", "", &P::haunch_angle, [](double v) { return v > 0 && v < 90; }, "must lie in (0, 90)"},
+      {"--crown-angle", "", &P::crown_angle, [](double v) { return v > 0 && v < 90; }, "must lie in (0, 90)"},
+      {"--rise-ratio", "", &P::rise_ratio, [](double v) { return v > 0 && v <= 2; }, "must lie in (0, 2]"},
+      {"--eccentricity", "0", &P::eccentricity, [](double v) { return v >= 0 && v <= 100; },
+       "must lie in [0, 100]"},
+  };
+}
+
+void add_scene_options(CLI::App& cmd, SceneOptions& o) {
+  cmd.add_option("--curve", o.curve, "generator curve: " + curve_family_names())->capture_default_str();
+  cmd.add_option("--curve-file", o.curve_file,
+                 "with --curve points: CSV file with header x,y and the axis points in m, springing (y = 0) to crown; "
+                 "with --curve whole-points: springing to springing (any heights); - reads it from standard input");
+  for (Axis& a : o.axes)
+    cmd.add_option(a.flag, a.text,
+                   fmt::format("{}; {}; a value, a list a,b,c or a range start:stop:count{}",
+                               axis_meanings().at(a.flag), a.rule, a.text.empty() ? absent_default(a.flag) : ""))
+        ->capture_default_str();
+  cmd.add_flag("--plane-strain", o.plane_strain, "plane strain: E / (1 - nu^2) for axial and bending stiffness");
+  cmd.add_option("--supports", o.supports, "both springings: clamped or pinned")->capture_default_str();
+  cmd.add_option("--left-support", o.left_support, "left springing: clamped or pinned (default: --supports)");
+  cmd.add_option("--right-support", o.right_support, "right springing: clamped or pinned (default: --supports)");
+  cmd.add_option("--section", o.section,
+                 "elastic (linear) or no-tension (cracks where the resultant leaves the kern; Newton on explicit forces "
+                 "by quadrature, or shooting; a sweep of support movements is traced in order)")
+      ->capture_default_str();
+  cmd.add_flag("--crown-hinge", o.crown_hinge,
+               "a hinge at the crown (M = 0): the three-hinged arch with --supports pinned");
+  cmd.add_option("--loads-file", o.loads_file,
+                 "CSV of loads, header kind,value,a,b: point,P,a, | live,q,a,b | fill,rho_f,h_f/L, (README: Loads)");
+}
+
+}  // namespace ogive::cli

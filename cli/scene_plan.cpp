@@ -1,0 +1,222 @@
+#include "scene_plan.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <utility>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "ogive/geometry/curve_families.hpp"
+#include "ogive/model/loads_file.hpp"
+#include "option_text.hpp"
+#include "values.hpp"
+
+namespace ogive::cli {
+namespace {
+
+const std::map<std::string, SupportKind> kSupportKinds = {{"clamped", SupportKind::clamped},
+                                                          {"pinned", SupportKind::pinned}};
+const std::map<std::string, SectionKind> kSectionKinds = {{"elastic", SectionKind::elastic},
+                                                          {"no-tension", SectionKind::no_tension}};
+
+const CurveFamily& find_family(const std::string& curve) {
+  for (const CurveFamily& f : curve_families())
+    if (f.name == curve) return f;
+  throw UsageError(fmt::format("--curve: unknown curve '{}' (known: {})", curve, curve_family_names()));
+}
+
+// Options that do not apply to the curve are refused when given.
+void refuse_inapplicable(const CurveFamily& family, const std::string& curve, const CLI::App& cmd) {
+  auto refuse_unless = [&](bool applies, const char* flag) {
+    if (!applies && cmd.count(flag) > 0) throw UsageError(fmt::format("{}: does not apply to --curve {}", flag, curve));
+  };
+  refuse_unless(family.eccentricity, "--eccentricity");
+  refuse_unless(family.rise, "--rise-ratio");
+  refuse_unless(family.haunch, "--haunch-angle");
+  refuse_unless(family.crown, "--crown-angle");
+  refuse_unless(family.file, "--curve-file");
+  refuse_unless(!family.file, "--span");  // a points file sets its own span
+}
+
+// The axis points of --curve points or whole-points; "-": they come on standard input (a survey piped
+// from another program).
+std::shared_ptr<const Curve> read_points(const SceneOptions& o) {
+  if (o.curve_file.empty())
+    throw UsageError(fmt::format("--curve-file: --curve {} needs a file of axis points", o.curve));
+  try {
+    const bool whole = o.curve == "whole-points";
+    if (o.curve_file == "-")
+      return whole ? parse_whole_points_curve(std::cin, "<stdin>") : parse_points_curve(std::cin, "<stdin>");
+    return whole ? read_whole_points_curve(o.curve_file) : read_points_curve(o.curve_file);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+}
+
+// Load and movement options that need another, or exclude one.
+void check_option_pairs(const CLI::App& cmd) {
+  auto needs = [&](const char* flag, const char* other) {
+    if (cmd.count(flag) > 0 && cmd.count(other) == 0) throw UsageError(fmt::format("{}: needs {}", flag, other));
+  };
+  needs("--point-load-at", "--point-load");
+  needs("--live-load-from", "--live-load");
+  needs("--live-load-to", "--live-load");
+  needs("--fill-height-ratio", "--fill-density");
+  needs("--fill-density", "--fill-height-ratio");
+  for (const char* side : {"--left-spread-ratio", "--right-spread-ratio"})
+    if (cmd.count(side) > 0 && cmd.count("--support-displacement-ratio") > 0)
+      throw UsageError(fmt::format("{}: cannot be combined with --support-displacement-ratio (both springings "
+                                   "spreading alike): give each side's spread instead",
+                                   side));
+}
+
+Loads read_loads(const SceneOptions& o) {
+  if (o.loads_file == "-" && o.curve_file == "-")
+    throw UsageError("--loads-file: standard input already holds the curve's points (--curve-file -)");
+  try {
+    return o.loads_file == "-" ? parse_loads(std::cin, "<stdin>") : read_loads_file(o.loads_file);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+}
+
+}  // namespace
+
+ScenePlan::ScenePlan(SceneOptions& o, const CLI::App& cmd) : options_(o) {
+  // In this order, so that the problem reported is the same one when several are.
+  family_ = &find_family(o.curve);
+  refuse_inapplicable(*family_, o.curve, cmd);
+  if (family_->file) o.points = read_points(o);
+  check_option_pairs(cmd);
+  choose_supports(o, cmd);
+  if (!o.loads_file.empty()) o.file_loads = read_loads(o);
+  plan_axes(o, cmd);
+  require_some_scene();
+}
+
+void ScenePlan::choose_supports(const SceneOptions& o, const CLI::App& cmd) {
+  left_kind_ = o.left_support.empty() ? lookup(kSupportKinds, o.supports, "--supports")
+                                      : lookup(kSupportKinds, o.left_support, "--left-support");
+  right_kind_ = o.right_support.empty() ? lookup(kSupportKinds, o.supports, "--supports")
+                                        : lookup(kSupportKinds, o.right_support, "--right-support");
+  if (!o.left_support.empty() || !o.right_support.empty()) lookup(kSupportKinds, o.supports, "--supports");
+  section_ = lookup(kSectionKinds, o.section, "--section");
+  for (const auto& [flag, kind] : {std::pair{"--left-rotation", left_kind_}, {"--right-rotation", right_kind_}})
+    if (kind == SupportKind::pinned && cmd.count(flag) > 0)
+      throw UsageError(fmt::format("{}: does not apply to a pinned springing (it turns freely: its rotation is a "
+                                   "result, not a given movement)",
+                                   flag));
+}
+
+// Each axis' values: as given, else the curve family's default; a points file sets the span.
+void ScenePlan::plan_axes(SceneOptions& o, const CLI::App& cmd) {
+  for (Axis& a : o.axes) {
+    std::string text = a.text;
+    const bool given = cmd.count(a.flag) > 0;  // given text is parsed as it stands, even if empty
+    if (!given && text.empty()) {
+      if (a.flag == "--rise-ratio") text = family_->default_rise;
+      if (a.flag == "--haunch-angle") text = family_->default_haunch;
+      if (a.flag == "--crown-angle") text = family_->default_crown;
+    }
+    if (family_->file && a.flag == "--span") text = fmt::format("{}", o.points->span());
+    // Not a parameter of this curve: one NaN, printed as an empty field.
+    const bool absent = !given && text.empty();
+    a.values = absent ? std::vector<double>{std::numeric_limits<double>::quiet_NaN()} : parse_values(text, a.flag);
+    for (double v : a.values)
+      if (!std::isnan(v) && !a.allowed(v)) throw UsageError(fmt::format("{}: {}, got {}", a.flag, a.rule, v));
+    size_ *= a.values.size();
+    if (size_ > kMaxValues)
+      throw UsageError(fmt::format("{}: the options give more than {} scenes", a.flag, kMaxValues));
+  }
+}
+
+std::vector<std::string> ScenePlan::varying_inputs() const {
+  std::vector<std::string> out;
+  for (const Axis& a : options_.axes) {
+    if (a.values.size() < 2) continue;
+    std::string name = a.flag.substr(2);
+    std::replace(name.begin(), name.end(), '-', '_');
+    out.push_back(name);
+  }
+  return out;
+}
+
+SceneParameters ScenePlan::parameters(std::size_t index) const {
+  SceneParameters p{};
+  p.scene = index + 1;
+  p.curve = options_.curve;
+  p.plane_strain = options_.plane_strain;
+  for (std::size_t i = options_.axes.size(); i-- > 0;) {
+    const Axis& a = options_.axes[i];
+    p.*(a.field) = a.values[index % a.values.size()];
+    index /= a.values.size();
+  }
+  if (!family_->eccentricity) p.eccentricity = std::numeric_limits<double>::quiet_NaN();
+  // The defaults of the load and movement options, as the row prints them.
+  if (!std::isnan(p.point_load) && std::isnan(p.point_load_at)) p.point_load_at = 0.5;
+  if (!std::isnan(p.live_load) && std::isnan(p.live_load_from)) p.live_load_from = 0;
+  if (!std::isnan(p.live_load) && std::isnan(p.live_load_to)) p.live_load_to = 1;
+  if (std::isnan(p.left_spread_ratio)) p.left_spread_ratio = p.support_displacement_ratio;
+  if (std::isnan(p.right_spread_ratio)) p.right_spread_ratio = p.support_displacement_ratio;
+  p.left_support = left_kind_ == SupportKind::clamped ? "clamped" : "pinned";
+  p.right_support = right_kind_ == SupportKind::clamped ? "clamped" : "pinned";
+  p.crown_hinge = options_.crown_hinge;
+  p.loads_file = options_.loads_file;
+  p.section = section_ == SectionKind::elastic ? "elastic" : "no-tension";
+  return p;
+}
+
+ScenePlan::Built ScenePlan::build(const SceneParameters& p) const {
+  Built out;
+  try {
+    out.curve = make_curve(p);
+    Scene scene;
+    scene.curve = out.curve;
+    scene.thickness = p.thickness_ratio * p.span;
+    scene.material = {p.youngs_modulus, p.poisson_ratio, p.density, p.gravity, p.shear_coefficient, p.plane_strain};
+    scene.left = {left_kind_, p.left_spread_ratio * p.span, p.left_settlement_ratio * p.span, p.left_rotation};
+    scene.right = {right_kind_, p.right_spread_ratio * p.span, p.right_settlement_ratio * p.span, p.right_rotation};
+    scene.crown_hinge = options_.crown_hinge;
+    scene.section = section_;
+    scene.loads = options_.file_loads;
+    if (!std::isnan(p.point_load)) scene.loads.points.push_back({p.point_load, p.point_load_at});
+    if (!std::isnan(p.live_load)) scene.loads.live.push_back({p.live_load, p.live_load_from, p.live_load_to});
+    if (!std::isnan(p.fill_density)) scene.loads.fills.push_back({p.fill_density, p.fill_height_ratio});
+    scene.validate();
+    out.scene = std::move(scene);
+  } catch (const std::invalid_argument& e) {
+    out.problem = as_option_message(e.what());
+  }
+  return out;
+}
+
+// Scans without keeping anything, and stops at the first scene that can be made.
+void ScenePlan::require_some_scene() const {
+  std::string first_problem;
+  for (std::size_t i = 0; i < size_; ++i) {
+    Built b = build(parameters(i));
+    if (b.scene) return;
+    if (first_problem.empty()) first_problem = std::move(b.problem);
+  }
+  throw UsageError(size_ == 1 ? first_problem : "no scene of the sweep can be made; the first: " + first_problem);
+}
+
+std::shared_ptr<const Curve> ScenePlan::make_curve(const SceneParameters& p) const {
+  const std::string& c = p.curve;
+  if (c == "pointed") return make_pointed(p.span, p.eccentricity);
+  if (c == "semicircular") return make_pointed(p.span, 0.0);
+  if (c == "segmental") return make_segmental(p.span, p.rise_ratio);
+  if (c == "three-centred") return make_three_centred(p.span, p.rise_ratio, p.haunch_angle);
+  if (c == "four-centred") return make_four_centred(p.span, p.rise_ratio, p.haunch_angle, p.crown_angle);
+  if (c == "elliptical") return make_elliptical(p.span, p.rise_ratio);
+  if (c == "parabolic") return make_parabolic(p.span, p.rise_ratio);
+  if (c == "catenary") return make_catenary(p.span, p.rise_ratio);
+  return options_.points;
+}
+
+}  // namespace ogive::cli

@@ -1,0 +1,57 @@
+// The scenes of a sweep, one at a time: the product of the scene options' values, never held all at
+// once (a million scenes must not cost memory). Malformed options (a value outside its rule, an unknown
+// curve) are refused when the plan is made, before anything is printed; a combination of valid values
+// that makes no scene (a thickness that does not fit a flat arch) is a row of its own, status
+// invalid_scene.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ogive/geometry/curve.hpp"
+#include "ogive/model/scene.hpp"
+#include "scene_options.hpp"
+
+namespace ogive::cli {
+
+class ScenePlan {
+ public:
+  // Reads the curve's points and the loads file into `o`; UsageError for malformed options, or when
+  // no scene of the sweep can be made (the first one's reason).
+  ScenePlan(SceneOptions& o, const CLI::App& cmd);
+
+  std::size_t size() const { return size_; }
+  bool no_tension() const { return section_ == SectionKind::no_tension; }
+
+  // The columns of the inputs that take more than one value.
+  std::vector<std::string> varying_inputs() const;
+
+  // Scene number `index` (0-based) of the sweep; the last axis varies fastest.
+  SceneParameters parameters(std::size_t index) const;
+
+  // The scene of p, or why there is none (one line naming the option and the rule): the curve's
+  // factory and Scene::validate judge the combination.
+  struct Built {
+    std::optional<Scene> scene;
+    std::shared_ptr<const Curve> curve;  // set whenever the curve itself could be made
+    std::string problem;
+  };
+  Built build(const SceneParameters& p) const;
+
+ private:
+  void choose_supports(const SceneOptions& o, const CLI::App& cmd);
+  void plan_axes(SceneOptions& o, const CLI::App& cmd);
+  void require_some_scene() const;
+  std::shared_ptr<const Curve> make_curve(const SceneParameters& p) const;
+
+  const SceneOptions& options_;
+  const CurveFamily* family_ = nullptr;
+  SupportKind left_kind_ = SupportKind::clamped, right_kind_ = SupportKind::clamped;
+  SectionKind section_ = SectionKind::elastic;
+  std::size_t size_ = 1;
+};
+
+}  // namespace ogive::cli
