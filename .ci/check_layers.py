@@ -35,6 +35,8 @@ def layer_of_include(target, includer_rel):
     parts = target.split("/")
     if parts[0] == "ogive":
         return layer_of_file("include/" + target)
+    if includer_rel.startswith("cli/"):  # cli's own headers, relative to cli/ or its folders
+        return "cli"
     if len(parts) > 1:  # a private header, relative to src/
         return parts[0]
     return layer_of_file(includer_rel)  # beside the includer
