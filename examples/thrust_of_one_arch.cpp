@@ -1,10 +1,9 @@
-// Embedding ogive: the thrust of the equilateral pointed arch (eccentricity 0.5, span 10 m, t = 0.08 L,
+// An elastic scene: the thrust of the equilateral pointed arch (eccentricity 0.5, span 10 m, t = 0.08 L,
 // the paper's travertine), solved by the library's default method (the closed form here).
-// Prints "H/V = ..." and exits 0 when the solve succeeded, 1 otherwise.
+// Prints the method, the status, H, V and H/V; exits 0 when the solve succeeded, 1 otherwise.
 #include <cstdio>
 
-#include "ogive/geometry/curve.hpp"
-#include "ogive/solve/solve.hpp"
+#include "ogive/ogive.hpp"
 
 int main() {
   ogive::Scene scene;
@@ -13,7 +12,7 @@ int main() {
   scene.validate();  // throws std::invalid_argument naming the field for a bad scene
 
   const ogive::Solution sol = ogive::solve(scene);
-  std::printf("method %s, status %s\nH = %.6g N/m, V = %.6g N/m, H/V = %.10g\n", ogive::to_string(sol.method),
-              ogive::to_string(sol.status), sol.H, sol.V, sol.H_over_V);
+  std::printf("ogive %s: method %s, status %s\nH = %.6g N/m, V = %.6g N/m, H/V = %.10g\n", ogive::kVersion,
+              ogive::to_string(sol.method), ogive::to_string(sol.status), sol.H, sol.V, sol.H_over_V);
   return sol.ok() ? 0 : 1;
 }
