@@ -26,27 +26,55 @@ constexpr double kThicknessTolerance = 1e-10;
 // negative number for the root-finder, which needs only the sign.
 constexpr double kNoMargin = -1.0;
 
+// The joints of the ring of thickness t: the refined fractions and those at the loads' edges, which
+// move with the faces as the thickness changes.
+std::vector<double> fractions_at(const Scene& scene, double t, const LimitOptions& options,
+                                 const std::vector<double>& refined) {
+  std::vector<double> f = refined;
+  const std::vector<double> at_loads = limit_detail::load_fractions(*scene.curve, t, scene.loads, options);
+  f.insert(f.end(), at_loads.begin(), at_loads.end());
+  return limit_detail::merged_fractions(std::move(f));
+}
+
+// A joint whose crossing lies this close to a face (relative to the joint) is a hinge of the thinnest
+// arch: at t_min the margin is zero to the root-finder's tolerance, not to round-off.
+constexpr double kThinnestHingeTolerance = 1e-6;
+
 // The feasibility margin of the arch of the same axis and loads with thickness t (see analyse_limit).
 struct MarginFunction {
   Scene scene;  // a copy whose thickness changes
   const LimitOptions& options;
+  const std::vector<double>& refined;
   double load_factor;
   int solves = 0;
   bool failed = false;
   std::vector<int> basis;  // the last margin's optimal basis: the next thickness starts from it
+  double feasible_t = std::numeric_limits<double>::infinity();
+  std::vector<double> feasible_refinement;  // around the hinges of the thinnest admissible arch so far
 
   double operator()(double t) {
     scene.thickness = t;
-    const Ring ring = make_ring(scene, options);
+    const Ring ring = limit_detail::make_ring_at(scene, options, fractions_at(scene, t, options, refined));
     LimitLp lp(ring, options.friction);
-    LimitLp::Answer a = lp.margin(load_factor, basis.empty() ? nullptr : &basis);
+    // A warm start needs the same joints (a load's joints can merge with others at some thickness).
+    const bool warm = !basis.empty() && basis_joints == static_cast<int>(ring.joints.size());
+    LimitLp::Answer a = lp.margin(load_factor, warm ? &basis : nullptr);
     solves += lp.solves();
     basis = std::move(a.basis);
+    basis_joints = static_cast<int>(ring.joints.size());
     // No margin at all (friction can forbid every thrust line, whatever mu): as inadmissible as it gets.
     if (a.outcome == LimitLp::Outcome::infeasible) return kNoMargin;
     if (a.outcome != LimitLp::Outcome::optimal) failed = true;
+    if (a.outcome == LimitLp::Outcome::optimal && a.margin >= 0 && t < feasible_t) {
+      feasible_t = t;
+      feasible_refinement.clear();
+      const ThrustState st = thrust_state(ring, a.H, a.V, a.M, a.load_factor, kThinnestHingeTolerance);
+      limit_detail::add_refinement(ring, st.hinges, feasible_refinement);
+    }
     return a.margin;
   }
+
+  int basis_joints = 0;  // the joints of the ring whose margin gave `basis`
 };
 
 // The smallest thickness with margin >= 0, from a bracket lo < hi with f(lo) < 0 <= f(hi): Illinois
@@ -84,6 +112,7 @@ const char* to_string(LimitStatus s) {
     case LimitStatus::success: return "success";
     case LimitStatus::inadmissible: return "inadmissible";
     case LimitStatus::lp_failure: return "lp_failure";
+    case LimitStatus::not_converged: return "not_converged";
   }
   return "unknown";
 }
@@ -181,7 +210,7 @@ double one_mechanism(const Ring& ring, const std::vector<Hinge>& h) {
 }  // namespace
 
 double mechanism_load_factor(const Ring& ring, const std::vector<Hinge>& hinges) {
-  if (!ring.has_live_load() || hinges.size() < 3) return kNaN;
+  if (!ring.has_live_load() || hinges.size() < 3 || hinges.size() > kMaxMechanismHinges) return kNaN;
   std::vector<Hinge> h = hinges;
   std::sort(h.begin(), h.end(), [](const Hinge& a, const Hinge& b) { return a.joint < b.joint; });
   for (std::size_t i = 1; i < h.size(); ++i)
@@ -202,26 +231,34 @@ double mechanism_load_factor(const Ring& ring, const std::vector<Hinge>& hinges)
   return best;
 }
 
-LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
-  scene.validate();
-  std::string why;
-  if (!options.is_valid(&why)) throw std::invalid_argument(why);
+namespace {
+
+// One analysis on the ring whose joints are `refined` and the loads' (fractions_at), and where the next
+// ring should be finer: next to every hinge of its states and of the thinnest arch.
+struct Round {
+  LimitResult result;
+  std::vector<double> refinement;
+};
+
+Round analyse_round(const Scene& scene, const LimitOptions& options, const std::vector<double>& refined) {
   const Curve& curve = *scene.curve;
-  const Ring ring = make_ring(scene, options);
+  const Ring ring = limit_detail::make_ring_at(scene, options, fractions_at(scene, scene.thickness, options, refined));
+  Round round;
+  LimitResult& r = round.result;
+  r.ring = ring;
   if (!(ring.total_dead() != 0.0 || ring.has_live_load()))
     throw std::invalid_argument(
         "loads: the ring carries no load (density 0, and the fills lie below the extrados over the whole span)");
   const bool live = ring.has_live_load();
   const double load_factor = live ? 1.0 : 0.0;  // the H range and t_min: under the loads as given
 
-  LimitResult r;
   r.V = 0.5 * (ring.total_dead() + ring.total_live());
   LimitLp lp(ring, options.friction);
   auto fail = [&](const char* problem) {
     r.status = LimitStatus::lp_failure;
     r.message = fmt::format("the LP of {} stopped without an answer", problem);
     r.lp_solves += lp.solves();
-    return r;
+    return round;
   };
   auto state = [&](const LimitLp::Answer& a) { return thrust_state(ring, a.H, a.V, a.M, a.load_factor); };
 
@@ -256,7 +293,8 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
   r.lp_solves += lp.solves();
 
   // t_min: bracket the root of the margin, then Illinois.
-  MarginFunction f{scene, options, load_factor, 0, false, margin.basis};
+  MarginFunction f{scene,        options, refined, load_factor, 0, false, margin.basis,
+                   std::numeric_limits<double>::infinity(), {}, static_cast<int>(ring.joints.size())};
   const double t = scene.thickness;
   const double t_cap = 0.99 * max_thickness(curve);
   double lo = t, f_lo = margin.margin, hi = t, f_hi = margin.margin;
@@ -291,15 +329,19 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
   if (f.failed) {
     r.status = LimitStatus::lp_failure;
     r.message = "the LP of the feasibility margin stopped without an answer while searching t_min";
-    return r;
+    return round;
   }
+  for (const ThrustState* st : {&r.min_state, &r.max_state, &r.collapse_state})
+    limit_detail::add_refinement(ring, st->hinges, round.refinement);
+  if (!std::isnan(r.thickness_min))
+    round.refinement.insert(round.refinement.end(), f.feasible_refinement.begin(), f.feasible_refinement.end());
   if (!admissible) {
     r.status = LimitStatus::inadmissible;
     const char* where = options.friction > 0 ? "inside the arch and its joints' friction cones" : "inside the arch";
     r.message = std::isnan(r.thickness_min)
                     ? fmt::format("no thrust line fits {} at any thickness up to {} m", where, t_cap)
                     : fmt::format("no thrust line fits {}: t < t_min", where);
-    return r;
+    return round;
   }
   r.status = LimitStatus::success;
   if (!bracketed) r.message = fmt::format("t_min below {} m: not searched further", hi);
@@ -307,9 +349,70 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
   if (unbounded_thrust) note("no largest thrust: a thrust line of any H fits inside the arch (H_max absent)");
   if (live && std::isnan(r.load_factor()))
     note("the live load cannot turn the arch into a mechanism (no finite load factor)");
-  if (!std::isnan(r.load_factor()) && std::isnan(r.load_factor_mechanism))
-    note(options.friction > 0 ? "no rotational mechanism through the collapse hinges: joints slide at collapse"
-                              : "no one-degree rotational mechanism through the collapse hinges");
+  if (!std::isnan(r.load_factor()) && std::isnan(r.load_factor_mechanism)) {
+    if (r.collapse_state.hinges.size() > kMaxMechanismHinges)
+      note(fmt::format("the collapse state touches {} joints: the mechanism check takes at most {}",
+                       r.collapse_state.hinges.size(), kMaxMechanismHinges));
+    else
+      note(options.friction > 0 ? "no rotational mechanism through the collapse hinges: joints slide at collapse"
+                                : "no one-degree rotational mechanism through the collapse hinges");
+  }
+  return round;
+}
+
+// The largest relative change of a number between two results (NaN in one only: infinite).
+double largest_change(const LimitResult& a, const LimitResult& b) {
+  double worst = 0;
+  auto compare = [&](double x, double y) {
+    if (std::isnan(x) && std::isnan(y)) return;
+    if (std::isnan(x) != std::isnan(y)) {
+      worst = std::numeric_limits<double>::infinity();
+      return;
+    }
+    const double scale = std::max(std::abs(x), std::abs(y));
+    if (scale > 0) worst = std::max(worst, std::abs(x - y) / scale);
+  };
+  compare(a.H_min(), b.H_min());
+  compare(a.H_max(), b.H_max());
+  compare(a.thickness_min, b.thickness_min);
+  compare(a.load_factor(), b.load_factor());
+  compare(a.load_factor_mechanism, b.load_factor_mechanism);
+  return worst;
+}
+
+}  // namespace
+
+LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
+  scene.validate();
+  std::string why;
+  if (!options.is_valid(&why)) throw std::invalid_argument(why);
+  std::vector<double> refined = limit_detail::uniform_fractions(options.joints_count);
+  Round round = analyse_round(scene, options, refined);
+  int solves = round.result.lp_solves;
+  double change = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < kMaxLimitRefinements && round.result.status != LimitStatus::lp_failure; ++k) {
+    // Nothing to refine around (no hinge anywhere): a finer ring gives the same numbers.
+    if (round.refinement.empty()) {
+      change = 0;
+      break;
+    }
+    refined.insert(refined.end(), round.refinement.begin(), round.refinement.end());
+    refined = limit_detail::merged_fractions(std::move(refined));
+    Round next = analyse_round(scene, options, refined);
+    solves += next.result.lp_solves;
+    change = next.result.status == LimitStatus::lp_failure ? change : largest_change(round.result, next.result);
+    round = std::move(next);
+    if (change <= kLimitTolerance) break;
+  }
+  LimitResult r = std::move(round.result);
+  r.lp_solves = solves;
+  if (r.status != LimitStatus::lp_failure && !(change <= kLimitTolerance)) {
+    r.status = LimitStatus::not_converged;
+    const std::string text = fmt::format("the numbers still moved by {:.3g} (relative) at the last of {} refinements "
+                                         "of the joints",
+                                         change, kMaxLimitRefinements);
+    r.message = r.message.empty() ? text : text + "; " + r.message;
+  }
   return r;
 }
 

@@ -1,6 +1,7 @@
 // The ring of voussoirs: joints, and the weight of each voussoir with where it acts.
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <cmath>
 #include <optional>
 #include <utility>
@@ -237,22 +238,34 @@ VerticalLoad fill_load(const SideView& side, const FillLoad& fill, double gravit
   return {load.x(), load.y()};
 }
 
-// The joints and voussoirs of one side, with their self-weight and fill.
-SideRing make_side(const SideView& side, double thickness, double unit_weight, const std::vector<FillLoad>& fills,
-                   double gravity, const LimitOptions& options, double span) {
-  const double S = side.length(), half_t = 0.5 * thickness, xc = side.crown_x();
-  const int m = (options.joints_count - 1) / 2;  // voussoirs per side
+// Where the joints of a side end at the crown: the crown joint is vertical through the crown. At a
+// pointed crown the intrados reaches the crown's vertical before the axis does and the extrados after
+// it. Joints are placed by their intrados' arc length in [0, intrados].
+struct CrownEnds {
+  double intrados = 0, extrados = 0;
+};
 
-  // The crown joint is vertical through the crown. At a pointed crown the intrados reaches the crown's
-  // vertical before the axis does and the extrados after it: find where.
-  const bool pointed = side.at(S).theta > 1e-12;
-  double s_intrados_crown = S, s_extrados_crown = S;
-  if (pointed) {
-    s_intrados_crown = face_at_x(side, -half_t, xc, 0.0, S, span);
+CrownEnds crown_ends(const SideView& side, double thickness, double span) {
+  const double S = side.length(), half_t = 0.5 * thickness, xc = side.crown_x();
+  CrownEnds e{S, S};
+  if (side.at(S).theta > 1e-12) {  // pointed
+    e.intrados = face_at_x(side, -half_t, xc, 0.0, S, span);
     double hi = S + thickness;
     while (face_at(side, half_t, hi).p.x() < xc) hi = S + 2.0 * (hi - S);
-    s_extrados_crown = face_at_x(side, half_t, xc, S, hi, span);
+    e.extrados = face_at_x(side, half_t, xc, S, hi, span);
   }
+  return e;
+}
+
+// The joints and voussoirs of one side, with their self-weight and fill: the springing bed, a joint at
+// each of `fractions` (ascending in (0, 1): its intrados at that fraction of the intrados' arc length to
+// the crown's vertical) and the crown joint.
+SideRing make_side(const SideView& side, double thickness, double unit_weight, const std::vector<FillLoad>& fills,
+                   double gravity, const LimitOptions& options, const std::vector<double>& fractions, double span) {
+  const double S = side.length(), half_t = 0.5 * thickness, xc = side.crown_x();
+  const int m = static_cast<int>(fractions.size()) + 1;  // voussoirs per side
+  const CrownEnds ends = crown_ends(side, thickness, span);
+  const double s_intrados_crown = ends.intrados, s_extrados_crown = ends.extrados;
 
   auto make_joint = [&](double s_in, double s_ex, double s_axis) {
     SideJoint h;
@@ -273,7 +286,7 @@ SideRing make_side(const SideView& side, double thickness, double unit_weight, c
     // Both orientations space the joints over the part of the arch whose joints cut it in two: radial
     // joints over the axis up to where the intrados reaches the crown's vertical, vertical ones over
     // the intrados.
-    const double s = s_intrados_crown * j / m;
+    const double s = s_intrados_crown * fractions[j - 1];
     if (options.joints == JointOrientation::radial) {
       joints.push_back(make_joint(s, s, s));
     } else {
@@ -323,6 +336,57 @@ SideRing make_side(const SideView& side, double thickness, double unit_weight, c
   return out;
 }
 
+// Where a side's joints must lie for a hinge to form where a load's line of action meets the faces
+// (x_view in the side's coordinates): the joint whose intrados is at x_view and, for radial joints,
+// those whose extrados and axis points are at x_view (a vertical joint there is all three). A hinge
+// under a point load, or at a live load's or a fill's end, then forms where it would in the continuum.
+void add_fractions_at_x(const SideView& side, double thickness, double x_view, const LimitOptions& options,
+                        double span, std::vector<double>& out) {
+  const double half_t = 0.5 * thickness;
+  const CrownEnds ends = crown_ends(side, thickness, span);
+  const double S_in = ends.intrados;
+  auto add_face = [&](double n) {
+    // Radial joints are placed by the arc length they share with every face; only up to S_in.
+    if (!(face_at(side, n, 0.0).p.x() < x_view && face_at(side, n, S_in).p.x() > x_view)) return;
+    out.push_back(face_at_x(side, n, x_view, 0.0, S_in, span) / S_in);
+  };
+  add_face(-half_t);
+  if (options.joints == JointOrientation::radial) {
+    add_face(half_t);
+    add_face(0.0);
+  }
+}
+
+// The arc length of a side in [0, hi] where its extrados' height reaches `level` (NaN if it does not).
+double extrados_at_height(const SideView& side, double thickness, double level, double hi, double span) {
+  const double half_t = 0.5 * thickness;
+  auto f = [&](double s) { return face_at(side, half_t, s).p.y() - level; };
+  double lo = 0.0, f_lo = f(lo);
+  if (!((f_lo < 0) != (f(hi) < 0))) return std::numeric_limits<double>::quiet_NaN();
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * span; ++it) {
+    const double mid = 0.5 * (lo + hi), f_mid = f(mid);
+    if ((f_mid < 0) == (f_lo < 0)) lo = mid, f_lo = f_mid; else hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+// The fractions (as make_side takes them) of the joints at every load's edges on one side: point loads,
+// the ends of live loads, and where each fill's level meets the extrados.
+void add_load_fractions(const SideView& side, double thickness, const Loads& loads, const LimitOptions& options,
+                        double span, std::vector<double>& out) {
+  auto at_curve_x = [&](double x) { add_fractions_at_x(side, thickness, side.curve_x(x), options, span, out); };
+  for (const PointLoad& p : loads.points) at_curve_x(p.at * span);
+  for (const LiveLoad& q : loads.live) {
+    at_curve_x(q.from * span);
+    at_curve_x(q.to * span);
+  }
+  const CrownEnds ends = crown_ends(side, thickness, span);
+  for (const FillLoad& f : loads.fills) {
+    const double s = extrados_at_height(side, thickness, f.height_ratio * span, ends.extrados, span);
+    if (!std::isnan(s)) at_curve_x(side.curve_x(face_at(side, 0.5 * thickness, s).p.x()));
+  }
+}
+
 // A joint or a voussoir of one side in the curve's coordinates.
 Joint to_curve(const SideView& side, const Joint& j) {
   auto flip = [&](const Eigen::Vector2d& p) { return Eigen::Vector2d(side.curve_x(p.x()), p.y()); };
@@ -344,10 +408,16 @@ double stretch_end(const Joint& j, WeightModel w) { return w == WeightModel::vou
 void add_live_loads(Ring& ring, const Loads& loads, WeightModel w) {
   const double L = ring.span;
   const std::size_t n = ring.voussoirs.size();
+  const double tie = 1e-12 * L;
   for (const PointLoad& p : loads.points) {
     const double x = p.at * L;
     std::size_t k = 0;
-    while (k + 1 < n && x > stretch_end(ring.joints[k + 1], w)) ++k;
+    while (k + 1 < n && x > stretch_end(ring.joints[k + 1], w) + tie) ++k;
+    // A joint through the load's point (make_ring places one there): the load belongs to the part that
+    // holds the vertical just below that point, where the thrust line bends. The joint leans one way or
+    // the other, and the part on the other side touches the load only at the joint's end.
+    if (k + 1 < n && std::abs(x - stretch_end(ring.joints[k + 1], w)) <= tie && ring.joints[k + 1].intrados.x() < x)
+      ++k;
     ring.voussoirs[k].live += {p.force, p.force * x};
   }
   for (const LiveLoad& q : loads.live)
@@ -360,7 +430,7 @@ void add_live_loads(Ring& ring, const Loads& loads, WeightModel w) {
 
 // The ring of any curve with the self-weight and fills (make_ring's two forms).
 Ring build_ring(const Curve& curve, double thickness, double unit_weight, const std::vector<FillLoad>& fills,
-                double gravity, const LimitOptions& options) {
+                double gravity, const LimitOptions& options, const std::vector<double>& fractions) {
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
   if (!std::isfinite(unit_weight) || !(unit_weight >= 0))
@@ -371,9 +441,10 @@ Ring build_ring(const Curve& curve, double thickness, double unit_weight, const 
         max_thickness(curve), thickness));
   const double L = curve.span();
   const SideView left_view(curve, false);
-  const SideRing left = make_side(left_view, thickness, unit_weight, fills, gravity, options, L);
+  const SideRing left = make_side(left_view, thickness, unit_weight, fills, gravity, options, fractions, L);
   Ring ring;
   ring.span = L;
+  ring.joint_fractions = fractions;
   const int m = static_cast<int>(left.voussoirs.size());
   ring.joints.reserve(2 * m + 1);
   ring.voussoirs.reserve(2 * m);
@@ -396,7 +467,7 @@ Ring build_ring(const Curve& curve, double thickness, double unit_weight, const 
     return ring;
   }
   const SideView right_view(curve, true);
-  const SideRing right = make_side(right_view, thickness, unit_weight, fills, gravity, options, L);
+  const SideRing right = make_side(right_view, thickness, unit_weight, fills, gravity, options, fractions, L);
   // Both sides end on the crown's vertical; at a kink the two sides' faces meet there only when the
   // kink is symmetric (else the vertical joint would not cut the arch in two).
   const Joint a = left.joints.back().joint, b = to_curve(right_view, right.joints.back().joint);
@@ -457,13 +528,83 @@ bool Ring::has_live_load() const {
 }
 
 Ring make_ring(const Curve& curve, double thickness, double unit_weight, const LimitOptions& options) {
-  return build_ring(curve, thickness, unit_weight, {}, 0.0, options);
+  std::string why;
+  if (!options.is_valid(&why)) throw std::invalid_argument(why);
+  return build_ring(curve, thickness, unit_weight, {}, 0.0, options,
+                    limit_detail::uniform_fractions(options.joints_count));
 }
 
 Ring make_ring(const Scene& scene, const LimitOptions& options) {
+  return limit_detail::make_ring_at(scene, options, limit_detail::starting_fractions(scene, options));
+}
+
+namespace limit_detail {
+
+std::vector<double> uniform_fractions(int joints_count) {
+  const int m = (joints_count - 1) / 2;  // voussoirs per side
+  std::vector<double> f;
+  f.reserve(m - 1);
+  for (int j = 1; j < m; ++j) f.push_back(static_cast<double>(j) / m);
+  return f;
+}
+
+std::vector<double> starting_fractions(const Scene& scene, const LimitOptions& options) {
+  std::string why;
+  if (!options.is_valid(&why)) throw std::invalid_argument(why);
+  if (!scene.curve) throw std::invalid_argument("curve: a scene needs a generator curve");
+  std::vector<double> f = uniform_fractions(options.joints_count);
+  const std::vector<double> at_loads = load_fractions(*scene.curve, scene.thickness, scene.loads, options);
+  f.insert(f.end(), at_loads.begin(), at_loads.end());
+  return merged_fractions(std::move(f));
+}
+
+std::vector<double> merged_fractions(std::vector<double> f) {
+  std::sort(f.begin(), f.end());
+  std::vector<double> out;
+  out.reserve(f.size());
+  for (double x : f) {
+    if (!(x > kFractionGap && x < 1.0 - kFractionGap)) continue;
+    if (!out.empty() && x - out.back() <= kFractionGap) continue;
+    out.push_back(x);
+  }
+  return out;
+}
+
+std::vector<double> load_fractions(const Curve& curve, double thickness, const Loads& loads,
+                                   const LimitOptions& options) {
+  std::vector<double> out;
+  const double L = curve.span();
+  if (!std::isfinite(thickness) || !(thickness > 0) || thickness >= max_thickness(curve)) return out;  // refused later
+  add_load_fractions(SideView(curve, false), thickness, loads, options, L, out);
+  if (curve.extent() == CurveExtent::whole) {
+    add_load_fractions(SideView(curve, true), thickness, loads, options, L, out);
+  } else {
+    // A half curve's right side is the mirror of its left one: the loads beyond mid-span, mirrored.
+    Loads mirrored;
+    for (const PointLoad& q : loads.points) mirrored.points.push_back({q.force, 1.0 - q.at});
+    for (const LiveLoad& q : loads.live) mirrored.live.push_back({q.intensity, 1.0 - q.to, 1.0 - q.from});
+    add_load_fractions(SideView(curve, false), thickness, mirrored, options, L, out);
+  }
+  return out;
+}
+
+void add_refinement(const Ring& ring, const std::vector<Hinge>& hinges, std::vector<double>& out) {
+  const int m = ring.crown_joint();  // voussoirs per side
+  const std::vector<double>& f = ring.joint_fractions;
+  // Side joint i's fraction: 0 at the springing, 1 at the crown.
+  auto at = [&](int i) { return i <= 0 ? 0.0 : i >= m ? 1.0 : f[static_cast<std::size_t>(i - 1)]; };
+  for (const Hinge& h : hinges) {
+    const int i = h.joint <= m ? h.joint : 2 * m - h.joint;
+    if (i > 0) out.push_back(0.5 * (at(i - 1) + at(i)));
+    if (i < m) out.push_back(0.5 * (at(i) + at(i + 1)));
+  }
+}
+
+Ring make_ring_at(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions) {
   if (!scene.curve) throw std::invalid_argument("curve: a scene needs a generator curve");
   const Material& m = scene.material;
-  Ring ring = build_ring(*scene.curve, scene.thickness, m.density * m.gravity, scene.loads.fills, m.gravity, options);
+  Ring ring = build_ring(*scene.curve, scene.thickness, m.density * m.gravity, scene.loads.fills, m.gravity, options,
+                         fractions);
   add_live_loads(ring, scene.loads, options.weight);
   const int last = static_cast<int>(ring.joints.size()) - 1;
   if (scene.left.kind == SupportKind::pinned) ring.pins.push_back(0);
@@ -471,8 +612,6 @@ Ring make_ring(const Scene& scene, const LimitOptions& options) {
   if (scene.right.kind == SupportKind::pinned) ring.pins.push_back(last);
   return ring;
 }
-
-namespace limit_detail {
 
 LoadsLeftOfJoints loads_left_of_joints(const Ring& ring) {
   const std::size_t n = ring.joints.size();
