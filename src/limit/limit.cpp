@@ -210,12 +210,24 @@ double one_mechanism(const Ring& ring, const std::vector<Hinge>& h) {
 }  // namespace
 
 double mechanism_load_factor(const Ring& ring, const std::vector<Hinge>& hinges) {
-  if (!ring.has_live_load() || hinges.size() < 3 || hinges.size() > kMaxMechanismHinges) return kNaN;
-  std::vector<Hinge> h = hinges;
-  std::sort(h.begin(), h.end(), [](const Hinge& a, const Hinge& b) { return a.joint < b.joint; });
-  for (std::size_t i = 1; i < h.size(); ++i)
-    if (h[i].joint == h[i - 1].joint) return kNaN;
-  if (h.size() <= 4) return one_mechanism(ring, h);
+  if (!ring.has_live_load() || hinges.size() < 3) return kNaN;
+  std::vector<Hinge> sorted = hinges;
+  std::sort(sorted.begin(), sorted.end(), [](const Hinge& a, const Hinge& b) { return a.joint < b.joint; });
+  for (std::size_t i = 1; i < sorted.size(); ++i)
+    if (sorted[i].joint == sorted[i - 1].joint) return kNaN;
+  if (sorted.size() <= 4) return one_mechanism(ring, sorted);
+  // A thrust line tangent to a face touches a run of consecutive joints on it (the finer the joints,
+  // the longer the run): the first, middle and last of each run stand for it.
+  std::vector<Hinge> h;
+  for (std::size_t i = 0; i < sorted.size();) {
+    std::size_t j = i + 1;
+    while (j < sorted.size() && sorted[j].joint == sorted[j - 1].joint + 1 && sorted[j].face == sorted[i].face) ++j;
+    h.push_back(sorted[i]);
+    if (j - i > 2) h.push_back(sorted[i + (j - i) / 2]);
+    if (j - i > 1) h.push_back(sorted[j - 1]);
+    i = j;
+  }
+  if (h.size() > kMaxMechanismHinges) return kNaN;
   // More hinges than a one-degree mechanism has (a degenerate optimum: e.g. the thrust line along an
   // intrados chord touches two adjacent joints): every admissible mechanism of four of them is an upper
   // bound (the kinematic theorem); the least is the multiplier of these hinges.
@@ -351,7 +363,8 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
     note("the live load cannot turn the arch into a mechanism (no finite load factor)");
   if (!std::isnan(r.load_factor()) && std::isnan(r.load_factor_mechanism)) {
     if (r.collapse_state.hinges.size() > kMaxMechanismHinges)
-      note(fmt::format("the collapse state touches {} joints: the mechanism check takes at most {}",
+      note(fmt::format("the collapse state touches {} joints: the mechanism check takes at most {} hinges "
+                       "(a run of consecutive ones counting as three)",
                        r.collapse_state.hinges.size(), kMaxMechanismHinges));
     else
       note(options.friction > 0 ? "no rotational mechanism through the collapse hinges: joints slide at collapse"

@@ -251,8 +251,9 @@ ThrustState thrust_state(const Ring& ring, double H, double V_left, double M_lef
 // load vanishes (each voussoir's loads by their resultant). NaN unless the hinges make a mechanism of one
 // degree of freedom in which the live load does work and every face hinge opens on the face opposite to
 // its own (kinematically admissible; a pin turns either way). Given more than four hinges (a degenerate
-// static optimum), the least multiplier of the admissible mechanisms of four of them; NaN given more
-// than kMaxMechanismHinges.
+// static optimum), the least multiplier of the admissible mechanisms of four of them, a run of hinges
+// at consecutive joints on one face represented by its first, middle and last; NaN when more than
+// kMaxMechanismHinges remain.
 double mechanism_load_factor(const Ring& ring, const std::vector<Hinge>& hinges);
 
 }  // namespace ogive
