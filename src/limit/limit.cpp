@@ -403,6 +403,9 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
   Round round = analyse_round(scene, options, refined);
   int solves = round.result.lp_solves;
   double change = std::numeric_limits<double>::infinity();
+  // Converged after two refinements in a row that moved no number by more than the tolerance: one alone
+  // can miss a hinge that lies beyond the joints it added (and then moves nothing).
+  int quiet = 0;
   for (int k = 0; k < kMaxLimitRefinements && round.result.status != LimitStatus::lp_failure; ++k) {
     // Nothing to refine around (no hinge anywhere): a finer ring gives the same numbers.
     if (round.refinement.empty()) {
@@ -415,11 +418,12 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
     solves += next.result.lp_solves;
     change = next.result.status == LimitStatus::lp_failure ? change : largest_change(round.result, next.result);
     round = std::move(next);
-    if (change <= kLimitTolerance) break;
+    quiet = change <= kLimitTolerance ? quiet + 1 : 0;
+    if (quiet == 2) break;
   }
   LimitResult r = std::move(round.result);
   r.lp_solves = solves;
-  if (r.status != LimitStatus::lp_failure && !(change <= kLimitTolerance)) {
+  if (r.status != LimitStatus::lp_failure && !(change <= kLimitTolerance && (quiet == 2 || change == 0))) {
     r.status = LimitStatus::not_converged;
     const std::string text = fmt::format("the numbers still moved by {:.3g} (relative) at the last of {} refinements "
                                          "of the joints",

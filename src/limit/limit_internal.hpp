@@ -28,8 +28,8 @@ std::vector<double> load_fractions(const Curve& curve, double thickness, const L
 std::vector<double> starting_fractions(const Scene& scene, const LimitOptions& options);
 // Sorted, strictly inside (0, 1), none within kFractionGap of the one before.
 std::vector<double> merged_fractions(std::vector<double> fractions);
-// Appends the fractions that halve the voussoirs on both sides of each hinge's joint (on both sides of
-// the ring: the fractions are shared).
+// Appends the fractions that halve the two voussoirs on each side of each hinge's joint (on both sides
+// of the ring: the fractions are shared).
 void add_refinement(const Ring& ring, const std::vector<Hinge>& hinges, std::vector<double>& out);
 // The ring of the scene (as make_ring) with its joints at `fractions` (as merged_fractions returns them).
 Ring make_ring_at(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions);

@@ -593,10 +593,10 @@ void add_refinement(const Ring& ring, const std::vector<Hinge>& hinges, std::vec
   const std::vector<double>& f = ring.joint_fractions;
   // Side joint i's fraction: 0 at the springing, 1 at the crown.
   auto at = [&](int i) { return i <= 0 ? 0.0 : i >= m ? 1.0 : f[static_cast<std::size_t>(i - 1)]; };
+  // Two voussoirs on each side of the hinge: the true hinge may lie beyond the next joint.
   for (const Hinge& h : hinges) {
     const int i = h.joint <= m ? h.joint : 2 * m - h.joint;
-    if (i > 0) out.push_back(0.5 * (at(i - 1) + at(i)));
-    if (i < m) out.push_back(0.5 * (at(i) + at(i + 1)));
+    for (int k = std::max(i - 2, 0); k < std::min(i + 2, m); ++k) out.push_back(0.5 * (at(k) + at(k + 1)));
   }
 }
 

@@ -227,9 +227,10 @@ struct LimitResult {
 // nothing (every load zero over the ring).
 //
 // Converged in the joints: the analysis runs on make_ring's ring, then again with the voussoirs next to
-// every hinge (of the minimum, maximum and collapse states, and of the thinnest arch) halved, until no
-// number of the result (H_min, H_max, t_min, load_factor, load_factor_mechanism) moves by more than
-// kLimitTolerance relative between two refinements (status not_converged after kMaxLimitRefinements).
+// every hinge (of the minimum, maximum and collapse states, and of the thinnest arch) halved, two on
+// each side, until in two refinements in a row no number of the result (H_min, H_max, t_min,
+// load_factor, load_factor_mechanism) moved by more than kLimitTolerance relative (status
+// not_converged after kMaxLimitRefinements).
 // The result is that of the last, finest ring; lp_solves counts every round's programs.
 //
 // t_min (same axis, stereotomy and loads; the fill follows the extrados) is found by a bracketing
