@@ -10,115 +10,13 @@
 
 #include <fmt/format.h>
 
+#include "geometry/side_view.hpp"
 #include "numerics/gauss_legendre.hpp"
 #include "limit/limit_internal.hpp"
 #include "ogive/limit/limit.hpp"
 
 namespace ogive {
 namespace {
-
-// One side of the arch, springing to crown, seen as the left half of a symmetric arch: the left side
-// as it is, the right side run from its springing towards the crown and mirrored about the vertical
-// through the crown (x -> 2 x_c - x), so that one construction serves both sides of a whole curve; a half
-// curve has only its left side (the right is its mirror image about mid-span). Beyond the crown (s > S;
-// only the extrados of a pointed crown goes there, up to the crown's vertical) the side's axis is
-// continued: along its last arc for a piecewise-circular curve, otherwise along its tangent at the crown.
-class SideView {
- public:
-  SideView(const Curve& curve, bool right) : curve_(curve), right_(right) {
-    const bool whole = curve.extent() == CurveExtent::whole;
-    whole_length_ = curve.whole_length();
-    const double C = whole ? curve.crown() : curve.length();
-    const double tiny = 1e-12 * whole_length_;
-    S_ = right ? whole_length_ - C : C;
-    const CurvePoint crown = curve.at(C);  // from the left at a kink (Curve's contract)
-    crown_x_ = whole ? crown.x : 0.5 * curve.span();  // a half's crown is at mid-span (to round-off: exactly)
-    const auto arcs = curve.arcs();
-    if (!right) {
-      crown_ = crown;
-      for (const CircularArc& a : arcs)
-        if (a.s_start < C - tiny) end_arc_ = a;
-      for (double b : curve.breakpoints())
-        if (b < C - tiny) breaks_.push_back(b);
-    } else {
-      // The arc holding the crown from the right, reversed and mirrored (as MirroredCurve mirrors arcs).
-      for (const CircularArc& a : arcs)
-        if (a.s_start + a.length > C + tiny) {
-          const CurvePoint end = mirror(point_on_arc(a, a.length), 2.0 * crown_x_);
-          end_arc_ = CircularArc{whole_length_ - (a.s_start + a.length), a.length, end.x, end.y, end.theta, a.kappa};
-          break;
-        }
-      if (end_arc_) {
-        crown_ = point_on_arc(*end_arc_, S_ - end_arc_->s_start);
-      } else {
-        // The tangent just past a kink (a curve without arcs gives only the left one at the crown itself).
-        const CurvePoint past = curve.at(std::min(C + 1e-10 * whole_length_, whole_length_));
-        crown_ = {crown_x_, crown.y, -past.theta, past.kappa};
-      }
-      crown_.x = crown_x_;
-      crown_.y = crown.y;
-      const std::vector<double> b = curve.breakpoints();
-      for (auto it = b.rbegin(); it != b.rend(); ++it)
-        if (*it > C + tiny) breaks_.push_back(whole_length_ - *it);
-    }
-    breaks_.push_back(S_);
-  }
-
-  double length() const { return S_; }         // m, springing to crown
-  double crown_x() const { return crown_x_; }  // m, in the view's (and the curve's) coordinates
-  // The axis' point at arc length s from this side's springing (continued beyond the crown).
-  CurvePoint at(double s) const {
-    if (right_ ? s < S_ : s <= S_) return right_ ? mirror(curve_.at(whole_length_ - s), 2.0 * crown_x_) : curve_.at(s);
-    if (end_arc_) return point_on_arc(*end_arc_, s - end_arc_->s_start);
-    return {crown_.x + (s - S_) * std::cos(crown_.theta), crown_.y + (s - S_) * std::sin(crown_.theta), crown_.theta, 0.0};
-  }
-  // Interior breakpoints of the side and the crown, ascending: where the faces' integrands are not smooth.
-  const std::vector<double>& breaks() const { return breaks_; }
-  // The curve's coordinates of a view's abscissa, and the whole arch's arc length of a view's.
-  double curve_x(double x) const { return right_ ? 2.0 * crown_x_ - x : x; }
-  // The moment about the curve's origin (sum of F curve_x(x)) of forces with total `force` and moment
-  // `moment` about the view's origin.
-  double curve_moment(double force, double moment) const { return right_ ? 2.0 * crown_x_ * force - moment : moment; }
-  double whole_s(double s) const { return right_ ? whole_length_ - s : s; }
-
- private:
-  const Curve& curve_;
-  bool right_;
-  double whole_length_ = 0, S_ = 0, crown_x_ = 0;
-  CurvePoint crown_;  // the crown with this side's tangent
-  std::optional<CircularArc> end_arc_;
-  std::vector<double> breaks_;
-};
-
-// A point of the line at signed distance n from the axis (n > 0 towards the extrados), at arc length s
-// of a side, and its derivative d/ds.
-struct FacePoint {
-  Eigen::Vector2d p, dp;
-};
-
-FacePoint offset(const CurvePoint& q, double n) {
-  const Eigen::Vector2d tangent(std::cos(q.theta), std::sin(q.theta));
-  const Eigen::Vector2d normal(-tangent.y(), tangent.x());  // towards the extrados
-  // d(P + n normal)/ds = tangent (1 - n kappa): d normal/ds = -kappa tangent.
-  return {Eigen::Vector2d(q.x, q.y) + n * normal, (1.0 - n * q.kappa) * tangent};
-}
-
-FacePoint face_at(const SideView& side, double n, double s) { return offset(side.at(s), n); }
-
-// The arc length s in [lo, hi] where the face at n reaches abscissa x. x grows with s on every face of
-// a valid ring (dx/ds = cos theta (1 - n kappa) >= 0), so a safeguarded Newton iteration converges.
-double face_at_x(const SideView& side, double n, double x, double lo, double hi, double span) {
-  double s = 0.5 * (lo + hi);
-  for (int it = 0; it < 100; ++it) {
-    const FacePoint f = face_at(side, n, s);
-    const double r = f.p.x() - x;
-    if (r > 0) hi = s; else lo = s;
-    if (std::abs(r) <= 1e-15 * span || hi - lo <= 1e-15 * span) break;
-    const double newton = f.dp.x() > 0 ? s - r / f.dp.x() : 0.5 * (lo + hi);
-    s = (newton > lo && newton < hi) ? newton : 0.5 * (lo + hi);
-  }
-  return s;
-}
 
 // The integral of f from a to b (either order) by the 8-point rule, piece by piece between the knots
 // (ascending) that lie strictly between a and b, where f is smooth.
@@ -192,14 +90,17 @@ struct SideRing {
 };
 
 // The fill's load on the stretch of a side between arc lengths a < b of the line at offset n (the
-// extrados, n = t/2, or the axis, n = 0) that lies over the span (x >= x_min, the side's springing),
-// as a force and its moment about the side's origin: int rho_f g max(0, h_f - y_e) dx. On the axis
-// y_e = y + t / (2 cos theta), integrated as max(0, (h_f - y) cos theta - t/2) per axis length (finite
-// at a vertical springing). The integrand's kink where the fill's level meets y_e is a knot.
-VerticalLoad fill_load(const SideView& side, const FillLoad& fill, double gravity, double thickness, double n,
-                       double x_min, double a, double b, double span) {
-  const double level = fill.height_ratio * span, half_t = 0.5 * thickness, unit_weight = fill.density * gravity;
+// extrados, n = t/2, or the axis, n = 0) that lies over the span (x >= x_min, the side's springing), as
+// a force and its moment about the side's origin: int rho_f g max(0, h_f - y_e(x)) dx, y_e(x) the height
+// of the true extrados over x. Along the extrados that is its own y; along the axis, the extrados' height
+// over the axis point's x, integrated as max(0, h_f - y_e(x)) cos theta per axis length (finite at a
+// vertical springing), and only where the extrados lies over the axis point (none over the bed's outer
+// end's x at an overhanging springing). The integrand's kink where the fill's level meets y_e is a knot.
+VerticalLoad fill_load(const SideView& side, const SideExtrados& extrados, const FillLoad& fill, double gravity,
+                       double n, double x_min, double a, double b, double span) {
+  const double level = fill.height_ratio * span, unit_weight = fill.density * gravity;
   if (!(unit_weight > 0) || !(b > a)) return {};
+  if (n == 0.0) x_min = std::max(x_min, extrados.x_begin());
   if (face_at(side, n, b).p.x() <= x_min) return {};
   if (face_at(side, n, a).p.x() < x_min) a = face_at_x(side, n, x_min, a, b, span);
   // (h_f - y_e) dx/ds: its sign is that of the fill's depth (dx/ds >= 0), its positive part the load.
@@ -207,7 +108,7 @@ VerticalLoad fill_load(const SideView& side, const FillLoad& fill, double gravit
     if (n == 0.0) {
       const CurvePoint q = side.at(s);
       if (point) *point = {q.x, q.y};
-      return (level - q.y) * std::cos(q.theta) - half_t;
+      return (level - extrados.height(q.x, s)) * std::cos(q.theta);
     }
     const FacePoint f = face_at(side, n, s);
     if (point) *point = f.p;
@@ -227,7 +128,15 @@ VerticalLoad fill_load(const SideView& side, const FillLoad& fill, double gravit
     if (to < b) knots.push_back(to);
     from = to;
   };
-  for (double k : side.breaks())
+  // Where the integrand is not smooth: the side's breaks and, along the axis, the axis points under the
+  // extrados' breaks.
+  std::vector<double> breaks = side.breaks();
+  if (n == 0.0)
+    for (double x : extrados.break_x())
+      if (x > face_at(side, 0.0, a).p.x() && x < face_at(side, 0.0, b).p.x())
+        breaks.push_back(face_at_x(side, 0.0, x, a, b, span));
+  std::sort(breaks.begin(), breaks.end());
+  for (double k : breaks)
     if (k > a && k < b) add_root(k);
   add_root(b);
   const Eigen::Vector2d load = integral_between_knots<Eigen::Vector2d>(knots, a, b, [&](double s) {
@@ -247,14 +156,8 @@ struct CrownEnds {
 
 CrownEnds crown_ends(const SideView& side, double thickness, double span) {
   const double S = side.length(), half_t = 0.5 * thickness, xc = side.crown_x();
-  CrownEnds e{S, S};
-  if (side.at(S).theta > 1e-12) {  // pointed
-    e.intrados = face_at_x(side, -half_t, xc, 0.0, S, span);
-    double hi = S + thickness;
-    while (face_at(side, half_t, hi).p.x() < xc) hi = S + 2.0 * (hi - S);
-    e.extrados = face_at_x(side, half_t, xc, S, hi, span);
-  }
-  return e;
+  const bool pointed = side.at(S).theta > 1e-12;
+  return {pointed ? face_at_x(side, -half_t, xc, 0.0, S, span) : S, SideExtrados(side, thickness, span).s_crown()};
 }
 
 // The joints and voussoirs of one side, with their self-weight and fill: the springing bed, a joint at
@@ -264,8 +167,9 @@ SideRing make_side(const SideView& side, double thickness, double unit_weight, c
                    double gravity, const LimitOptions& options, const std::vector<double>& fractions, double span) {
   const double S = side.length(), half_t = 0.5 * thickness, xc = side.crown_x();
   const int m = static_cast<int>(fractions.size()) + 1;  // voussoirs per side
-  const CrownEnds ends = crown_ends(side, thickness, span);
-  const double s_intrados_crown = ends.intrados, s_extrados_crown = ends.extrados;
+  const SideExtrados extrados(side, thickness, span);
+  const double s_extrados_crown = extrados.s_crown();
+  const double s_intrados_crown = side.at(S).theta > 1e-12 ? face_at_x(side, -half_t, xc, 0.0, S, span) : S;
 
   auto make_joint = [&](double s_in, double s_ex, double s_axis) {
     SideJoint h;
@@ -328,9 +232,9 @@ SideRing make_side(const SideView& side, double thickness, double unit_weight, c
     // axis model (the elastic model's convention).
     for (const FillLoad& f : fills) {
       if (options.weight == WeightModel::voussoir)
-        v.fill += fill_load(side, f, gravity, thickness, half_t, x_min, a.s_extrados, b.s_extrados, span);
+        v.fill += fill_load(side, extrados, f, gravity, half_t, x_min, a.s_extrados, b.s_extrados, span);
       else
-        v.fill += fill_load(side, f, gravity, thickness, 0.0, x_min, a.s_axis, b.s_axis, span);
+        v.fill += fill_load(side, extrados, f, gravity, 0.0, x_min, a.s_axis, b.s_axis, span);
     }
   }
   return out;

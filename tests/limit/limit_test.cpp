@@ -11,6 +11,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ogive/limit/limit.hpp"
@@ -353,9 +354,13 @@ TEST_CASE("limit: the fill's weight is the integral of rho_f g (h_f - y_extrados
   };
   for (double h : {0.7 * L, 0.4 * L}) {
     CAPTURE(h);
-    for (JointOrientation j : {JointOrientation::radial, JointOrientation::vertical}) {
+    // Both weight models carry the fill of the true extrados: over its stretches, or over the axis'.
+    for (auto [j, w] : {std::pair{JointOrientation::radial, WeightModel::voussoir},
+                        std::pair{JointOrientation::vertical, WeightModel::voussoir},
+                        std::pair{JointOrientation::radial, WeightModel::axis}}) {
       LimitOptions o;
       o.joints = j;
+      o.weight = w;
       Scene scene = paper_scene(0.0, t / L);
       scene.loads.fills.push_back({rho_f, h / L});
       const Ring ring = make_ring(scene, o);
