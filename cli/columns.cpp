@@ -54,7 +54,7 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"method", "", "method that produced the numbers (closed-form, shooting, multiple-shooting)"},
     {"integrator", "", "CVODE's method (adams, bdf); empty for the closed form"},
     {"rtol", "", "relative error asked (--rtol); success guarantees it"},
-    {"status", "", "success, or why not (README: What status promises); limit: success, inadmissible, not_converged or lp_failure"},
+    {"status", "", "success, or why not (docs/cli.md: What status promises); limit: success, inadmissible, not_converged or lp_failure"},
     {"domain", "", "the model solved: half (a symmetric scene, the right half by symmetry) or whole (springing to springing)"},
     {"H", "N/m", "horizontal reaction H_left: inward push of the left support on the arch, per metre of vault (limit --thrust-line: of that state)"},
     {"V", "N/m", "vertical reaction V_left of the left support (half the total vertical load of a symmetric scene); limit: half the total vertical load, (V_left + V_right) / 2, the live load at factor 1; per metre of vault"},

@@ -174,7 +174,7 @@ TEST_CASE("cli: --version names the project version, bare ogive prints the help 
   const Run bare = run_command({});
   CHECK(bare.status == 2);
   CHECK(bare.out.empty());
-  for (const char* sub : {"thrust", "profile", "check", "curve", "bench", "draw", "docs/model.md"})
+  for (const char* sub : {"thrust", "profile", "check", "curve", "bench", "draw", "docs/cli.md", "docs/model.md"})
     CHECK(bare.err.find(sub) != std::string::npos);
 }
 
