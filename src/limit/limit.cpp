@@ -19,6 +19,9 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
+// The thinnest arch the search for t_min tries, relative to the span.
+constexpr double kThinnestResolved = 1e-6;
+
 // The relative width of the bracket on t at which the root-finder stops.
 constexpr double kThicknessTolerance = 1e-10;
 
@@ -312,7 +315,9 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   double lo = t, f_lo = margin.margin, hi = t, f_hi = margin.margin;
   bool bracketed = false;
   if (admissible) {
-    for (int i = 0; i < 60 && !f.failed; ++i) {
+    // Below kThinnestResolved L the margin is at the LP's tolerance: an arch that stands that thin (a
+    // funicular one) gets no t_min, and says so, rather than a number of round-off.
+    for (int i = 0; i < 60 && !f.failed && 0.5 * hi >= kThinnestResolved * curve.span(); ++i) {
       lo = 0.5 * hi;
       f_lo = f(lo);
       if (f_lo < 0) {

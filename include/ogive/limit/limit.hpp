@@ -203,7 +203,8 @@ struct LimitResult {
   ThrustState min_state;  // the smallest H (the arch pushes least: the state a spreading support reaches)
   ThrustState max_state;  // the largest H; absent (with a message) when H is unbounded: a flat, thick
                           // arch holds a straight thrust line of any H (infinite compressive strength)
-  double thickness_min = std::numeric_limits<double>::quiet_NaN();  // t_min, m, same axis and loads
+  double thickness_min = std::numeric_limits<double>::quiet_NaN();  // t_min, m, same axis and loads; NaN
+                                                                   // (with a message) below 1e-6 of the span
   // With a live load: the largest multiplier of the live load that the arch carries (dead loads
   // times 1), its state with the collapse mechanism's hinges, and the kinematic multiplier of the same
   // hinges by virtual work (mechanism_load_factor); absent without a live load, or when the arch cannot
