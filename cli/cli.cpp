@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <exception>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -58,18 +59,37 @@ std::string parse_error_line(CLI::App& app, const std::vector<std::string>& args
   return "ogive: " + what + hint + "\n";
 }
 
-// -1 when the command line parsed, else the exit status (help and version print and exit 0).
+// Help or version: refused with status 2 when the command line holds arguments nobody takes (CLI11
+// reports those only after help), else printed on out with status 0, or 4 when out cannot be written.
+int print_help_or_version(CLI::App& app, const std::vector<std::string>& args, const CLI::ParseError& e,
+                          std::ostream& out, std::ostream& err) {
+  if (const std::vector<std::string> extras = app.remaining(true); !extras.empty()) {
+    err << parse_error_line(app, args, CLI::ExtrasError(extras));
+    return kExitUsage;
+  }
+  std::ostringstream text;
+  const int status = app.exit(e, text, err);
+  try {
+    write_all(out, text.str());
+  } catch (const OutputError& failed) {
+    err << "ogive: " << failed.what() << "\n";
+    return kExitOutput;
+  }
+  return status;
+}
+
+// -1 when the command line parsed, else the exit status.
 int parse(CLI::App& app, const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   std::vector<const char*> argv{"ogive"};
   for (const std::string& a : args) argv.push_back(a.c_str());
   try {
     app.parse(static_cast<int>(argv.size()), argv.data());
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e, out, err);
+    return print_help_or_version(app, args, e, out, err);
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e, out, err);
+    return print_help_or_version(app, args, e, out, err);
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e, out, err);
+    return print_help_or_version(app, args, e, out, err);
   } catch (const CLI::ParseError& e) {
     err << parse_error_line(app, args, e);
     return kExitUsage;

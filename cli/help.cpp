@@ -12,8 +12,9 @@ void add_help_texts(CLI::App& app) {
       "Units are SI: m, Pa, kg/m^3, m/s^2; forces per metre of vault length (N/m). Every numeric scene option\n"
       "takes a value, a list a,b,c or a range start:stop:count; several give their cartesian product.\n"
       "Output: CSV on stdout, an empty field for no number; exit 0 every row solved (status success),\n"
-      "3 some row not, 2 bad input (one line on stderr), 1 internal error. The model, the sign conventions\n"
-      "and every output column: docs/model.md. `ogive SUBCOMMAND --help` lists a subcommand's options.");
+      "3 some row not, 2 bad input (one line on stderr), 4 the output could not be written, 1 internal error.\n"
+      "Options, statuses and every output column: docs/cli.md; the model and its sign conventions:\n"
+      "docs/model.md. `ogive SUBCOMMAND --help` lists a subcommand's options.");
   const std::map<std::string, std::string> examples = {
       {"thrust",
        "  ogive thrust --eccentricity 0:1:11                      # the paper's Figure 8, H/V against eccentricity\n"
@@ -39,7 +40,7 @@ void add_help_texts(CLI::App& app) {
   };
   for (CLI::App* sub : app.get_subcommands({})) {
     const auto it = examples.find(sub->get_name());
-    if (it != examples.end()) sub->footer("Examples:\n" + it->second + "\nUnits, output columns, signs: docs/model.md.");
+    if (it != examples.end()) sub->footer("Examples:\n" + it->second + "\nUnits and output columns: docs/cli.md; signs: docs/model.md.");
   }
 }
 

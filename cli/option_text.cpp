@@ -29,6 +29,11 @@ std::string as_option_message(const std::string& what) {
   return flag + what.substr(colon);
 }
 
+void refuse_empty_name(const CLI::App& cmd, const char* flag, const std::string& value, const char* what) {
+  if (value.empty() && cmd.count(flag) > 0)
+    throw UsageError(fmt::format("{}: the name must not be empty (give {})", flag, what));
+}
+
 std::string did_you_mean(const std::string& name, const std::vector<std::string>& candidates) {
   if (name.size() > 100) return "";
   std::size_t best = std::string::npos, best_distance = 3;

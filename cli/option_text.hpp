@@ -11,6 +11,7 @@
 #include "values.hpp"
 
 namespace CLI {
+class App;
 class Validator;
 }
 
@@ -35,6 +36,10 @@ std::string as_option_message(const std::string& what);
 
 // " (did you mean 'x'?)" for the candidate closest to a misspelt name (edit distance at most 2), or "".
 std::string did_you_mean(const std::string& name, const std::vector<std::string>& candidates);
+
+// A file or directory option given as "": UsageError naming it (rather than read as not given);
+// `what` says what the option takes, e.g. "a file, or - for standard input".
+void refuse_empty_name(const CLI::App& cmd, const char* flag, const std::string& value, const char* what);
 
 // CLI11 would read "" as 0 and saturate huge integers: numeric options must be what parse_number
 // accepts (the whole text, finite), and counts whole numbers within what an int holds.

@@ -140,7 +140,7 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_flag("--crown-hinge", o.crown_hinge,
                "a hinge at the crown (M = 0): the three-hinged arch with --supports pinned");
   cmd.add_option("--loads-file", o.loads_file,
-                 "CSV of loads, header kind,value,a,b: point,P,a, | live,q,a,b | fill,rho_f,h_f/L, (README: Loads)");
+                 "CSV of loads, header kind,value,a,b: point,P,a, | live,q,a,b | fill,rho_f,h_f/L, (docs/file-formats.md)");
 }
 
 }  // namespace ogive::cli

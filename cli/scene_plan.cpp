@@ -89,6 +89,8 @@ Loads read_loads(const SceneOptions& o) {
 
 ScenePlan::ScenePlan(SceneOptions& o, const CLI::App& cmd) : options_(o) {
   // In this order, so that the problem reported is the same one when several are.
+  refuse_empty_name(cmd, "--curve-file", o.curve_file, "a file, or - for standard input");
+  refuse_empty_name(cmd, "--loads-file", o.loads_file, "a file, or - for standard input");
   family_ = &find_family(o.curve);
   refuse_inapplicable(*family_, o.curve, cmd);
   if (family_->file) o.points = read_points(o);

@@ -39,16 +39,20 @@ bool scene_rows(const ScenePlan& plan, const Columns& columns, const SceneRows& 
 // Scenes solved in parallel (each thread keeps its own SUNDIALS objects) and written in order: a
 // worker takes the next chunk of consecutive scenes (so that locking costs little against scenes of a
 // few microseconds) only while it lies within a window of 4 x threads chunks of the next one to be
-// written, so memory stays bounded and the output is byte-identical to one thread's.
+// written, so the output is byte-identical to one thread's. A chunk holds at most kChunkRows rows, so
+// what waits in the window stays within 5 x threads x kChunkRows rows whatever the sweep.
 class OrderedSweep {
  public:
   using OneScene = std::function<bool(std::size_t index, const Emit& emit)>;
 
-  OrderedSweep(std::size_t scenes, int threads, OneScene one)
+  OrderedSweep(std::size_t scenes, int threads, std::size_t rows_per_scene, OneScene one)
       : n_(scenes),
         threads_(threads),
-        // Chunks of up to 128 scenes, but at least 16 per thread so that a short sweep is shared out too.
-        chunk_(std::clamp<std::size_t>(scenes / (16 * static_cast<std::size_t>(threads)), 1, 128)),
+        // Chunks of up to 128 scenes and kChunkRows rows, but at least 16 per thread so that a short
+        // sweep is shared out too.
+        chunk_(std::clamp<std::size_t>(scenes / (16 * static_cast<std::size_t>(threads)), 1,
+                                       std::clamp<std::size_t>(kChunkRows / std::max<std::size_t>(rows_per_scene, 1),
+                                                               1, 128))),
         chunks_((scenes + chunk_ - 1) / chunk_),
         window_(4 * static_cast<std::size_t>(threads)),
         slots_(window_),
@@ -153,17 +157,17 @@ bool OrderedSweep::run(RowWriter& writer) {
 }  // namespace
 
 bool write_scenes(const ScenePlan& plan, const Columns& columns, std::ostream& out, int threads,
-                  const SceneRows& rows_of) {
+                  const SceneRows& rows_of, std::size_t rows_per_scene) {
   RowWriter writer(out);
   writer.write(columns.header());
   const auto one = [&](std::size_t i, const Emit& emit) { return scene_rows(plan, columns, rows_of, i, emit); };
   const std::size_t n = plan.size();
   bool all_ok = true;
-  if (threads <= 1 || n <= 1) {
+  if (threads <= 1 || n <= 1 || rows_per_scene > kChunkRows) {
     const Emit to_writer = [&](const std::string& text) { writer.write(text); };
     for (std::size_t i = 0; i < n; ++i) all_ok = one(i, to_writer) && all_ok;
   } else {
-    all_ok = OrderedSweep(n, threads, one).run(writer);
+    all_ok = OrderedSweep(n, threads, rows_per_scene, one).run(writer);
   }
   writer.flush();
   return all_ok;

@@ -26,8 +26,11 @@ using SceneRows = std::function<bool(const SceneParameters&, const Scene&, const
 
 // Writes the header, then every scene of the plan in order: a valid scene's rows by rows_of, an
 // impossible one's as a row of status invalid_scene. Returns whether every scene's rows succeeded.
+// rows_per_scene, the rows a scene emits at most, bounds what waits to be written when threads > 1:
+// scenes of more than kChunkRows rows are written one after another on one thread.
+inline constexpr std::size_t kChunkRows = 4096;
 bool write_scenes(const ScenePlan& plan, const Columns& columns, std::ostream& out, int threads,
-                  const SceneRows& rows_of);
+                  const SceneRows& rows_of, std::size_t rows_per_scene = 1);
 
 // --threads: scenes solved in parallel; `threads` becomes its default, every core.
 void add_threads_option(CLI::App& cmd, int& threads);

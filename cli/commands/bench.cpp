@@ -47,10 +47,15 @@ Columns bench_columns() {
 
 constexpr int kBenchProfileStations = 41;
 
+struct BenchRow {
+  std::string text;
+  bool ok;  // status success
+};
+
 // One combination's row: the median time of `repeats` solves, then the profile's error from the same
 // solve with stations, outside the timing.
-std::string bench_row(const Columns& columns, const SceneParameters& p, const Scene& scene, const Options& o,
-                      bool exact, const Solution& reference, int repeats) {
+BenchRow bench_row(const Columns& columns, const SceneParameters& p, const Scene& scene, const Options& o,
+                   bool exact, const Solution& reference, int repeats) {
   std::vector<double> seconds;
   Solution sol;
   for (int r = 0; r < repeats; ++r) {
@@ -77,7 +82,7 @@ std::string bench_row(const Columns& columns, const SceneParameters& p, const Sc
   row.add(reference_error(reference));
   row.add(seconds[repeats / 2]).add(sol.diagnostics.steps).add(sol.diagnostics.rhs_evaluations);
   row.add(sol.diagnostics.condition_estimate).add(judged.message);
-  return row.take();
+  return {row.take(), judged.ok()};
 }
 
 int run_bench(BenchOptions& bo, const CLI::App& cmd, std::ostream& out) {
@@ -99,25 +104,31 @@ int run_bench(BenchOptions& bo, const CLI::App& cmd, std::ostream& out) {
   for (const Options& o : sweep.combinations) ref_options.rtol = std::min(ref_options.rtol, o.rtol);
   ref_options.stations = kBenchProfileStations;
   columns.select(bo.columns, plan.varying_inputs());
-  write_scenes(plan, columns, out, 1,  // one thread: the timings are the point
-               [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
-                 const Solution reference = reference_solution(scene, ref_options);
-                 // The reference is the closed form exactly where it applies (a piecewise-circular curve,
-                 // the elastic section, no live load or fill).
-                 const bool closed_form_applies = reference.method == Method::closed_form;
-                 for (const Options& o : sweep.combinations) {
-                   const Method m = o.method;
-                   if (m == Method::closed_form && !closed_form_applies) continue;  // not applicable
-                   // The closed form has neither integrator nor tolerance; auto where it applies is the
-                   // closed form: one row, not one per integrator and rtol.
-                   const bool exact = m == Method::closed_form || (m == Method::automatic && closed_form_applies);
-                   if (exact && (o.integrator != first.integrator || o.rtol != first.rtol)) continue;
-                   if (m == Method::quadrature && o.integrator != first.integrator) continue;  // no integrator
-                   emit(bench_row(columns, p, scene, o, exact, reference, repeats));
-                 }
-                 return true;
-               });
-  return kExitOk;
+  // Exit status 3 when a row failed, as every other command: a script must not take a failed method's
+  // row for a timing.
+  const bool all_ok = write_scenes(
+      plan, columns, out, 1,  // one thread: the timings are the point
+      [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
+        const Solution reference = reference_solution(scene, ref_options);
+        // The reference is the closed form exactly where it applies (a piecewise-circular curve,
+        // the elastic section, no live load or fill).
+        const bool closed_form_applies = reference.method == Method::closed_form;
+        bool rows_ok = true;
+        for (const Options& o : sweep.combinations) {
+          const Method m = o.method;
+          if (m == Method::closed_form && !closed_form_applies) continue;  // not applicable
+          // The closed form has neither integrator nor tolerance; auto where it applies is the
+          // closed form: one row, not one per integrator and rtol.
+          const bool exact = m == Method::closed_form || (m == Method::automatic && closed_form_applies);
+          if (exact && (o.integrator != first.integrator || o.rtol != first.rtol)) continue;
+          if (m == Method::quadrature && o.integrator != first.integrator) continue;  // no integrator
+          const BenchRow row = bench_row(columns, p, scene, o, exact, reference, repeats);
+          emit(row.text);
+          rows_ok = row.ok && rows_ok;
+        }
+        return rows_ok;
+      });
+  return all_ok ? kExitOk : kExitNotConverged;
 }
 
 }  // namespace

@@ -63,7 +63,8 @@ int run_curve(CurveOptions& co, const CLI::App& cmd, std::ostream& out) {
         }
         emit(text);
         return true;
-      });
+      },
+      static_cast<std::size_t>(stations));
   return all_ok ? kExitOk : kExitNotConverged;
 }
 

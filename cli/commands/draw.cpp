@@ -101,16 +101,45 @@ std::string draw_file_name(const SceneParameters& p, const SceneOptions& so) {
 }
 
 // Refuses, before anything is solved or printed, a target that cannot be written: a directory where a
-// file should be, a missing directory, a file that cannot be opened for writing.
+// file should be, a missing directory, a file that cannot be opened for writing. Leaves no file behind:
+// a scene that turns out invalid is not drawn, and its file must not appear.
 void check_writable(const std::string& path, const char* flag) {
   if (path.find_first_of(",\r\n") != std::string::npos)
     throw UsageError(fmt::format("{}: the path must not contain a comma or a line break (it is printed in the CSV)", flag));
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw UsageError(fmt::format("{}: '{}' is a directory, not a file", flag, path));
+  const bool existed = std::filesystem::exists(path, ec);
   // Appending creates the file if needed and leaves an existing one as it is until it is drawn.
   std::ofstream probe(path, std::ios::app);
   if (!probe) throw UsageError(fmt::format("{}: cannot write '{}': {}", flag, path, std::strerror(errno)));
+  probe.close();
+  if (!existed) std::filesystem::remove(path, ec);
+}
+
+// The drawing into `path` whole or not at all: written to a temporary file beside it, which replaces
+// `path` once complete and is removed when a write fails (a full disk leaves no partial picture).
+// Anything but a plain file or a new name (a symlink, /dev/stdout, a named pipe) is written in place:
+// replacing it would replace the link or the device itself.
+void write_drawing(const std::string& path, const std::string& svg) {
+  std::error_code ec;
+  const std::filesystem::file_status target = std::filesystem::symlink_status(path, ec);
+  const bool in_place = std::filesystem::exists(target) && !std::filesystem::is_regular_file(target);
+  const std::string part = in_place ? path : path + ".part";
+  std::ofstream file(part, std::ios::trunc);
+  file << svg;
+  file.close();
+  if (!file) {
+    const int code = errno;
+    if (!in_place) std::filesystem::remove(part, ec);
+    throw OutputError(fmt::format("cannot write {}: {}", path, std::strerror(code)));
+  }
+  if (in_place) return;
+  std::filesystem::rename(part, path, ec);
+  if (ec) {
+    std::filesystem::remove(part, ec);
+    throw OutputError(fmt::format("cannot write {}: {}", path, ec.message()));
+  }
 }
 
 // The file each scene of the plan is drawn into, each checked writable.
@@ -152,6 +181,11 @@ int run_draw(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
   const DrawTargets& to = d.targets;
   check_stations(o.stations);
   check_options(o);
+  refuse_empty_name(cmd, "--output", to.output, "a file name ending in .svg");
+  refuse_empty_name(cmd, "--output-dir", to.output_dir, "an existing directory, . for the current one");
+  // Standard output carries the CSV rows, one per drawing: a picture cannot go there too.
+  if (to.output == "-")
+    throw UsageError("--output: - (standard output) is refused: standard output carries the CSV row; give a file name");
   if (to.output.empty() == to.output_dir.empty())
     throw UsageError(to.output.empty() ? "--output: draw needs --output FILE.svg (one scene) or --output-dir DIR "
                                          "(one file per scene)"
@@ -172,10 +206,7 @@ int run_draw(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
         drawing.title = draw_title(p);
         if (to.limit) drawing.extra_lines = limit_lines(scene);
         const std::string& path = files[p.scene - 1];
-        std::ofstream file(path, std::ios::trunc);
-        file << arch_svg(scene, sol, drawing);
-        file.close();
-        if (!file) throw OutputError(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
+        write_drawing(path, arch_svg(scene, sol, drawing));
         CsvRow row(columns.keep());
         add_scene_columns(row, p, scene.curve.get());
         row.add(to_string(sol.method)).add(to_string(sol.status)).add(sol.H).add(sol.V).add(sol.H_over_V);

@@ -167,8 +167,7 @@ std::string joint_rows(const Columns& columns, const SceneParameters& p, const S
     return row.take();
   }
   row.mark();
-  // Rebuild the ring the state belongs to (the same options give the same joints).
-  const Ring ring = make_ring(*scene.curve, scene.thickness, scene.material.density * scene.material.gravity, o);
+  const Ring& ring = r.ring;  // the ring the state belongs to
   std::string text;
   for (std::size_t j = 0; j < ring.joints.size(); ++j) {
     const Joint& joint = ring.joints[j];
@@ -183,7 +182,8 @@ std::string joint_rows(const Columns& columns, const SceneParameters& p, const S
 }
 
 // Exit 0 when every scene has an answer (success, or inadmissible: an arch that cannot stand is an
-// answer, not a failure), 3 when an LP failed or a scene could not be made.
+// answer, not a failure), 3 when an LP failed, the joints' refinement did not converge or a scene could
+// not be made.
 int run_limit(LimitCommandOptions& lo, const CLI::App& cmd, std::ostream& out) {
   const LimitText& text = lo.text;
   const bool lines = !text.thrust_line.empty(), timed = text.repeats > 0;
@@ -207,7 +207,7 @@ int run_limit(LimitCommandOptions& lo, const CLI::App& cmd, std::ostream& out) {
         const LimitResult r = analyse_timed(scene, o, text.repeats, &median_seconds);
         emit(lines ? joint_rows(columns, p, scene, o, r, text.thrust_line)
                    : summary_row(columns, p, scene, o, r, timed, median_seconds));
-        return r.status != LimitStatus::lp_failure;
+        return r.status == LimitStatus::success || r.status == LimitStatus::inadmissible;
       });
   return all_answered ? kExitOk : kExitNotConverged;
 }

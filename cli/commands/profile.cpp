@@ -117,12 +117,12 @@ int run_profile(ProfileOptions& po, const CLI::App& cmd, std::ostream& out) {
   columns.select(po.columns, plan.varying_inputs(), sweep.varying);
   // The solve verifies the profile at kVerificationStations at most (emit_stations samples the rest).
   for (Options& o : sweep.combinations) o.stations = std::min(stations, kVerificationStations);
-  // A scene's rows wait in the reorder window while other threads work: beyond one piece of stations
-  // per scene, scenes are solved one after another instead, to keep memory bounded. No-tension scenes
-  // are traced in order, each from the previous one (continuation): one thread.
+  // A scene's rows wait in the reorder window while other threads work: write_scenes bounds them by the
+  // rows a scene has (one thread beyond kChunkRows). No-tension scenes are traced in order, each from the
+  // previous one (continuation): one thread.
   const bool continued = plan.no_tension();
-  int threads = po.threads;
-  if (stations * sweep.combinations.size() > static_cast<std::size_t>(kProfilePiece) || continued) threads = 1;
+  const int threads = continued ? 1 : po.threads;
+  const std::size_t rows_per_scene = static_cast<std::size_t>(stations) * sweep.combinations.size();
   std::vector<Solution> previous(sweep.combinations.size());
   const bool all_ok =
       write_scenes(plan, columns, out, threads, [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
@@ -140,7 +140,8 @@ int run_profile(ProfileOptions& po, const CLI::App& cmd, std::ostream& out) {
           emit_stations(columns, p, scene, o, sol, stations, emit);
         }
         return ok;
-      });
+      },
+      rows_per_scene);
   return all_ok ? kExitOk : kExitNotConverged;
 }
 

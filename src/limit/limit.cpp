@@ -19,6 +19,9 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
+// The thinnest arch the search for t_min tries, relative to the span.
+constexpr double kThinnestResolved = 1e-6;
+
 // The relative width of the bracket on t at which the root-finder stops.
 constexpr double kThicknessTolerance = 1e-10;
 
@@ -26,27 +29,55 @@ constexpr double kThicknessTolerance = 1e-10;
 // negative number for the root-finder, which needs only the sign.
 constexpr double kNoMargin = -1.0;
 
+// The joints of the ring of thickness t: the refined fractions and those at the loads' edges, which
+// move with the faces as the thickness changes.
+std::vector<double> fractions_at(const Scene& scene, double t, const LimitOptions& options,
+                                 const std::vector<double>& refined) {
+  std::vector<double> f = refined;
+  const std::vector<double> at_loads = limit_detail::load_fractions(*scene.curve, t, scene.loads, options);
+  f.insert(f.end(), at_loads.begin(), at_loads.end());
+  return limit_detail::merged_fractions(std::move(f));
+}
+
+// A joint whose crossing lies this close to a face (relative to the joint) is a hinge of the thinnest
+// arch: at t_min the margin is zero to the root-finder's tolerance, not to round-off.
+constexpr double kThinnestHingeTolerance = 1e-6;
+
 // The feasibility margin of the arch of the same axis and loads with thickness t (see analyse_limit).
 struct MarginFunction {
   Scene scene;  // a copy whose thickness changes
   const LimitOptions& options;
+  const std::vector<double>& refined;
   double load_factor;
   int solves = 0;
   bool failed = false;
   std::vector<int> basis;  // the last margin's optimal basis: the next thickness starts from it
+  double feasible_t = std::numeric_limits<double>::infinity();
+  std::vector<double> feasible_refinement;  // around the hinges of the thinnest admissible arch so far
 
   double operator()(double t) {
     scene.thickness = t;
-    const Ring ring = make_ring(scene, options);
+    const Ring ring = limit_detail::make_ring_at(scene, options, fractions_at(scene, t, options, refined));
     LimitLp lp(ring, options.friction);
-    LimitLp::Answer a = lp.margin(load_factor, basis.empty() ? nullptr : &basis);
+    // A warm start needs the same joints (a load's joints can merge with others at some thickness).
+    const bool warm = !basis.empty() && basis_joints == static_cast<int>(ring.joints.size());
+    LimitLp::Answer a = lp.margin(load_factor, warm ? &basis : nullptr);
     solves += lp.solves();
     basis = std::move(a.basis);
+    basis_joints = static_cast<int>(ring.joints.size());
     // No margin at all (friction can forbid every thrust line, whatever mu): as inadmissible as it gets.
     if (a.outcome == LimitLp::Outcome::infeasible) return kNoMargin;
     if (a.outcome != LimitLp::Outcome::optimal) failed = true;
+    if (a.outcome == LimitLp::Outcome::optimal && a.margin >= 0 && t < feasible_t) {
+      feasible_t = t;
+      feasible_refinement.clear();
+      const ThrustState st = thrust_state(ring, a.H, a.V, a.M, a.load_factor, kThinnestHingeTolerance);
+      limit_detail::add_refinement(ring, st.hinges, feasible_refinement);
+    }
     return a.margin;
   }
+
+  int basis_joints = 0;  // the joints of the ring whose margin gave `basis`
 };
 
 // The smallest thickness with margin >= 0, from a bracket lo < hi with f(lo) < 0 <= f(hi): Illinois
@@ -84,6 +115,7 @@ const char* to_string(LimitStatus s) {
     case LimitStatus::success: return "success";
     case LimitStatus::inadmissible: return "inadmissible";
     case LimitStatus::lp_failure: return "lp_failure";
+    case LimitStatus::not_converged: return "not_converged";
   }
   return "unknown";
 }
@@ -182,11 +214,23 @@ double one_mechanism(const Ring& ring, const std::vector<Hinge>& h) {
 
 double mechanism_load_factor(const Ring& ring, const std::vector<Hinge>& hinges) {
   if (!ring.has_live_load() || hinges.size() < 3) return kNaN;
-  std::vector<Hinge> h = hinges;
-  std::sort(h.begin(), h.end(), [](const Hinge& a, const Hinge& b) { return a.joint < b.joint; });
-  for (std::size_t i = 1; i < h.size(); ++i)
-    if (h[i].joint == h[i - 1].joint) return kNaN;
-  if (h.size() <= 4) return one_mechanism(ring, h);
+  std::vector<Hinge> sorted = hinges;
+  std::sort(sorted.begin(), sorted.end(), [](const Hinge& a, const Hinge& b) { return a.joint < b.joint; });
+  for (std::size_t i = 1; i < sorted.size(); ++i)
+    if (sorted[i].joint == sorted[i - 1].joint) return kNaN;
+  if (sorted.size() <= 4) return one_mechanism(ring, sorted);
+  // A thrust line tangent to a face touches a run of consecutive joints on it (the finer the joints,
+  // the longer the run): the first, middle and last of each run stand for it.
+  std::vector<Hinge> h;
+  for (std::size_t i = 0; i < sorted.size();) {
+    std::size_t j = i + 1;
+    while (j < sorted.size() && sorted[j].joint == sorted[j - 1].joint + 1 && sorted[j].face == sorted[i].face) ++j;
+    h.push_back(sorted[i]);
+    if (j - i > 2) h.push_back(sorted[i + (j - i) / 2]);
+    if (j - i > 1) h.push_back(sorted[j - 1]);
+    i = j;
+  }
+  if (h.size() > kMaxMechanismHinges) return kNaN;
   // More hinges than a one-degree mechanism has (a degenerate optimum: e.g. the thrust line along an
   // intrados chord touches two adjacent joints): every admissible mechanism of four of them is an upper
   // bound (the kinematic theorem); the least is the multiplier of these hinges.
@@ -202,26 +246,34 @@ double mechanism_load_factor(const Ring& ring, const std::vector<Hinge>& hinges)
   return best;
 }
 
-LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
-  scene.validate();
-  std::string why;
-  if (!options.is_valid(&why)) throw std::invalid_argument(why);
+namespace {
+
+// One analysis on the ring whose joints are `refined` and the loads' (fractions_at), and where the next
+// ring should be finer: next to every hinge of its states and of the thinnest arch.
+struct Round {
+  LimitResult result;
+  std::vector<double> refinement;
+};
+
+Round analyse_round(const Scene& scene, const LimitOptions& options, const std::vector<double>& refined) {
   const Curve& curve = *scene.curve;
-  const Ring ring = make_ring(scene, options);
+  const Ring ring = limit_detail::make_ring_at(scene, options, fractions_at(scene, scene.thickness, options, refined));
+  Round round;
+  LimitResult& r = round.result;
+  r.ring = ring;
   if (!(ring.total_dead() != 0.0 || ring.has_live_load()))
     throw std::invalid_argument(
         "loads: the ring carries no load (density 0, and the fills lie below the extrados over the whole span)");
   const bool live = ring.has_live_load();
   const double load_factor = live ? 1.0 : 0.0;  // the H range and t_min: under the loads as given
 
-  LimitResult r;
   r.V = 0.5 * (ring.total_dead() + ring.total_live());
   LimitLp lp(ring, options.friction);
   auto fail = [&](const char* problem) {
     r.status = LimitStatus::lp_failure;
     r.message = fmt::format("the LP of {} stopped without an answer", problem);
     r.lp_solves += lp.solves();
-    return r;
+    return round;
   };
   auto state = [&](const LimitLp::Answer& a) { return thrust_state(ring, a.H, a.V, a.M, a.load_factor); };
 
@@ -256,13 +308,16 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
   r.lp_solves += lp.solves();
 
   // t_min: bracket the root of the margin, then Illinois.
-  MarginFunction f{scene, options, load_factor, 0, false, margin.basis};
+  MarginFunction f{scene,        options, refined, load_factor, 0, false, margin.basis,
+                   std::numeric_limits<double>::infinity(), {}, static_cast<int>(ring.joints.size())};
   const double t = scene.thickness;
   const double t_cap = 0.99 * max_thickness(curve);
   double lo = t, f_lo = margin.margin, hi = t, f_hi = margin.margin;
   bool bracketed = false;
   if (admissible) {
-    for (int i = 0; i < 60 && !f.failed; ++i) {
+    // Below kThinnestResolved L the margin is at the LP's tolerance: an arch that stands that thin (a
+    // funicular one) gets no t_min, and says so, rather than a number of round-off.
+    for (int i = 0; i < 60 && !f.failed && 0.5 * hi >= kThinnestResolved * curve.span(); ++i) {
       lo = 0.5 * hi;
       f_lo = f(lo);
       if (f_lo < 0) {
@@ -291,15 +346,19 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
   if (f.failed) {
     r.status = LimitStatus::lp_failure;
     r.message = "the LP of the feasibility margin stopped without an answer while searching t_min";
-    return r;
+    return round;
   }
+  for (const ThrustState* st : {&r.min_state, &r.max_state, &r.collapse_state})
+    limit_detail::add_refinement(ring, st->hinges, round.refinement);
+  if (!std::isnan(r.thickness_min))
+    round.refinement.insert(round.refinement.end(), f.feasible_refinement.begin(), f.feasible_refinement.end());
   if (!admissible) {
     r.status = LimitStatus::inadmissible;
     const char* where = options.friction > 0 ? "inside the arch and its joints' friction cones" : "inside the arch";
     r.message = std::isnan(r.thickness_min)
                     ? fmt::format("no thrust line fits {} at any thickness up to {} m", where, t_cap)
                     : fmt::format("no thrust line fits {}: t < t_min", where);
-    return r;
+    return round;
   }
   r.status = LimitStatus::success;
   if (!bracketed) r.message = fmt::format("t_min below {} m: not searched further", hi);
@@ -307,9 +366,75 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
   if (unbounded_thrust) note("no largest thrust: a thrust line of any H fits inside the arch (H_max absent)");
   if (live && std::isnan(r.load_factor()))
     note("the live load cannot turn the arch into a mechanism (no finite load factor)");
-  if (!std::isnan(r.load_factor()) && std::isnan(r.load_factor_mechanism))
-    note(options.friction > 0 ? "no rotational mechanism through the collapse hinges: joints slide at collapse"
-                              : "no one-degree rotational mechanism through the collapse hinges");
+  if (!std::isnan(r.load_factor()) && std::isnan(r.load_factor_mechanism)) {
+    if (r.collapse_state.hinges.size() > kMaxMechanismHinges)
+      note(fmt::format("the collapse state touches {} joints: the mechanism check takes at most {} hinges "
+                       "(a run of consecutive ones counting as three)",
+                       r.collapse_state.hinges.size(), kMaxMechanismHinges));
+    else
+      note(options.friction > 0 ? "no rotational mechanism through the collapse hinges: joints slide at collapse"
+                                : "no one-degree rotational mechanism through the collapse hinges");
+  }
+  return round;
+}
+
+// The largest relative change of a number between two results (NaN in one only: infinite).
+double largest_change(const LimitResult& a, const LimitResult& b) {
+  double worst = 0;
+  auto compare = [&](double x, double y) {
+    if (std::isnan(x) && std::isnan(y)) return;
+    if (std::isnan(x) != std::isnan(y)) {
+      worst = std::numeric_limits<double>::infinity();
+      return;
+    }
+    const double scale = std::max(std::abs(x), std::abs(y));
+    if (scale > 0) worst = std::max(worst, std::abs(x - y) / scale);
+  };
+  compare(a.H_min(), b.H_min());
+  compare(a.H_max(), b.H_max());
+  compare(a.thickness_min, b.thickness_min);
+  compare(a.load_factor(), b.load_factor());
+  compare(a.load_factor_mechanism, b.load_factor_mechanism);
+  return worst;
+}
+
+}  // namespace
+
+LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
+  scene.validate();
+  std::string why;
+  if (!options.is_valid(&why)) throw std::invalid_argument(why);
+  std::vector<double> refined = limit_detail::uniform_fractions(options.joints_count);
+  Round round = analyse_round(scene, options, refined);
+  int solves = round.result.lp_solves;
+  double change = std::numeric_limits<double>::infinity();
+  // Converged after two refinements in a row that moved no number by more than the tolerance: one alone
+  // can miss a hinge that lies beyond the joints it added (and then moves nothing).
+  int quiet = 0;
+  for (int k = 0; k < kMaxLimitRefinements && round.result.status != LimitStatus::lp_failure; ++k) {
+    // Nothing to refine around (no hinge anywhere): a finer ring gives the same numbers.
+    if (round.refinement.empty()) {
+      change = 0;
+      break;
+    }
+    refined.insert(refined.end(), round.refinement.begin(), round.refinement.end());
+    refined = limit_detail::merged_fractions(std::move(refined));
+    Round next = analyse_round(scene, options, refined);
+    solves += next.result.lp_solves;
+    change = next.result.status == LimitStatus::lp_failure ? change : largest_change(round.result, next.result);
+    round = std::move(next);
+    quiet = change <= kLimitTolerance ? quiet + 1 : 0;
+    if (quiet == 2) break;
+  }
+  LimitResult r = std::move(round.result);
+  r.lp_solves = solves;
+  if (r.status != LimitStatus::lp_failure && !(change <= kLimitTolerance && (quiet == 2 || change == 0))) {
+    r.status = LimitStatus::not_converged;
+    const std::string text = fmt::format("the numbers still moved by {:.3g} (relative) at the last of {} refinements "
+                                         "of the joints",
+                                         change, kMaxLimitRefinements);
+    r.message = r.message.empty() ? text : text + "; " + r.message;
+  }
   return r;
 }
 

@@ -16,6 +16,24 @@ struct LoadsLeftOfJoints {
 };
 LoadsLeftOfJoints loads_left_of_joints(const Ring& ring);
 
+// Joint fractions (Ring::joint_fractions): closer than this are one joint.
+inline constexpr double kFractionGap = 1e-9;
+// The fractions of a ring of joints_count equally spaced joints.
+std::vector<double> uniform_fractions(int joints_count);
+// The fractions of the joints at the loads' edges on both sides (make_ring(scene, ...) describes them)
+// of a ring of `curve` with thickness t; none for a thickness that does not fit the curve.
+std::vector<double> load_fractions(const Curve& curve, double thickness, const Loads& loads,
+                                   const LimitOptions& options);
+// uniform_fractions(options.joints_count) with the scene's load_fractions.
+std::vector<double> starting_fractions(const Scene& scene, const LimitOptions& options);
+// Sorted, strictly inside (0, 1), none within kFractionGap of the one before.
+std::vector<double> merged_fractions(std::vector<double> fractions);
+// Appends the fractions that halve the two voussoirs on each side of each hinge's joint (on both sides
+// of the ring: the fractions are shared).
+void add_refinement(const Ring& ring, const std::vector<Hinge>& hinges, std::vector<double>& out);
+// The ring of the scene (as make_ring) with its joints at `fractions` (as merged_fractions returns them).
+Ring make_ring_at(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions);
+
 // The linear programs of one ring and its loads. Unknowns: the thrust H, the left support's vertical
 // reaction V and moment M about the origin, the load factor lambda and the margin mu. Joint j carries
 // F_j = (H, V - D_j - lambda P_j) with moment m_j = M - MD_j - lambda MP_j about the origin; the

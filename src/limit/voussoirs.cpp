@@ -1,6 +1,7 @@
 // The ring of voussoirs: joints, and the weight of each voussoir with where it acts.
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <cmath>
 #include <optional>
 #include <utility>
@@ -9,115 +10,13 @@
 
 #include <fmt/format.h>
 
+#include "geometry/side_view.hpp"
 #include "numerics/gauss_legendre.hpp"
 #include "limit/limit_internal.hpp"
 #include "ogive/limit/limit.hpp"
 
 namespace ogive {
 namespace {
-
-// One side of the arch, springing to crown, seen as the left half of a symmetric arch: the left side
-// as it is, the right side run from its springing towards the crown and mirrored about the vertical
-// through the crown (x -> 2 x_c - x), so that one construction serves both sides of a whole curve; a half
-// curve has only its left side (the right is its mirror image about mid-span). Beyond the crown (s > S;
-// only the extrados of a pointed crown goes there, up to the crown's vertical) the side's axis is
-// continued: along its last arc for a piecewise-circular curve, otherwise along its tangent at the crown.
-class SideView {
- public:
-  SideView(const Curve& curve, bool right) : curve_(curve), right_(right) {
-    const bool whole = curve.extent() == CurveExtent::whole;
-    whole_length_ = curve.whole_length();
-    const double C = whole ? curve.crown() : curve.length();
-    const double tiny = 1e-12 * whole_length_;
-    S_ = right ? whole_length_ - C : C;
-    const CurvePoint crown = curve.at(C);  // from the left at a kink (Curve's contract)
-    crown_x_ = whole ? crown.x : 0.5 * curve.span();  // a half's crown is at mid-span (to round-off: exactly)
-    const auto arcs = curve.arcs();
-    if (!right) {
-      crown_ = crown;
-      for (const CircularArc& a : arcs)
-        if (a.s_start < C - tiny) end_arc_ = a;
-      for (double b : curve.breakpoints())
-        if (b < C - tiny) breaks_.push_back(b);
-    } else {
-      // The arc holding the crown from the right, reversed and mirrored (as MirroredCurve mirrors arcs).
-      for (const CircularArc& a : arcs)
-        if (a.s_start + a.length > C + tiny) {
-          const CurvePoint end = mirror(point_on_arc(a, a.length), 2.0 * crown_x_);
-          end_arc_ = CircularArc{whole_length_ - (a.s_start + a.length), a.length, end.x, end.y, end.theta, a.kappa};
-          break;
-        }
-      if (end_arc_) {
-        crown_ = point_on_arc(*end_arc_, S_ - end_arc_->s_start);
-      } else {
-        // The tangent just past a kink (a curve without arcs gives only the left one at the crown itself).
-        const CurvePoint past = curve.at(std::min(C + 1e-10 * whole_length_, whole_length_));
-        crown_ = {crown_x_, crown.y, -past.theta, past.kappa};
-      }
-      crown_.x = crown_x_;
-      crown_.y = crown.y;
-      const std::vector<double> b = curve.breakpoints();
-      for (auto it = b.rbegin(); it != b.rend(); ++it)
-        if (*it > C + tiny) breaks_.push_back(whole_length_ - *it);
-    }
-    breaks_.push_back(S_);
-  }
-
-  double length() const { return S_; }         // m, springing to crown
-  double crown_x() const { return crown_x_; }  // m, in the view's (and the curve's) coordinates
-  // The axis' point at arc length s from this side's springing (continued beyond the crown).
-  CurvePoint at(double s) const {
-    if (right_ ? s < S_ : s <= S_) return right_ ? mirror(curve_.at(whole_length_ - s), 2.0 * crown_x_) : curve_.at(s);
-    if (end_arc_) return point_on_arc(*end_arc_, s - end_arc_->s_start);
-    return {crown_.x + (s - S_) * std::cos(crown_.theta), crown_.y + (s - S_) * std::sin(crown_.theta), crown_.theta, 0.0};
-  }
-  // Interior breakpoints of the side and the crown, ascending: where the faces' integrands are not smooth.
-  const std::vector<double>& breaks() const { return breaks_; }
-  // The curve's coordinates of a view's abscissa, and the whole arch's arc length of a view's.
-  double curve_x(double x) const { return right_ ? 2.0 * crown_x_ - x : x; }
-  // The moment about the curve's origin (sum of F curve_x(x)) of forces with total `force` and moment
-  // `moment` about the view's origin.
-  double curve_moment(double force, double moment) const { return right_ ? 2.0 * crown_x_ * force - moment : moment; }
-  double whole_s(double s) const { return right_ ? whole_length_ - s : s; }
-
- private:
-  const Curve& curve_;
-  bool right_;
-  double whole_length_ = 0, S_ = 0, crown_x_ = 0;
-  CurvePoint crown_;  // the crown with this side's tangent
-  std::optional<CircularArc> end_arc_;
-  std::vector<double> breaks_;
-};
-
-// A point of the line at signed distance n from the axis (n > 0 towards the extrados), at arc length s
-// of a side, and its derivative d/ds.
-struct FacePoint {
-  Eigen::Vector2d p, dp;
-};
-
-FacePoint offset(const CurvePoint& q, double n) {
-  const Eigen::Vector2d tangent(std::cos(q.theta), std::sin(q.theta));
-  const Eigen::Vector2d normal(-tangent.y(), tangent.x());  // towards the extrados
-  // d(P + n normal)/ds = tangent (1 - n kappa): d normal/ds = -kappa tangent.
-  return {Eigen::Vector2d(q.x, q.y) + n * normal, (1.0 - n * q.kappa) * tangent};
-}
-
-FacePoint face_at(const SideView& side, double n, double s) { return offset(side.at(s), n); }
-
-// The arc length s in [lo, hi] where the face at n reaches abscissa x. x grows with s on every face of
-// a valid ring (dx/ds = cos theta (1 - n kappa) >= 0), so a safeguarded Newton iteration converges.
-double face_at_x(const SideView& side, double n, double x, double lo, double hi, double span) {
-  double s = 0.5 * (lo + hi);
-  for (int it = 0; it < 100; ++it) {
-    const FacePoint f = face_at(side, n, s);
-    const double r = f.p.x() - x;
-    if (r > 0) hi = s; else lo = s;
-    if (std::abs(r) <= 1e-15 * span || hi - lo <= 1e-15 * span) break;
-    const double newton = f.dp.x() > 0 ? s - r / f.dp.x() : 0.5 * (lo + hi);
-    s = (newton > lo && newton < hi) ? newton : 0.5 * (lo + hi);
-  }
-  return s;
-}
 
 // The integral of f from a to b (either order) by the 8-point rule, piece by piece between the knots
 // (ascending) that lie strictly between a and b, where f is smooth.
@@ -191,14 +90,17 @@ struct SideRing {
 };
 
 // The fill's load on the stretch of a side between arc lengths a < b of the line at offset n (the
-// extrados, n = t/2, or the axis, n = 0) that lies over the span (x >= x_min, the side's springing),
-// as a force and its moment about the side's origin: int rho_f g max(0, h_f - y_e) dx. On the axis
-// y_e = y + t / (2 cos theta), integrated as max(0, (h_f - y) cos theta - t/2) per axis length (finite
-// at a vertical springing). The integrand's kink where the fill's level meets y_e is a knot.
-VerticalLoad fill_load(const SideView& side, const FillLoad& fill, double gravity, double thickness, double n,
-                       double x_min, double a, double b, double span) {
-  const double level = fill.height_ratio * span, half_t = 0.5 * thickness, unit_weight = fill.density * gravity;
+// extrados, n = t/2, or the axis, n = 0) that lies over the span (x >= x_min, the side's springing), as
+// a force and its moment about the side's origin: int rho_f g max(0, h_f - y_e(x)) dx, y_e(x) the height
+// of the true extrados over x. Along the extrados that is its own y; along the axis, the extrados' height
+// over the axis point's x, integrated as max(0, h_f - y_e(x)) cos theta per axis length (finite at a
+// vertical springing), and only where the extrados lies over the axis point (none over the bed's outer
+// end's x at an overhanging springing). The integrand's kink where the fill's level meets y_e is a knot.
+VerticalLoad fill_load(const SideView& side, const SideExtrados& extrados, const FillLoad& fill, double gravity,
+                       double n, double x_min, double a, double b, double span) {
+  const double level = fill.height_ratio * span, unit_weight = fill.density * gravity;
   if (!(unit_weight > 0) || !(b > a)) return {};
+  if (n == 0.0) x_min = std::max(x_min, extrados.x_begin());
   if (face_at(side, n, b).p.x() <= x_min) return {};
   if (face_at(side, n, a).p.x() < x_min) a = face_at_x(side, n, x_min, a, b, span);
   // (h_f - y_e) dx/ds: its sign is that of the fill's depth (dx/ds >= 0), its positive part the load.
@@ -206,7 +108,7 @@ VerticalLoad fill_load(const SideView& side, const FillLoad& fill, double gravit
     if (n == 0.0) {
       const CurvePoint q = side.at(s);
       if (point) *point = {q.x, q.y};
-      return (level - q.y) * std::cos(q.theta) - half_t;
+      return (level - extrados.height(q.x, s)) * std::cos(q.theta);
     }
     const FacePoint f = face_at(side, n, s);
     if (point) *point = f.p;
@@ -226,7 +128,15 @@ VerticalLoad fill_load(const SideView& side, const FillLoad& fill, double gravit
     if (to < b) knots.push_back(to);
     from = to;
   };
-  for (double k : side.breaks())
+  // Where the integrand is not smooth: the side's breaks and, along the axis, the axis points under the
+  // extrados' breaks.
+  std::vector<double> breaks = side.breaks();
+  if (n == 0.0)
+    for (double x : extrados.break_x())
+      if (x > face_at(side, 0.0, a).p.x() && x < face_at(side, 0.0, b).p.x())
+        breaks.push_back(face_at_x(side, 0.0, x, a, b, span));
+  std::sort(breaks.begin(), breaks.end());
+  for (double k : breaks)
     if (k > a && k < b) add_root(k);
   add_root(b);
   const Eigen::Vector2d load = integral_between_knots<Eigen::Vector2d>(knots, a, b, [&](double s) {
@@ -237,22 +147,29 @@ VerticalLoad fill_load(const SideView& side, const FillLoad& fill, double gravit
   return {load.x(), load.y()};
 }
 
-// The joints and voussoirs of one side, with their self-weight and fill.
-SideRing make_side(const SideView& side, double thickness, double unit_weight, const std::vector<FillLoad>& fills,
-                   double gravity, const LimitOptions& options, double span) {
-  const double S = side.length(), half_t = 0.5 * thickness, xc = side.crown_x();
-  const int m = (options.joints_count - 1) / 2;  // voussoirs per side
+// Where the joints of a side end at the crown: the crown joint is vertical through the crown. At a
+// pointed crown the intrados reaches the crown's vertical before the axis does and the extrados after
+// it. Joints are placed by their intrados' arc length in [0, intrados].
+struct CrownEnds {
+  double intrados = 0, extrados = 0;
+};
 
-  // The crown joint is vertical through the crown. At a pointed crown the intrados reaches the crown's
-  // vertical before the axis does and the extrados after it: find where.
+CrownEnds crown_ends(const SideView& side, double thickness, double span) {
+  const double S = side.length(), half_t = 0.5 * thickness, xc = side.crown_x();
   const bool pointed = side.at(S).theta > 1e-12;
-  double s_intrados_crown = S, s_extrados_crown = S;
-  if (pointed) {
-    s_intrados_crown = face_at_x(side, -half_t, xc, 0.0, S, span);
-    double hi = S + thickness;
-    while (face_at(side, half_t, hi).p.x() < xc) hi = S + 2.0 * (hi - S);
-    s_extrados_crown = face_at_x(side, half_t, xc, S, hi, span);
-  }
+  return {pointed ? face_at_x(side, -half_t, xc, 0.0, S, span) : S, SideExtrados(side, thickness, span).s_crown()};
+}
+
+// The joints and voussoirs of one side, with their self-weight and fill: the springing bed, a joint at
+// each of `fractions` (ascending in (0, 1): its intrados at that fraction of the intrados' arc length to
+// the crown's vertical) and the crown joint.
+SideRing make_side(const SideView& side, double thickness, double unit_weight, const std::vector<FillLoad>& fills,
+                   double gravity, const LimitOptions& options, const std::vector<double>& fractions, double span) {
+  const double S = side.length(), half_t = 0.5 * thickness, xc = side.crown_x();
+  const int m = static_cast<int>(fractions.size()) + 1;  // voussoirs per side
+  const SideExtrados extrados(side, thickness, span);
+  const double s_extrados_crown = extrados.s_crown();
+  const double s_intrados_crown = side.at(S).theta > 1e-12 ? face_at_x(side, -half_t, xc, 0.0, S, span) : S;
 
   auto make_joint = [&](double s_in, double s_ex, double s_axis) {
     SideJoint h;
@@ -273,7 +190,7 @@ SideRing make_side(const SideView& side, double thickness, double unit_weight, c
     // Both orientations space the joints over the part of the arch whose joints cut it in two: radial
     // joints over the axis up to where the intrados reaches the crown's vertical, vertical ones over
     // the intrados.
-    const double s = s_intrados_crown * j / m;
+    const double s = s_intrados_crown * fractions[j - 1];
     if (options.joints == JointOrientation::radial) {
       joints.push_back(make_joint(s, s, s));
     } else {
@@ -315,12 +232,63 @@ SideRing make_side(const SideView& side, double thickness, double unit_weight, c
     // axis model (the elastic model's convention).
     for (const FillLoad& f : fills) {
       if (options.weight == WeightModel::voussoir)
-        v.fill += fill_load(side, f, gravity, thickness, half_t, x_min, a.s_extrados, b.s_extrados, span);
+        v.fill += fill_load(side, extrados, f, gravity, half_t, x_min, a.s_extrados, b.s_extrados, span);
       else
-        v.fill += fill_load(side, f, gravity, thickness, 0.0, x_min, a.s_axis, b.s_axis, span);
+        v.fill += fill_load(side, extrados, f, gravity, 0.0, x_min, a.s_axis, b.s_axis, span);
     }
   }
   return out;
+}
+
+// Where a side's joints must lie for a hinge to form where a load's line of action meets the faces
+// (x_view in the side's coordinates): the joint whose intrados is at x_view and, for radial joints,
+// those whose extrados and axis points are at x_view (a vertical joint there is all three). A hinge
+// under a point load, or at a live load's or a fill's end, then forms where it would in the continuum.
+void add_fractions_at_x(const SideView& side, double thickness, double x_view, const LimitOptions& options,
+                        double span, std::vector<double>& out) {
+  const double half_t = 0.5 * thickness;
+  const CrownEnds ends = crown_ends(side, thickness, span);
+  const double S_in = ends.intrados;
+  auto add_face = [&](double n) {
+    // Radial joints are placed by the arc length they share with every face; only up to S_in.
+    if (!(face_at(side, n, 0.0).p.x() < x_view && face_at(side, n, S_in).p.x() > x_view)) return;
+    out.push_back(face_at_x(side, n, x_view, 0.0, S_in, span) / S_in);
+  };
+  add_face(-half_t);
+  if (options.joints == JointOrientation::radial) {
+    add_face(half_t);
+    add_face(0.0);
+  }
+}
+
+// The arc length of a side in [0, hi] where its extrados' height reaches `level` (NaN if it does not).
+double extrados_at_height(const SideView& side, double thickness, double level, double hi, double span) {
+  const double half_t = 0.5 * thickness;
+  auto f = [&](double s) { return face_at(side, half_t, s).p.y() - level; };
+  double lo = 0.0, f_lo = f(lo);
+  if (!((f_lo < 0) != (f(hi) < 0))) return std::numeric_limits<double>::quiet_NaN();
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * span; ++it) {
+    const double mid = 0.5 * (lo + hi), f_mid = f(mid);
+    if ((f_mid < 0) == (f_lo < 0)) lo = mid, f_lo = f_mid; else hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+// The fractions (as make_side takes them) of the joints at every load's edges on one side: point loads,
+// the ends of live loads, and where each fill's level meets the extrados.
+void add_load_fractions(const SideView& side, double thickness, const Loads& loads, const LimitOptions& options,
+                        double span, std::vector<double>& out) {
+  auto at_curve_x = [&](double x) { add_fractions_at_x(side, thickness, side.curve_x(x), options, span, out); };
+  for (const PointLoad& p : loads.points) at_curve_x(p.at * span);
+  for (const LiveLoad& q : loads.live) {
+    at_curve_x(q.from * span);
+    at_curve_x(q.to * span);
+  }
+  const CrownEnds ends = crown_ends(side, thickness, span);
+  for (const FillLoad& f : loads.fills) {
+    const double s = extrados_at_height(side, thickness, f.height_ratio * span, ends.extrados, span);
+    if (!std::isnan(s)) at_curve_x(side.curve_x(face_at(side, 0.5 * thickness, s).p.x()));
+  }
 }
 
 // A joint or a voussoir of one side in the curve's coordinates.
@@ -344,10 +312,16 @@ double stretch_end(const Joint& j, WeightModel w) { return w == WeightModel::vou
 void add_live_loads(Ring& ring, const Loads& loads, WeightModel w) {
   const double L = ring.span;
   const std::size_t n = ring.voussoirs.size();
+  const double tie = 1e-12 * L;
   for (const PointLoad& p : loads.points) {
     const double x = p.at * L;
     std::size_t k = 0;
-    while (k + 1 < n && x > stretch_end(ring.joints[k + 1], w)) ++k;
+    while (k + 1 < n && x > stretch_end(ring.joints[k + 1], w) + tie) ++k;
+    // A joint through the load's point (make_ring places one there): the load belongs to the part that
+    // holds the vertical just below that point, where the thrust line bends. The joint leans one way or
+    // the other, and the part on the other side touches the load only at the joint's end.
+    if (k + 1 < n && std::abs(x - stretch_end(ring.joints[k + 1], w)) <= tie && ring.joints[k + 1].intrados.x() < x)
+      ++k;
     ring.voussoirs[k].live += {p.force, p.force * x};
   }
   for (const LiveLoad& q : loads.live)
@@ -360,7 +334,7 @@ void add_live_loads(Ring& ring, const Loads& loads, WeightModel w) {
 
 // The ring of any curve with the self-weight and fills (make_ring's two forms).
 Ring build_ring(const Curve& curve, double thickness, double unit_weight, const std::vector<FillLoad>& fills,
-                double gravity, const LimitOptions& options) {
+                double gravity, const LimitOptions& options, const std::vector<double>& fractions) {
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
   if (!std::isfinite(unit_weight) || !(unit_weight >= 0))
@@ -371,9 +345,10 @@ Ring build_ring(const Curve& curve, double thickness, double unit_weight, const 
         max_thickness(curve), thickness));
   const double L = curve.span();
   const SideView left_view(curve, false);
-  const SideRing left = make_side(left_view, thickness, unit_weight, fills, gravity, options, L);
+  const SideRing left = make_side(left_view, thickness, unit_weight, fills, gravity, options, fractions, L);
   Ring ring;
   ring.span = L;
+  ring.joint_fractions = fractions;
   const int m = static_cast<int>(left.voussoirs.size());
   ring.joints.reserve(2 * m + 1);
   ring.voussoirs.reserve(2 * m);
@@ -396,7 +371,7 @@ Ring build_ring(const Curve& curve, double thickness, double unit_weight, const 
     return ring;
   }
   const SideView right_view(curve, true);
-  const SideRing right = make_side(right_view, thickness, unit_weight, fills, gravity, options, L);
+  const SideRing right = make_side(right_view, thickness, unit_weight, fills, gravity, options, fractions, L);
   // Both sides end on the crown's vertical; at a kink the two sides' faces meet there only when the
   // kink is symmetric (else the vertical joint would not cut the arch in two).
   const Joint a = left.joints.back().joint, b = to_curve(right_view, right.joints.back().joint);
@@ -457,13 +432,83 @@ bool Ring::has_live_load() const {
 }
 
 Ring make_ring(const Curve& curve, double thickness, double unit_weight, const LimitOptions& options) {
-  return build_ring(curve, thickness, unit_weight, {}, 0.0, options);
+  std::string why;
+  if (!options.is_valid(&why)) throw std::invalid_argument(why);
+  return build_ring(curve, thickness, unit_weight, {}, 0.0, options,
+                    limit_detail::uniform_fractions(options.joints_count));
 }
 
 Ring make_ring(const Scene& scene, const LimitOptions& options) {
+  return limit_detail::make_ring_at(scene, options, limit_detail::starting_fractions(scene, options));
+}
+
+namespace limit_detail {
+
+std::vector<double> uniform_fractions(int joints_count) {
+  const int m = (joints_count - 1) / 2;  // voussoirs per side
+  std::vector<double> f;
+  f.reserve(m - 1);
+  for (int j = 1; j < m; ++j) f.push_back(static_cast<double>(j) / m);
+  return f;
+}
+
+std::vector<double> starting_fractions(const Scene& scene, const LimitOptions& options) {
+  std::string why;
+  if (!options.is_valid(&why)) throw std::invalid_argument(why);
+  if (!scene.curve) throw std::invalid_argument("curve: a scene needs a generator curve");
+  std::vector<double> f = uniform_fractions(options.joints_count);
+  const std::vector<double> at_loads = load_fractions(*scene.curve, scene.thickness, scene.loads, options);
+  f.insert(f.end(), at_loads.begin(), at_loads.end());
+  return merged_fractions(std::move(f));
+}
+
+std::vector<double> merged_fractions(std::vector<double> f) {
+  std::sort(f.begin(), f.end());
+  std::vector<double> out;
+  out.reserve(f.size());
+  for (double x : f) {
+    if (!(x > kFractionGap && x < 1.0 - kFractionGap)) continue;
+    if (!out.empty() && x - out.back() <= kFractionGap) continue;
+    out.push_back(x);
+  }
+  return out;
+}
+
+std::vector<double> load_fractions(const Curve& curve, double thickness, const Loads& loads,
+                                   const LimitOptions& options) {
+  std::vector<double> out;
+  const double L = curve.span();
+  if (!std::isfinite(thickness) || !(thickness > 0) || thickness >= max_thickness(curve)) return out;  // refused later
+  add_load_fractions(SideView(curve, false), thickness, loads, options, L, out);
+  if (curve.extent() == CurveExtent::whole) {
+    add_load_fractions(SideView(curve, true), thickness, loads, options, L, out);
+  } else {
+    // A half curve's right side is the mirror of its left one: the loads beyond mid-span, mirrored.
+    Loads mirrored;
+    for (const PointLoad& q : loads.points) mirrored.points.push_back({q.force, 1.0 - q.at});
+    for (const LiveLoad& q : loads.live) mirrored.live.push_back({q.intensity, 1.0 - q.to, 1.0 - q.from});
+    add_load_fractions(SideView(curve, false), thickness, mirrored, options, L, out);
+  }
+  return out;
+}
+
+void add_refinement(const Ring& ring, const std::vector<Hinge>& hinges, std::vector<double>& out) {
+  const int m = ring.crown_joint();  // voussoirs per side
+  const std::vector<double>& f = ring.joint_fractions;
+  // Side joint i's fraction: 0 at the springing, 1 at the crown.
+  auto at = [&](int i) { return i <= 0 ? 0.0 : i >= m ? 1.0 : f[static_cast<std::size_t>(i - 1)]; };
+  // Two voussoirs on each side of the hinge: the true hinge may lie beyond the next joint.
+  for (const Hinge& h : hinges) {
+    const int i = h.joint <= m ? h.joint : 2 * m - h.joint;
+    for (int k = std::max(i - 2, 0); k < std::min(i + 2, m); ++k) out.push_back(0.5 * (at(k) + at(k + 1)));
+  }
+}
+
+Ring make_ring_at(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions) {
   if (!scene.curve) throw std::invalid_argument("curve: a scene needs a generator curve");
   const Material& m = scene.material;
-  Ring ring = build_ring(*scene.curve, scene.thickness, m.density * m.gravity, scene.loads.fills, m.gravity, options);
+  Ring ring = build_ring(*scene.curve, scene.thickness, m.density * m.gravity, scene.loads.fills, m.gravity, options,
+                         fractions);
   add_live_loads(ring, scene.loads, options.weight);
   const int last = static_cast<int>(ring.joints.size()) - 1;
   if (scene.left.kind == SupportKind::pinned) ring.pins.push_back(0);
@@ -471,8 +516,6 @@ Ring make_ring(const Scene& scene, const LimitOptions& options) {
   if (scene.right.kind == SupportKind::pinned) ring.pins.push_back(last);
   return ring;
 }
-
-namespace limit_detail {
 
 LoadsLeftOfJoints loads_left_of_joints(const Ring& ring) {
   const std::size_t n = ring.joints.size();

@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "geometry/side_view.hpp"
 #include "numerics/gauss_legendre.hpp"
 
 namespace ogive {
@@ -35,6 +36,57 @@ std::vector<double> sign_changes(F&& f, double S) {
 }
 
 }  // namespace
+
+// The true extrados over the domain's axis points: the left side's up to the crown's vertical and, over a
+// whole domain, the right side's beyond it (both sides meet there, above a pointed crown).
+struct ArchModel::Extrados {
+  struct Side {
+    Side(const Curve& curve, bool right, double thickness) : view(curve, right), face(view, thickness, curve.span()) {}
+    SideView view;
+    SideExtrados face;
+  };
+  // The height over an axis point and whether the extrados lies over it at all (not over the x below
+  // the bed's outer end of an overhanging springing: there the height is the extrados' first point's).
+  struct Height {
+    double y = 0;
+    bool over = true;
+  };
+
+  Extrados(const Curve& domain, double thickness)
+      : whole(domain.extent() == CurveExtent::whole), span(domain.span()) {
+    sides.push_back(std::make_unique<Side>(domain, false, thickness));
+    if (whole) sides.push_back(std::make_unique<Side>(domain, true, thickness));
+    whole_length = domain.whole_length();
+  }
+
+  // The extrados' height over the axis point p at arc length s (m) of the domain.
+  Height over(const CurvePoint& p, double s) const {
+    const bool right = whole && p.x > sides[0]->view.crown_x();
+    const Side& side = *sides[right ? 1 : 0];
+    const double x = side.view.curve_x(p.x);
+    const double guess = right ? whole_length - s : s;
+    return {side.face.height(x, guess), x >= side.face.x_begin()};
+  }
+
+  // The domain's arc lengths (m) where the fill's load is not smooth whatever its level: the axis points
+  // under the extrados' breaks, and where the extrados starts to lie over the axis.
+  std::vector<double> breaks() const {
+    std::vector<double> out;
+    for (std::size_t k = 0; k < sides.size(); ++k) {
+      const SideView& view = sides[k]->view;
+      std::vector<double> xs = sides[k]->face.break_x();
+      if (sides[k]->face.x_begin() > view.at(0.0).x) xs.push_back(sides[k]->face.x_begin());
+      for (double x : xs)
+        if (x > view.at(0.0).x && x < view.crown_x())
+          out.push_back(view.whole_s(face_at_x(view, 0.0, x, 0.0, view.length(), span)));
+    }
+    return out;
+  }
+
+  bool whole = false;
+  double span = 0, whole_length = 0;
+  std::vector<std::unique_ptr<Side>> sides;
+};
 
 ArchModel::ArchModel(Scene scene, bool whole_arch_domain) : scene_(std::move(scene)) {
   const Material& m = scene_.material;
@@ -101,14 +153,16 @@ void ArchModel::place_loads() {
     add_break(live_spans_.back().from);
     add_break(live_spans_.back().to);
   }
+  if (!loads.fills.empty()) {
+    extrados_ = std::make_shared<const Extrados>(*curve_, scene_.thickness);
+    for (double s : extrados_->breaks()) add_break(snapped(s / L));
+  }
   for (const FillLoad& f : loads.fills) {
-    const double level = f.height_ratio, half_t = 0.5 * scene_.thickness / L;
+    const double level = f.height_ratio * L;
+    // Where the fill's level meets the extrados (a continuous function of s: beyond where the extrados
+    // lies over the axis, the extrados' first height).
     for (double s : sign_changes(
-             [&](double s) {
-               const CurvePoint p = curve_->at(s * L);
-               return (level - p.y / L) * std::cos(p.theta) - half_t;
-             },
-             length_))
+             [&](double s) { return level - extrados_->over(curve_->at(s * L), s * L).y; }, length_))
       add_break(snapped(s));
   }
   std::sort(breakpoints_.begin(), breakpoints_.end());
@@ -184,8 +238,12 @@ double ArchModel::distributed_load(double s, const CurvePoint& p) const {
   double q = 0;
   for (const LiveSpan& live : live_spans_)
     if (s >= live.from && s <= live.to) q += live.intensity * c;
-  for (const FillLoad& f : scene_.loads.fills)
-    q += f.density * scene_.material.gravity * std::max(0.0, (f.height_ratio * L - p.y) * c - 0.5 * scene_.thickness);
+  if (extrados_) {
+    const Extrados::Height e = extrados_->over(p, s * L);
+    if (e.over)
+      for (const FillLoad& f : scene_.loads.fills)
+        q += f.density * scene_.material.gravity * std::max(0.0, f.height_ratio * L - e.y) * c;
+  }
   return q / w;
 }
 

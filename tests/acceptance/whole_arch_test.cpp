@@ -265,9 +265,10 @@ TEST_CASE("whole arches: reactions and loads balance") {
 }
 
 TEST_CASE("whole arches: the fill's load is the weight above the extrados, by an independent quadrature") {
-  // q(x) = rho_f g max(0, h_f - y_e(x)) per horizontal length; the reference integrates it over x with a
-  // composite Simpson rule in the curve's x (dense: 20000 intervals), away from the model's own
-  // Gauss-Legendre in arc length.
+  // q(x) = rho_f g max(0, h_f - y_e(x)) per horizontal length, y_e the true extrados: on the semicircle
+  // the circle of radius L/2 + t/2 about mid-span. The reference integrates it over x with a composite
+  // Simpson rule (dense: 20000 intervals), away from the model's own Gauss-Legendre in arc length and
+  // its search for the extrados over each axis point.
   Scene s = paper_scene(0.0, 0.1);
   const double rho = 1800, level = 0.45;
   s.loads.fills.push_back({rho, level});
@@ -279,9 +280,9 @@ TEST_CASE("whole arches: the fill's load is the weight above the extrados, by an
   double fill = 0;
   for (int i = 0; i <= kIntervals; ++i) {
     const double x = 0.5 * kSpan * i / kIntervals;
-    const CurvePoint p = half.at(arc_length_at_x(half, x));
-    const double extrados = p.y + 0.5 * s.thickness / std::cos(p.theta);
-    const double q = std::cos(p.theta) > 1e-12 ? rho * 9.81 * std::max(0.0, level * kSpan - extrados) : 0.0;
+    const double r = 0.5 * (kSpan + s.thickness), u = x - 0.5 * kSpan;
+    const double extrados = std::sqrt(r * r - u * u);
+    const double q = rho * 9.81 * std::max(0.0, level * kSpan - extrados);
     fill += (i == 0 || i == kIntervals ? 1 : (i % 2 == 1 ? 4 : 2)) * q;
   }
   fill *= 0.5 * kSpan / kIntervals / 3;  // the half span's fill

@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <ostream>
 #include <sstream>
+#include <streambuf>
 #include <string>
 #include <vector>
 
@@ -172,7 +174,7 @@ TEST_CASE("cli: --version names the project version, bare ogive prints the help 
   const Run bare = run_command({});
   CHECK(bare.status == 2);
   CHECK(bare.out.empty());
-  for (const char* sub : {"thrust", "profile", "check", "curve", "bench", "draw", "docs/model.md"})
+  for (const char* sub : {"thrust", "profile", "check", "curve", "bench", "draw", "docs/cli.md", "docs/model.md"})
     CHECK(bare.err.find(sub) != std::string::npos);
 }
 
@@ -207,4 +209,58 @@ TEST_CASE("cli: every subcommand's help has two examples, and they run") {
       CHECK(r.status == 0);
     }
   }
+}
+
+namespace {
+
+// A stream buffer that refuses every byte, as a full disk or a closed descriptor does.
+class RefusingBuffer : public std::streambuf {
+ protected:
+  std::streamsize xsputn(const char*, std::streamsize) override { return 0; }
+  int overflow(int) override { return traits_type::eof(); }
+};
+
+}  // namespace
+
+TEST_CASE("cli: help and version that cannot be written exit 4 with one line - extra arguments are refused") {
+  std::vector<std::vector<std::string>> asks = {{"--version"}, {"--help"}};
+  for (const char* sub : {"thrust", "profile", "check", "curve", "bench", "draw", "limit"})
+    asks.push_back({sub, "--help"});
+  for (const auto& args : asks) {
+    CAPTURE(args.back());
+    CAPTURE(args.front());
+    RefusingBuffer refusing;
+    std::ostream full(&refusing);
+    std::ostream closed(nullptr);  // badbit from the start
+    for (std::ostream* out : {&full, &closed}) {
+      std::ostringstream err;
+      CHECK(run_cli(args, *out, err) == cli::kExitOutput);
+      CHECK(lines(err.str()).size() == 1);
+      CHECK(err.str().find("cannot write the output") != std::string::npos);
+    }
+  }
+  // An argument nobody takes, before or after help or version: refused, and named.
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {"--version", "extra"},
+           {"extra", "--version"},
+           {"--help", "extra"},
+           {"thrust", "--help", "extra"},
+           {"thrust", "extra", "--help"},
+           {"draw", "--eccentricity", "0.5", "extra", "--version"}}) {
+    check_refused(args);
+    CHECK(run_command(args).err.find("extra") != std::string::npos);
+  }
+}
+
+TEST_CASE("cli: bench exits 3 when a row failed - the row says which") {
+  // A survey's breakpoints ignored: quadrature is not applicable, its row says so; multiple shooting
+  // succeeds.
+  const Run r = run_command({"bench", "--curve", "points", "--curve-file", OGIVE_DATA_DIR "/curves/parabola-40.csv",
+                             "--methods", "multiple-shooting,quadrature", "--ignore-breakpoints", "--rtols", "1e-6",
+                             "--repeats", "1", "--columns", "method,status"});
+  CHECK(r.status == cli::kExitNotConverged);
+  CHECK(r.err.empty());
+  REQUIRE(lines(r.out).size() == 1 + 2);
+  CHECK(column(r.out, "status", 1) == "success");
+  CHECK(column(r.out, "status", 2) == "not_applicable");
 }

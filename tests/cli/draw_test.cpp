@@ -4,9 +4,15 @@
 // without a thrust line; a thrust line that runs off split where it leaves the drawing.
 #include <doctest/doctest.h>
 
+#include <sys/resource.h>
+
+#include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -168,13 +174,69 @@ TEST_CASE("draw: bad targets are one line naming the option - exit 2 - nothing o
            {"draw", "--output-dir", dir.path.string(), "--eccentricity", "0.5,0.5"},  // two scenes, one name
            {"draw", "--output-dir", dir.path.string(), "--eccentricity", "0:1:1001"},  // too many pictures
            {"draw", "--output", dir / "a.svg", "--stations", "1"},
-           {"draw", "--output", dir / "a.svg", "--rise-ratio", "0.3"}}) {
+           {"draw", "--output", dir / "a.svg", "--rise-ratio", "0.3"},
+           {"draw", "--output", ""},      // an empty name is not "no target"
+           {"draw", "--output-dir", ""},
+           {"draw", "--output", "-"}}) {  // standard output holds the CSV row
     check_refused(args);
     const Run r = run_command(args);
     CHECK((r.err.find("--output") != std::string::npos || r.err.find("--stations") != std::string::npos ||
            r.err.find("--rise-ratio") != std::string::npos));
   }
   CHECK(run_command({"draw"}).err.find("--output FILE.svg") != std::string::npos);
+  CHECK(run_command({"draw", "--output", "-"}).err.find("standard output") != std::string::npos);
+  CHECK(run_command({"draw", "--output-dir", ""}).err.find("--output-dir: the name must not be empty") !=
+        std::string::npos);
+  // Nothing was left behind by the refusals.
+  CHECK(std::distance(std::filesystem::directory_iterator(dir.path), std::filesystem::directory_iterator()) == 1);
+}
+
+TEST_CASE("draw: no empty or partial file is left - an invalid scene is not drawn - a failed write removes its file") {
+  TempDir dir("ogive_test_draw_whole");
+  const auto files_in = [&] {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(dir.path)) names.push_back(entry.path().filename());
+    std::sort(names.begin(), names.end());
+    return names;
+  };
+  // Rise 2 with t/L 0.5 makes no catenary: its row says invalid_scene and no file of its name appears.
+  const Run r = run_command({"draw", "--curve", "catenary", "--rise-ratio", "0.5,2", "--thickness-ratio", "0.5",
+                             "--output-dir", dir.path.string()});
+  CHECK(r.status == 3);
+  CHECK(column(r.out, "status", 2) == "invalid_scene");
+  CHECK(files_in() == std::vector<std::string>{"catenary_rise-ratio-0.5.svg"});
+  CHECK(xmllint_accepts(dir / "catenary_rise-ratio-0.5.svg"));
+  // A write that fails (here a file size limit, as a full disk would): exit 4, one line naming the
+  // file, and neither the picture nor a partial one is left; an existing picture stays as it was.
+  std::filesystem::remove(dir / "catenary_rise-ratio-0.5.svg");
+  { std::ofstream(dir / "old.svg") << "kept"; }
+  struct rlimit saved{};
+  REQUIRE(getrlimit(RLIMIT_FSIZE, &saved) == 0);
+  const auto saved_handler = std::signal(SIGXFSZ, SIG_IGN);
+  struct rlimit small = saved;
+  small.rlim_cur = 1000;  // bytes: less than any drawing
+  REQUIRE(setrlimit(RLIMIT_FSIZE, &small) == 0);
+  const Run full = run_command({"draw", "--eccentricity", "0,0.5", "--output-dir", dir.path.string()});
+  const Run replaced = run_command({"draw", "--output", dir / "old.svg"});
+  setrlimit(RLIMIT_FSIZE, &saved);
+  std::signal(SIGXFSZ, saved_handler);
+  for (const Run& failed : {full, replaced}) {
+    CHECK(failed.status == 4);
+    CHECK(lines(failed.err).size() == 1);
+    CHECK(failed.err.find("cannot write " + dir.path.string()) != std::string::npos);
+  }
+  CHECK(files_in() == std::vector<std::string>{"old.svg"});
+  CHECK(read_text(dir / "old.svg") == "kept");
+  // Written whole, it replaces the old file.
+  REQUIRE(run_command({"draw", "--output", dir / "old.svg"}).status == 0);
+  CHECK(xmllint_accepts(dir / "old.svg"));
+  CHECK(files_in() == std::vector<std::string>{"old.svg"});
+  // A symlink (as /dev/stdout is) is written through, not replaced by a file.
+  std::filesystem::create_symlink(dir / "old.svg", dir / "link.svg");
+  REQUIRE(run_command({"draw", "--eccentricity", "1", "--output", dir / "link.svg"}).status == 0);
+  CHECK(std::filesystem::is_symlink(dir / "link.svg"));
+  CHECK(read_text(dir / "old.svg").find("eccentricity 1,") != std::string::npos);
+  CHECK(files_in() == std::vector<std::string>{"link.svg", "old.svg"});
 }
 
 TEST_CASE("draw: an unsolved scene is drawn without a thrust line - its row says why - exit 3") {

@@ -262,3 +262,29 @@ TEST_CASE("whole arches: a surveyed rampant arch from the CLI, and whole-arch fi
   test::check_refused({"thrust", "--curve", "whole-points"});  // no file
   test::check_refused({"thrust", "--curve", "whole-points", "--curve-file", folds, "--span", "10"});
 }
+
+TEST_CASE("cli: an empty file name is refused naming its option - - reads the file from standard input") {
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {"thrust", "--loads-file", ""},
+           {"limit", "--loads-file", ""},
+           {"thrust", "--curve", "points", "--curve-file", ""},
+           {"curve", "--curve", "whole-points", "--curve-file", ""},
+           {"thrust", "--curve-file", ""}}) {
+    check_refused(args);
+    const Run r = run_command(args);
+    CHECK(r.err.find(args[args.size() - 2] + ": the name must not be empty") != std::string::npos);
+  }
+  // --loads-file - reads the loads from standard input: the same rows as the file.
+  const std::string path = OGIVE_DATA_DIR "/loads/quarter-point-and-half-live.csv";
+  std::ifstream file(path);
+  std::stringstream text;
+  text << file.rdbuf();
+  std::istringstream piped(text.str());
+  std::streambuf* saved = std::cin.rdbuf(piped.rdbuf());
+  const Run from_stdin = run_command({"thrust", "--loads-file", "-"});
+  std::cin.rdbuf(saved);
+  const Run from_file = run_command({"thrust", "--loads-file", path});
+  CHECK(from_stdin.status == 0);
+  CHECK(from_stdin.out == from_file.out);
+  CHECK(from_stdin.out.find("H_over_V") != std::string::npos);
+}

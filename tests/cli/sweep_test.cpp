@@ -2,12 +2,14 @@
 // error ends the run with one line and exit 4, and any number of threads prints the same bytes.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <limits>
 #include <ostream>
 #include <sstream>
 #include <streambuf>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli.hpp"
@@ -133,4 +135,32 @@ TEST_CASE("threads: a write error with several threads still ends the run cleanl
   CHECK(status == cli::kExitOutput);
   CHECK(lines(err.str()).size() == 1);
   CHECK(full.all().back() == '\n');
+}
+
+TEST_CASE("threads: what waits to be written is bounded by rows, whatever the stations - the same bytes") {
+  // The writer's pieces show what was held at once: scenes of many stations go out as they are made
+  // (pieces of about 64 KiB), scenes of a few thousand wait in chunks of at most kChunkRows rows.
+  const std::vector<std::pair<std::vector<std::string>, std::size_t>> sweeps = {
+      {{"curve", "--eccentricity", "0,0.5,1", "--stations", "100000"}, 2 * (std::size_t{1} << 16) + 1000},
+      {{"curve", "--eccentricity", "0:1:200", "--stations", "2000"}, (std::size_t{1} << 16) + 4096 * 200},
+      {{"profile", "--eccentricity", "0:1:3", "--stations", "10000"}, 2 * (std::size_t{1} << 16) + 4096 * 400}};
+  for (const auto& [command, bound] : sweeps) {
+    CAPTURE(command[0]);
+    CAPTURE(command[4]);
+    std::string one_thread;
+    for (const char* threads : {"1", "2"}) {
+      std::vector<std::string> args = command;
+      args.insert(args.end(), {"--threads", threads});
+      RecordingBuffer buffer;
+      std::ostream out(&buffer);
+      std::ostringstream err;
+      REQUIRE(cli::run_cli(args, out, err) == 0);
+      std::size_t largest = 0;
+      for (const auto& piece : buffer.pieces) largest = std::max(largest, piece.size());
+      CAPTURE(threads);
+      CHECK(largest <= bound);
+      if (one_thread.empty()) one_thread = buffer.all();
+      CHECK(buffer.all() == one_thread);
+    }
+  }
 }

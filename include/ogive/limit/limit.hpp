@@ -63,8 +63,7 @@ enum class WeightModel {
 const char* to_string(JointOrientation j);
 const char* to_string(WeightModel w);
 
-// The default number of joints: enough that every printed number of the semicircle and the pointed
-// family (eps 0 .. 1.5, t/L 0.06 .. 0.2) is converged to 1e-4 (the convergence table of benchmarks/limit/README.md).
+// The default number of joints of the starting ring (analyse_limit then refines it; see there).
 inline constexpr int kDefaultJointsCount = 401;
 inline constexpr int kMinJointsCount = 5;
 inline constexpr int kMaxJointsCount = 20001;
@@ -72,8 +71,9 @@ inline constexpr int kMaxJointsCount = 20001;
 struct LimitOptions {
   JointOrientation joints = JointOrientation::radial;
   WeightModel weight = WeightModel::voussoir;
-  // Joints springing to springing, both springings included; odd, so that one joint is at the crown
-  // (4 voussoirs at least, the fewest that can form a mechanism with a crown joint).
+  // Joints springing to springing of the starting ring, both springings included, equally spaced;
+  // odd, so that one joint is at the crown (4 voussoirs at least, the fewest that can form a mechanism
+  // with a crown joint). make_ring(scene, ...) and analyse_limit add joints to these (see there).
   int joints_count = kDefaultJointsCount;
   // Coulomb friction coefficient of the joints; 0: no sliding check (sliding is excluded). When > 0,
   // every joint must also satisfy |shear| <= friction * normal force.
@@ -121,6 +121,10 @@ struct Ring {
   std::vector<Voussoir> voussoirs;
   std::vector<int> pins;  // joints whose thrust passes through their axis point, ascending
   double span = 0;        // L, m
+  // Where each side's interior joints lie, ascending in (0, 1): joint i of a side (1 .. m-1, from its
+  // springing; the same on both sides) has its intrados at fraction joint_fractions[i - 1] of the
+  // intrados' arc length from the springing to the crown's vertical.
+  std::vector<double> joint_fractions;
   int crown_joint() const { return static_cast<int>(joints.size() / 2); }
   double total_weight() const;  // N/m, the self-weight
   double total_fill() const;    // N/m
@@ -138,7 +142,11 @@ struct Ring {
 Ring make_ring(const Curve& curve, double thickness, double unit_weight, const LimitOptions& options);
 
 // The ring of the scene (its curve, thickness, density and gravity) with every load of Scene::loads
-// and the pins of its pinned springings and crown hinge.
+// and the pins of its pinned springings and crown hinge. Its joints: options.joints_count equally
+// spaced, and on both sides those through each point load's line of action, each live load's ends and
+// where each fill's level meets the extrados (for radial joints one each through the intrados, the
+// axis and the extrados point there; for vertical joints the vertical line), so that a hinge can form
+// under a load as it would in the continuum. joints.size() >= options.joints_count.
 Ring make_ring(const Scene& scene, const LimitOptions& options);
 
 // ---------------------------------------------------------------------------------------------
@@ -173,7 +181,17 @@ enum class LimitStatus {
                  // and their states are absent; t_min (the thickness at which it would stand) is given
                  // when one exists below the curve's largest thickness
   lp_failure,    // the LP library stopped without an answer (the message says which problem)
+  not_converged, // the numbers still moved by more than kLimitTolerance at the last refinement of the
+                 // joints: the result of the finest ring is given, with the last change in the message
 };
+
+// The relative change between two refinements of the joints below which every number of a result
+// (H_min, H_max, t_min, the load factors) is taken as converged.
+inline constexpr double kLimitTolerance = 1e-4;
+// The refinements of the joints analyse_limit makes at the most.
+inline constexpr int kMaxLimitRefinements = 10;
+// The most hinges the mechanism check takes: beyond, the four-hinge subsets are too many to try.
+inline constexpr std::size_t kMaxMechanismHinges = 12;
 const char* to_string(LimitStatus s);
 
 struct LimitResult {
@@ -185,7 +203,8 @@ struct LimitResult {
   ThrustState min_state;  // the smallest H (the arch pushes least: the state a spreading support reaches)
   ThrustState max_state;  // the largest H; absent (with a message) when H is unbounded: a flat, thick
                           // arch holds a straight thrust line of any H (infinite compressive strength)
-  double thickness_min = std::numeric_limits<double>::quiet_NaN();  // t_min, m, same axis and loads
+  double thickness_min = std::numeric_limits<double>::quiet_NaN();  // t_min, m, same axis and loads; NaN
+                                                                   // (with a message) below 1e-6 of the span
   // With a live load: the largest multiplier of the live load that the arch carries (dead loads
   // times 1), its state with the collapse mechanism's hinges, and the kinematic multiplier of the same
   // hinges by virtual work (mechanism_load_factor); absent without a live load, or when the arch cannot
@@ -193,6 +212,9 @@ struct LimitResult {
   ThrustState collapse_state;
   double load_factor_mechanism = std::numeric_limits<double>::quiet_NaN();
   int lp_solves = 0;  // linear programs solved for this result
+  // The ring of the states above (their joint indices and crossings): make_ring(scene, options)'s,
+  // refined next to the hinges. t_min's rings (other thicknesses) are not kept.
+  Ring ring;
 
   double H_min() const { return min_state.H; }
   double H_max() const { return max_state.H; }
@@ -204,6 +226,13 @@ struct LimitResult {
 // crown hinge; the elastic constants and the supports' movements do not enter: rigid voussoirs).
 // Throws std::invalid_argument for an invalid scene or options, or a scene that loads the ring with
 // nothing (every load zero over the ring).
+//
+// Converged in the joints: the analysis runs on make_ring's ring, then again with the voussoirs next to
+// every hinge (of the minimum, maximum and collapse states, and of the thinnest arch) halved, two on
+// each side, until in two refinements in a row no number of the result (H_min, H_max, t_min,
+// load_factor, load_factor_mechanism) moved by more than kLimitTolerance relative (status
+// not_converged after kMaxLimitRefinements).
+// The result is that of the last, finest ring; lp_solves counts every round's programs.
 //
 // t_min (same axis, stereotomy and loads; the fill follows the extrados) is found by a bracketing
 // root-finder (Illinois) on the LP's feasibility margin: the largest mu such that each joint's
@@ -224,7 +253,9 @@ ThrustState thrust_state(const Ring& ring, double H, double V_left, double M_lef
 // load vanishes (each voussoir's loads by their resultant). NaN unless the hinges make a mechanism of one
 // degree of freedom in which the live load does work and every face hinge opens on the face opposite to
 // its own (kinematically admissible; a pin turns either way). Given more than four hinges (a degenerate
-// static optimum), the least multiplier of the admissible mechanisms of four of them.
+// static optimum), the least multiplier of the admissible mechanisms of four of them, a run of hinges
+// at consecutive joints on one face represented by its first, middle and last; NaN when more than
+// kMaxMechanismHinges remain.
 double mechanism_load_factor(const Ring& ring, const std::vector<Hinge>& hinges);
 
 }  // namespace ogive

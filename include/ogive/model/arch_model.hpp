@@ -20,7 +20,10 @@
 //   psi~' = M~
 //   Fx~'  = 0,   Fy~' = b(s),   M~' = sn Fx~ - c Fy~
 // i.e. y' = A(theta(s)) y + b(s) e_Fy, b being the vertical load per axis length over w: the
-// self-weight's constant, a live load's q c / w under it, a fill's rho_f g max(0, (h_f - y) c - t/2) / w.
+// self-weight's constant, a live load's q c / w under it, a fill's rho_f g max(0, h_f - y_e(x)) c / w:
+// the fill's weight per horizontal length over the axis point's x, y_e(x) the height of the true extrados
+// (the axis offset by t/2 along the normal) over that x, as limit analysis weighs it (zero where no
+// extrados lies over x).
 // A point load P at s_P makes Fy jump by P / (w L): Fy(s_P+) = Fy(s_P-) + P~.
 #pragma once
 
@@ -128,7 +131,7 @@ class ArchModel {
   // arithmetic; inline: the quadrature calls it at every node).
   void derivative(double c, double sn, const double* y, double* dy, double load) const;
   // Interior points where A or b is not smooth (the curve's breakpoints, a live load's ends, where a fill
-  // starts to bear) and where the state jumps (point loads, a hinge), ascending, scaled: integrators
+  // starts to bear, the axis points under the extrados' breaks when there is a fill) and where the state jumps (point loads, a hinge), ascending, scaled: integrators
   // restart there. jumps(): the point loads, ascending, at 0 <= s <= S~ (those at the ends act on the
   // springing's side of the end state: see reactions).
   const std::vector<double>& breakpoints() const { return breakpoints_; }
@@ -173,12 +176,15 @@ class ArchModel {
   double total_load_ = 0, load_moment_ = 0;
   // The constructor's steps, in order: where the loads act and where the system is not smooth (the
   // curve's breakpoints, the point loads, the hinge, the live loads' ends, where the fill meets the
-  // extrados); the six boundary conditions; the domain's total load and its moment.
+  // extrados and under the extrados' breaks); the six boundary conditions; the domain's total load and its moment.
   void place_loads();
   void set_boundary_conditions();
   void sum_loads();
   // b beyond the self-weight at scaled arc length s, whose axis point is p.
   double distributed_load(double s, const CurvePoint& p) const;
+  // The true extrados over the domain's axis points (arch_model.cpp; only with fills).
+  struct Extrados;
+  std::shared_ptr<const Extrados> extrados_;
   // Where each live load acts, in scaled arc length: the same numbers as its breakpoints, so that the
   // load switches exactly where the integrator restarts (not where x(s) = a L rounds to one side).
   struct LiveSpan {
