@@ -13,9 +13,8 @@ build=build-fuzz
 cxx="${OGIVE_FUZZ_CXX:-clang++}"
 
 start=$(date +%s)
-cmake -S . -B "$build" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOGIVE_FUZZ=ON \
-  -DOGIVE_BUILD_TESTS=OFF >/dev/null
-cmake --build "$build" -j2 --target fuzz_parse_values fuzz_points_file
+cmake --preset fuzz -DCMAKE_CXX_COMPILER="$cxx" >/dev/null
+cmake --build --preset fuzz
 echo "fuzz: build took $(($(date +%s) - start)) s"
 
 # target, corpus and dictionary name, -max_len
