@@ -248,6 +248,44 @@ double mechanism_load_factor(const Ring& ring, const std::vector<Hinge>& hinges)
 
 namespace {
 
+// A bracket of t_min: f(lo) < 0 <= f(hi) when found.
+struct Bracket {
+  double lo, f_lo, hi, f_hi;
+  bool found = false;
+};
+
+// From an admissible thickness down, halving, to the first that does not stand; not below `floor`
+// (below kThinnestResolved L the margin is at the LP's tolerance: an arch that stands that thin, a
+// funicular one, gets no t_min and says so rather than a number of round-off).
+Bracket bracket_down(MarginFunction& f, Bracket b, double floor) {
+  for (int i = 0; i < 60 && !f.failed && 0.5 * b.hi >= floor; ++i) {
+    b.lo = 0.5 * b.hi;
+    b.f_lo = f(b.lo);
+    if (b.f_lo < 0) {
+      b.found = true;
+      break;
+    }
+    b.hi = b.lo;
+    b.f_hi = b.f_lo;
+  }
+  return b;
+}
+
+// From an inadmissible thickness up, doubling, to the first that stands; not beyond `cap`.
+Bracket bracket_up(MarginFunction& f, Bracket b, double cap) {
+  for (int i = 0; i < 60 && !f.failed && b.hi < cap; ++i) {
+    b.hi = std::min(2.0 * b.lo, cap);
+    b.f_hi = f(b.hi);
+    if (b.f_hi >= 0) {
+      b.found = true;
+      break;
+    }
+    b.lo = b.hi;
+    b.f_lo = b.f_hi;
+  }
+  return b;
+}
+
 // One analysis on the ring whose joints are `refined` and the loads' (fractions_at), and where the next
 // ring should be finer: next to every hinge of its states and of the thinnest arch.
 struct Round {
@@ -312,36 +350,13 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
                    std::numeric_limits<double>::infinity(), {}, static_cast<int>(ring.joints.size())};
   const double t = scene.thickness;
   const double t_cap = 0.99 * max_thickness(curve);
-  double lo = t, f_lo = margin.margin, hi = t, f_hi = margin.margin;
-  bool bracketed = false;
-  if (admissible) {
-    // Below kThinnestResolved L the margin is at the LP's tolerance: an arch that stands that thin (a
-    // funicular one) gets no t_min, and says so, rather than a number of round-off.
-    for (int i = 0; i < 60 && !f.failed && 0.5 * hi >= kThinnestResolved * curve.span(); ++i) {
-      lo = 0.5 * hi;
-      f_lo = f(lo);
-      if (f_lo < 0) {
-        bracketed = true;
-        break;
-      }
-      hi = lo;
-      f_hi = f_lo;
-    }
-  } else if (margin.margin >= 0) {
-    r.thickness_min = t;  // a zero margin whose thrust programs are infeasible: t is t_min to round-off
-  } else {
-    for (int i = 0; i < 60 && !f.failed && hi < t_cap; ++i) {
-      hi = std::min(2.0 * lo, t_cap);
-      f_hi = f(hi);
-      if (f_hi >= 0) {
-        bracketed = true;
-        break;
-      }
-      lo = hi;
-      f_lo = f_hi;
-    }
-  }
-  if (bracketed && !f.failed) r.thickness_min = thinnest(f, lo, f_lo, hi, f_hi);
+  Bracket bracket{t, margin.margin, t, margin.margin};
+  if (admissible) bracket = bracket_down(f, bracket, kThinnestResolved * curve.span());
+  else if (margin.margin >= 0) r.thickness_min = t;  // a zero margin whose thrust programs are infeasible: t is t_min to round-off
+  else bracket = bracket_up(f, bracket, t_cap);
+  const bool bracketed = bracket.found;
+  const double hi = bracket.hi;
+  if (bracketed && !f.failed) r.thickness_min = thinnest(f, bracket.lo, bracket.f_lo, bracket.hi, bracket.f_hi);
   r.lp_solves += f.solves;
   if (f.failed) {
     r.status = LimitStatus::lp_failure;
