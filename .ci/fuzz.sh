@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (clang, -DOGIVE_FUZZ=ON, in build-fuzz/) and runs each for SECONDS
+# Builds the libFuzzer targets with the fuzz preset (clang, -DOGIVE_FUZZ=ON, in build-fuzz/; OGIVE_FUZZ_CXX
+# names another clang++) and runs each for SECONDS
 # (default 30) on a copy of its seed corpus (tests/fuzz/corpus/<name>/), so that new corpus entries never
 # land in the repository. Exits non-zero when a target finds a crash, a leak, a timeout or runs out of
 # memory; the input is saved under build-fuzz/artifacts/<target>/ and the log under build-fuzz/logs/.
