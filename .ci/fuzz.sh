@@ -1,16 +1,17 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets with the fuzz preset (clang, -DOGIVE_FUZZ=ON, in build-fuzz/; OGIVE_FUZZ_CXX
-# names another clang++) and runs each for SECONDS
-# (default 30) on a copy of its seed corpus (tests/fuzz/corpus/<name>/), so that new corpus entries never
-# land in the repository. Exits non-zero when a target finds a crash, a leak, a timeout or runs out of
-# memory; the input is saved under build-fuzz/artifacts/<target>/ and the log under build-fuzz/logs/.
+# Builds the libFuzzer targets with the fuzz preset (the sanitize preset's clang build in build-sanitize/,
+# -DOGIVE_FUZZ=ON; OGIVE_FUZZ_CXX names another clang++; after the sanitize preset's build there is nothing
+# left to compile) and runs each for SECONDS (default 30) on a copy of its seed corpus
+# (tests/fuzz/corpus/<name>/), so that new corpus entries never land in the repository. Exits non-zero when
+# a target finds a crash, a leak, a timeout or runs out of memory; the input is saved under
+# build-sanitize/artifacts/<target>/ and the log under build-sanitize/logs/.
 #   usage: .ci/fuzz.sh [SECONDS]
 # Needs clang and libclang-rt-14-dev (.ci/install_deps.sh installs them).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-30}"
 [[ "$seconds" =~ ^[1-9][0-9]*$ ]] || { echo "usage: .ci/fuzz.sh [SECONDS]  (a whole number > 0)" >&2; exit 2; }
-build=build-fuzz
+build=build-sanitize
 cxx="${OGIVE_FUZZ_CXX:-clang++}"
 
 start=$(date +%s)

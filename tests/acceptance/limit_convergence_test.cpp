@@ -105,8 +105,9 @@ TEST_CASE("limit acceptance: equally spaced vertical joints approach the converg
 
 TEST_CASE("limit acceptance: the mechanism check answers for any load") {
   // A huge point load and a weightless arch under one: thrust lines that touch many joints at once.
-  for (auto [density, load] : {std::pair{2348.0, 1e17}, std::pair{1e-9, 1e4}}) {
-    CAPTURE(density);
+  for (const auto& density_and_load : {std::pair{2348.0, 1e17}, std::pair{1e-9, 1e4}}) {
+    const auto [density, load] = density_and_load;
+    CAPTURE(density_and_load.first);
     Scene scene = paper_scene(0.0, 0.08);
     scene.material.density = density;
     scene.loads.points.push_back({load, 0.5});

@@ -128,9 +128,10 @@ TEST_CASE("draw: the faces lie at t/2 from the axis - the semicircle's on circle
   REQUIRE(run_command({"draw", "--curve", "semicircular", "--thickness-ratio", "0.1", "--output", dir / "s.svg"}).status == 0);
   const std::string svg = read_text(dir / "s.svg");
   const double L = 10, t = 1;
-  for (const auto& [id, radius] : {std::pair{"intrados", (L - t) / 2}, std::pair{"extrados", (L + t) / 2},
-                                   std::pair{"axis", L / 2}}) {
-    CAPTURE(id);
+  for (const auto& face : {std::pair{"intrados", (L - t) / 2}, std::pair{"extrados", (L + t) / 2},
+                            std::pair{"axis", L / 2}}) {
+    const auto& [id, radius] = face;
+    CAPTURE(face.first);
     const auto runs = svg_path_points(svg, id);
     REQUIRE(runs.size() == 1);
     CHECK(runs[0].size() == 2 * 101 - 1);  // the left half's samples and their mirror images

@@ -144,9 +144,10 @@ TEST_CASE("threads: what waits to be written is bounded by rows, whatever the st
       {{"curve", "--eccentricity", "0,0.5,1", "--stations", "100000"}, 2 * (std::size_t{1} << 16) + 1000},
       {{"curve", "--eccentricity", "0:1:200", "--stations", "2000"}, (std::size_t{1} << 16) + 4096 * 200},
       {{"profile", "--eccentricity", "0:1:3", "--stations", "10000"}, 2 * (std::size_t{1} << 16) + 4096 * 400}};
-  for (const auto& [command, bound] : sweeps) {
-    CAPTURE(command[0]);
-    CAPTURE(command[4]);
+  for (const auto& sweep : sweeps) {
+    const auto& [command, bound] = sweep;
+    CAPTURE(sweep.first[0]);
+    CAPTURE(sweep.first[4]);
     std::string one_thread;
     for (const char* threads : {"1", "2"}) {
       std::vector<std::string> args = command;

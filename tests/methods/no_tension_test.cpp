@@ -213,9 +213,9 @@ TEST_CASE("no-tension quadrature: whole arches, pinned springings, point, live a
     s.left.kind = s.right.kind = SupportKind::pinned;
     scenes.push_back({"three-hinged (the crown hinge ends the half)", s});
   }
-  for (const auto& [name, s] : scenes) {
-    CAPTURE(name);
-    const auto [quadrature, reference] = quadrature_against_shooting(s);
+  for (const auto& scene : scenes) {
+    CAPTURE(scene.first);
+    const auto [quadrature, reference] = quadrature_against_shooting(scene.second);
     REQUIRE(quadrature.ok());
     REQUIRE(reference.field);
     CHECK(solution_difference(quadrature, reference) <= kRtol + reference.diagnostics.error_estimate);
