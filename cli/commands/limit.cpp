@@ -35,11 +35,16 @@ enum class ThrustLine { min, max, collapse };
 const std::map<std::string, ThrustLine> kThrustLines = {
     {"min", ThrustLine::min}, {"max", ThrustLine::max}, {"collapse", ThrustLine::collapse}};
 
+// The joints that the loads and the refinement add to a starting ring, for the rows a scene's
+// --thrust-line may print: a generous estimate (a few dozen per refinement round).
+constexpr std::size_t kRefinementRows = 1024;
+
 struct LimitText {
   std::string joints = "radial", weight = "voussoir", thrust_line;
   int joints_count = kDefaultJointsCount;
   double friction = 0;
   int repeats = 0;
+  int threads = 1;
 };
 
 struct LimitCommandOptions {
@@ -58,7 +63,8 @@ void add_analysis_options(CLI::App& cmd, LimitText& t) {
   cmd.add_option("--friction", t.friction, "friction coefficient of the joints (> 0): adds the sliding check")
       ->check(finite_number());
   cmd.add_option("--thrust-line", t.thrust_line, "instead of the summary, one row per joint of the min, max or collapse state");
-  cmd.add_option("--repeats", t.repeats, "solve each scene this many times and add median_seconds (benchmark)")
+  cmd.add_option("--repeats", t.repeats,
+                 "solve each scene this many times and add median_seconds (benchmark; the scenes one after another)")
       ->check(whole_count());
 }
 
@@ -186,6 +192,7 @@ std::string joint_rows(const Columns& columns, const SceneParameters& p, const S
 // not be made.
 int run_limit(LimitCommandOptions& lo, const CLI::App& cmd, std::ostream& out) {
   const LimitText& text = lo.text;
+  check_threads(text.threads);
   const bool lines = !text.thrust_line.empty(), timed = text.repeats > 0;
   Columns columns = limit_columns(lines, timed);
   if (lo.columns.columns == "help") {
@@ -200,15 +207,22 @@ int run_limit(LimitCommandOptions& lo, const CLI::App& cmd, std::ostream& out) {
                      "--loads-file with point or live rows)");
   if (lines) check_rows(plan.size(), o.joints_count);
   columns.select(lo.columns, plan.varying_inputs());
+  // Each scene's analysis has its own LP model, so scenes run in parallel; timed scenes (--repeats) one
+  // after another, each on a core of its own. A scene's joint rows (--thrust-line) wait in the reorder
+  // window while other threads work: write_scenes bounds them by the starting ring's joints and the few
+  // hundred that the loads and the refinement add (one thread beyond kChunkRows).
+  const int threads = timed ? 1 : text.threads;
+  const std::size_t rows_per_scene = lines ? static_cast<std::size_t>(o.joints_count) + kRefinementRows : 1;
   const bool all_answered = write_scenes(
-      plan, columns, out, 1,  // one thread: the timings (--repeats), and Clp kept to one thread
+      plan, columns, out, threads,
       [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
         double median_seconds = 0;
         const LimitResult r = analyse_timed(scene, o, text.repeats, &median_seconds);
         emit(lines ? joint_rows(columns, p, scene, o, r, text.thrust_line)
                    : summary_row(columns, p, scene, o, r, timed, median_seconds));
         return r.status == LimitStatus::success || r.status == LimitStatus::inadmissible;
-      });
+      },
+      rows_per_scene);
   return all_answered ? kExitOk : kExitNotConverged;
 }
 
@@ -219,6 +233,7 @@ Run add_limit_options(CLI::App& cmd) {
   add_scene_options(cmd, options->scene);
   add_analysis_options(cmd, options->text);
   add_column_options(cmd, options->columns);
+  add_threads_option(cmd, options->text.threads);
   return [options, &cmd](std::ostream& out) { return run_limit(*options, cmd, out); };
 }
 

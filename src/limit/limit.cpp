@@ -49,6 +49,7 @@ struct MarginFunction {
   const LimitOptions& options;
   const std::vector<double>& refined;
   double load_factor;
+  limit_detail::LpWorkspace& workspace;
   int solves = 0;
   bool failed = false;
   std::vector<int> basis;  // the last margin's optimal basis: the next thickness starts from it
@@ -58,7 +59,7 @@ struct MarginFunction {
   double operator()(double t) {
     scene.thickness = t;
     const Ring ring = limit_detail::make_ring_at(scene, options, fractions_at(scene, t, options, refined));
-    LimitLp lp(ring, options.friction);
+    LimitLp lp(ring, options.friction, &workspace);
     // A warm start needs the same joints (a load's joints can merge with others at some thickness).
     const bool warm = !basis.empty() && basis_joints == static_cast<int>(ring.joints.size());
     LimitLp::Answer a = lp.margin(load_factor, warm ? &basis : nullptr);
@@ -88,6 +89,18 @@ struct MarginFunction {
 double thinnest(MarginFunction& f, double lo, double f_lo, double hi, double f_hi) {
   int side = 0;
   for (int it = 0; it < 200 && hi - lo > kThicknessTolerance * hi && !f.failed; ++it) {
+    if (f_hi == 0) {
+      // A margin of exactly zero (regula falsi stays there, and bisection would creep up to it): the
+      // root, unless the margin is zero over an interval; a thickness just below, by the tolerance,
+      // that does not stand says which.
+      const double below = hi * (1 - kThicknessTolerance);
+      if (below <= lo) break;
+      const double f_below = f(below);
+      if (f_below < 0) break;
+      hi = below;
+      f_hi = f_below;
+      continue;
+    }
     double c = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
     if (!(c > lo && c < hi)) c = 0.5 * (lo + hi);
     const double f_c = f(c);
@@ -286,6 +299,77 @@ Bracket bracket_up(MarginFunction& f, Bracket b, double cap) {
   return b;
 }
 
+// The first relative step from the previous ring's t_min when bracketing the next one: a refinement of
+// the joints moves t_min by less than this, mostly (the steps grow fourfold when it moves more).
+constexpr double kNearStep = 1e-3;
+// The first step from t0, relative, in multiples of the margin there (see bracket_near).
+constexpr double kNearMarginSteps = 10.0;
+
+// A bracket around t0, the t_min of the previous (coarser) ring, within (floor, ceiling): from t0 down
+// while it stands, or up while it does not, by relative steps that grow fourfold; a step up that reaches
+// the ceiling ends there, where f(ceiling) = f_ceiling (NaN: unknown).
+Bracket bracket_near(MarginFunction& f, double t0, double floor, double ceiling, double f_ceiling) {
+  Bracket b{t0, f(t0), t0, 0.0};
+  // The margin is a relative distance of the thrust line from the faces, of the order of the relative
+  // change of thickness: a margin near zero at t0 puts the root that close, so try a step of a few
+  // times it first (the tolerance for a margin of exactly zero).
+  double step = std::clamp(kNearMarginSteps * std::abs(b.f_lo), kThicknessTolerance, kNearStep);
+  if (b.f_lo >= 0) {
+    b.f_hi = b.f_lo;
+    for (int i = 0; i < 60 && !f.failed && b.hi * (1 - step) >= floor; ++i) {
+      b.lo = b.hi * (1 - step);
+      b.f_lo = f(b.lo);
+      if (b.f_lo < 0) return {b.lo, b.f_lo, b.hi, b.f_hi, true};
+      b.hi = b.lo;
+      b.f_hi = b.f_lo;
+      step = std::min(std::max(4 * step, kNearStep), 0.5);
+    }
+    return b;
+  }
+  for (int i = 0; i < 60 && !f.failed && b.lo < ceiling; ++i, step = std::min(4 * step, 1.0)) {
+    b.hi = std::min(b.lo * (1 + step), ceiling);
+    b.f_hi = b.hi == ceiling && !std::isnan(f_ceiling) ? f_ceiling : f(b.hi);
+    if (b.f_hi >= 0) return {b.lo, b.f_lo, b.hi, b.f_hi, true};
+    b.lo = b.hi;
+    b.f_lo = b.f_hi;
+  }
+  return b;
+}
+
+// Where the search for t_min ended: t_min, or NaN when the bracket was not found (then below `hi`
+// when the arch stands at every thickness tried).
+struct Thinnest {
+  double t_min = kNaN;
+  bool bracketed = false;
+  double hi = 0;
+};
+
+// t_min of the arch of thickness t whose margin there is `margin` (admissible: its thrust programs
+// feasible too), starting from `near` (the previous ring's t_min; NaN: none) when it lies below the
+// thickness that stands (or above t when the arch does not).
+Thinnest search_thinnest(MarginFunction& f, double t, double margin, bool admissible, double floor, double cap,
+                         double near) {
+  Thinnest out;
+  if (!admissible && margin >= 0) {  // a zero margin whose thrust programs are infeasible: t is t_min to round-off
+    out.t_min = t;
+    return out;
+  }
+  Bracket bracket{t, margin, t, margin};
+  bool warm = false;
+  if (!std::isnan(near) && (admissible ? near > floor && near < t : near > t && near < cap)) {
+    bracket = bracket_near(f, near, admissible ? floor : t, admissible ? t : cap, admissible ? margin : kNaN);
+    warm = bracket.found;
+  }
+  if (!warm) {
+    bracket = Bracket{t, margin, t, margin};
+    bracket = admissible ? bracket_down(f, bracket, floor) : bracket_up(f, bracket, cap);
+  }
+  out.bracketed = bracket.found;
+  out.hi = bracket.hi;
+  if (bracket.found && !f.failed) out.t_min = thinnest(f, bracket.lo, bracket.f_lo, bracket.hi, bracket.f_hi);
+  return out;
+}
+
 // One analysis on the ring whose joints are `refined` and the loads' (fractions_at), and where the next
 // ring should be finer: next to every hinge of its states and of the thinnest arch.
 struct Round {
@@ -293,7 +377,8 @@ struct Round {
   std::vector<double> refinement;
 };
 
-Round analyse_round(const Scene& scene, const LimitOptions& options, const std::vector<double>& refined) {
+Round analyse_round(const Scene& scene, const LimitOptions& options, const std::vector<double>& refined,
+                    double previous_t_min) {
   const Curve& curve = *scene.curve;
   const Ring ring = limit_detail::make_ring_at(scene, options, fractions_at(scene, scene.thickness, options, refined));
   Round round;
@@ -306,7 +391,8 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   const double load_factor = live ? 1.0 : 0.0;  // the H range and t_min: under the loads as given
 
   r.V = 0.5 * (ring.total_dead() + ring.total_live());
-  LimitLp lp(ring, options.friction);
+  limit_detail::LpWorkspace workspace;
+  LimitLp lp(ring, options.friction, &workspace);
   auto fail = [&](const char* problem) {
     r.status = LimitStatus::lp_failure;
     r.message = fmt::format("the LP of {} stopped without an answer", problem);
@@ -346,17 +432,15 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   r.lp_solves += lp.solves();
 
   // t_min: bracket the root of the margin, then Illinois.
-  MarginFunction f{scene,        options, refined, load_factor, 0, false, margin.basis,
+  MarginFunction f{scene,        options, refined, load_factor, workspace, 0, false, margin.basis,
                    std::numeric_limits<double>::infinity(), {}, static_cast<int>(ring.joints.size())};
   const double t = scene.thickness;
   const double t_cap = 0.99 * max_thickness(curve);
-  Bracket bracket{t, margin.margin, t, margin.margin};
-  if (admissible) bracket = bracket_down(f, bracket, kThinnestResolved * curve.span());
-  else if (margin.margin >= 0) r.thickness_min = t;  // a zero margin whose thrust programs are infeasible: t is t_min to round-off
-  else bracket = bracket_up(f, bracket, t_cap);
-  const bool bracketed = bracket.found;
-  const double hi = bracket.hi;
-  if (bracketed && !f.failed) r.thickness_min = thinnest(f, bracket.lo, bracket.f_lo, bracket.hi, bracket.f_hi);
+  const Thinnest thinnest_arch =
+      search_thinnest(f, t, margin.margin, admissible, kThinnestResolved * curve.span(), t_cap, previous_t_min);
+  r.thickness_min = thinnest_arch.t_min;
+  const bool bracketed = thinnest_arch.bracketed || !std::isnan(thinnest_arch.t_min);
+  const double hi = thinnest_arch.hi;
   r.lp_solves += f.solves;
   if (f.failed) {
     r.status = LimitStatus::lp_failure;
@@ -420,7 +504,7 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
   std::vector<double> refined = limit_detail::uniform_fractions(options.joints_count);
-  Round round = analyse_round(scene, options, refined);
+  Round round = analyse_round(scene, options, refined, kNaN);
   int solves = round.result.lp_solves;
   double change = std::numeric_limits<double>::infinity();
   // Converged after two refinements in a row that moved no number by more than the tolerance: one alone
@@ -434,7 +518,7 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
     }
     refined.insert(refined.end(), round.refinement.begin(), round.refinement.end());
     refined = limit_detail::merged_fractions(std::move(refined));
-    Round next = analyse_round(scene, options, refined);
+    Round next = analyse_round(scene, options, refined, round.result.thickness_min);
     solves += next.result.lp_solves;
     change = next.result.status == LimitStatus::lp_failure ? change : largest_change(round.result, next.result);
     round = std::move(next);

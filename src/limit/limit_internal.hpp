@@ -34,6 +34,22 @@ void add_refinement(const Ring& ring, const std::vector<Hinge>& hinges, std::vec
 // The ring of the scene (as make_ring) with its joints at `fractions` (as merged_fractions returns them).
 Ring make_ring_at(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions);
 
+// The LP library's model, kept from one program to the next so that each reuses its work areas
+// instead of making its own: one per round of an analysis, so never shared between threads (the library's objects
+// are not thread-safe).
+class LpWorkspace {
+ public:
+  LpWorkspace();
+  ~LpWorkspace();
+  LpWorkspace(const LpWorkspace&) = delete;
+  LpWorkspace& operator=(const LpWorkspace&) = delete;
+
+ private:
+  friend class LimitLp;
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
 // The linear programs of one ring and its loads. Unknowns: the thrust H, the left support's vertical
 // reaction V and moment M about the origin, the load factor lambda and the margin mu. Joint j carries
 // F_j = (H, V - D_j - lambda P_j) with moment m_j = M - MD_j - lambda MP_j about the origin; the
@@ -42,7 +58,8 @@ Ring make_ring_at(const Scene& scene, const LimitOptions& options, const std::ve
 // live, in magnitude). At a pin (Ring::pins) also m_j - A x F_j = 0, A the joint's axis point.
 class LimitLp {
  public:
-  LimitLp(const Ring& ring, double friction);
+  // `workspace`: the model to solve in (nullptr: one of its own); it must outlive this.
+  LimitLp(const Ring& ring, double friction, LpWorkspace* workspace = nullptr);
   ~LimitLp();
   LimitLp(const LimitLp&) = delete;
   LimitLp& operator=(const LimitLp&) = delete;
@@ -66,6 +83,7 @@ class LimitLp {
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
+  std::unique_ptr<LpWorkspace> own_workspace_;
   int solves_ = 0;
 };
 

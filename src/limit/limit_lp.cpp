@@ -46,7 +46,25 @@ struct Inequality {
 
 }  // namespace
 
+struct LpWorkspace::Impl {
+  ClpSimplex model;
+  Impl() {
+    model.setLogLevel(0);
+    // The program is scaled already (forces in W, lengths in L: coefficients of order one); Clp's own
+    // scaling made it report "optimal" answers that were infeasible once unscaled (secondary status 3).
+    model.scaling(0);
+    // Clp's dual feasibility tolerance is how far the thrust line may stray outside a joint (in units
+    // of W L): its default 1e-7 let the collapse multiplier exceed the kinematic one by 1e-6.
+    model.setDualTolerance(kFeasibility);
+    model.setPrimalTolerance(kFeasibility);
+  }
+};
+
+LpWorkspace::LpWorkspace() : impl_(std::make_unique<Impl>()) {}
+LpWorkspace::~LpWorkspace() = default;
+
 struct LimitLp::Impl {
+  ClpSimplex* model = nullptr;
   std::vector<Inequality> rows;
   double weight = 1, span = 1;  // the scales: forces in W, lengths in L
 
@@ -55,7 +73,12 @@ struct LimitLp::Impl {
                   const std::vector<int>* warm = nullptr) const;
 };
 
-LimitLp::LimitLp(const Ring& ring, double friction) : impl_(std::make_unique<Impl>()) {
+LimitLp::LimitLp(const Ring& ring, double friction, LpWorkspace* workspace) : impl_(std::make_unique<Impl>()) {
+  if (!workspace) {
+    own_workspace_ = std::make_unique<LpWorkspace>();
+    workspace = own_workspace_.get();
+  }
+  impl_->model = &workspace->impl_->model;
   // The force scale: every load in magnitude (1 for a ring loaded with nothing, where any scale will do).
   double W = 0;
   for (const Voussoir& v : ring.voussoirs) W += std::abs(v.dead().force) + std::abs(v.live.force);
@@ -145,15 +168,7 @@ LimitLp::Answer LimitLp::Impl::optimise(Column target, bool maximise, const std:
   std::vector<double> rhs(m, 0.0);  // A^T y = c: c is +-1 on the target
   for (int k = 0; k < m; ++k)
     if (free[k] == target) rhs[k] = maximise ? 1.0 : -1.0;
-  ClpSimplex model;
-  model.setLogLevel(0);
-  // The program is scaled already (forces in W, lengths in L: coefficients of order one); Clp's own
-  // scaling made it report "optimal" answers that were infeasible once unscaled (secondary status 3).
-  model.scaling(0);
-  // Clp's dual feasibility tolerance is how far the thrust line may stray outside a joint (in units of
-  // W L): its default 1e-7 let the collapse multiplier exceed the kinematic one by 1e-6.
-  model.setDualTolerance(kFeasibility);
-  model.setPrimalTolerance(kFeasibility);
+  ClpSimplex& model = *this->model;
   model.loadProblem(columns, m, start.data(), index.data(), value.data(), column_lower.data(), column_upper.data(),
                     cost.data(), rhs.data(), rhs.data());
   model.setOptimizationDirection(1.0);
@@ -169,6 +184,8 @@ LimitLp::Answer LimitLp::Impl::optimise(Column target, bool maximise, const std:
       while (c < columns && kept[c] < r) ++c;
       if (c < columns && kept[c] == r) model.setColumnStatus(c, ClpSimplex::basic);
     }
+  } else {
+    model.createStatus();  // the slack basis, whatever the workspace's previous program left
   }
   model.dual();
   Answer a;

@@ -149,6 +149,9 @@ TEST_CASE("cli: limit refuses bad input with one line and exit 2") {
       {"--thrust-line", "collapse", "--fill-density", "1800", "--fill-height-ratio", "0.5"},
       {"--thickness-ratio", "1.2"},
       {"--repeats", "-1"},
+      {"--threads", "0"},
+      {"--threads", "257"},
+      {"--threads", "two"},
   };
   for (const auto& args : cases) {
     std::string joined;
@@ -160,4 +163,26 @@ TEST_CASE("cli: limit refuses bad input with one line and exit 2") {
     CHECK(split(r.err, '\n').size() == 1);
     CHECK(r.err.rfind("ogive: ", 0) == 0);
   }
+}
+
+TEST_CASE("cli: limit --threads 2 prints the same bytes as --threads 1, in the scenes' order") {
+  // Scenes of every kind in one sweep: inadmissible ones (t < t_min), point loads with a collapse load
+  // factor, and the largest thrust's joint rows.
+  const std::vector<std::string> sweep = {"--thickness-ratio", "0.04:0.14:12", "--point-load", "0,2e4",
+                                          "--point-load-at", "0.3", "--eccentricity", "0,0.5"};
+  auto with_threads = [&](std::vector<std::string> args, const char* threads) {
+    args.insert(args.end(), {"--threads", threads});
+    return limit_cli(args);
+  };
+  const Run one = with_threads(sweep, "1"), two = with_threads(sweep, "2");
+  REQUIRE(one.status == 0);
+  CHECK(split(one.out, '\n').size() == 1 + 12 * 2 * 2);
+  CHECK(two.status == one.status);
+  CHECK(two.out == one.out);
+  CHECK(two.err == one.err);
+
+  std::vector<std::string> lines = {"--thickness-ratio", "0.06:0.14:6", "--thrust-line", "max", "--joints-count", "41"};
+  const Run lines_one = with_threads(lines, "1"), lines_two = with_threads(lines, "2");
+  REQUIRE(lines_one.status == 0);
+  CHECK(lines_two.out == lines_one.out);
 }

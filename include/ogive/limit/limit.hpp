@@ -64,7 +64,7 @@ const char* to_string(JointOrientation j);
 const char* to_string(WeightModel w);
 
 // The default number of joints of the starting ring (analyse_limit then refines it; see there).
-inline constexpr int kDefaultJointsCount = 401;
+inline constexpr int kDefaultJointsCount = 201;
 inline constexpr int kMinJointsCount = 5;
 inline constexpr int kMaxJointsCount = 20001;
 
