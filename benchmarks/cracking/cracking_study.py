@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The cracking arch along support spreading (issue 13): for the pointed family at t/L = 0.06, 0.08,
+"""The cracking arch along support spreading: for the pointed family at t/L = 0.06, 0.08,
 0.10, H/V of the no-tension model against d/L from 1e-6 to 1e-2 (50 log-spaced movements and d = 0),
 the limit analysis' minimum thrust of the same arch (--weight axis, this model's convention) and where
 the curve comes within 10, 5 and 2 % of it; the paper's DEM residuals beside them. Prints a markdown

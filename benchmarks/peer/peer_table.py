@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The README's comparison with scipy's solve_bvp, from the CSV that benchmarks/work_precision/charts.sh writes.
+"""The comparison with scipy's solve_bvp (benchmarks/peer/README.md, docs/methods.md), from the CSV that benchmarks/work_precision/charts.sh writes.
 
     /usr/bin/python3 benchmarks/peer/peer_table.py [benchmarks/work_precision/paper.csv] [--eccentricity 0.5]
 

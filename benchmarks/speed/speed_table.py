@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The README's speed table: medians of `ogive bench` rows, measured round-robin in one run.
+"""The speed table of benchmarks/speed/README.md and docs/methods.md: medians of `ogive bench` rows, measured round-robin in one run.
 
     /usr/bin/python3 benchmarks/speed/speed_table.py [--ogive build/ogive] [--base OTHER_OGIVE] [--rounds 7]
                                             [--repeats 201] [--no-sweeps] [--sweep-runs 15]
@@ -7,7 +7,7 @@
 Each row is one `ogive bench` call (its own median over --repeats solves); the rows are run in turn,
 --rounds times, so that a machine whose load changes during the run slows every row alike; the table
 gives the median over the rounds of each row's median, and its ratio to the closed form's time on the
-semicircle (the target of issue 14: at most 3x for the smooth curves with auto at rtol 1e-8). With
+semicircle (the target: at most 3x for the smooth curves with auto at rtol 1e-8). With
 --base (a build of an older ogive), the auto and raw single-shooting rows are also run with it, in the
 same rounds, and the table gives its time and the speed-up (its auto chose verified CVODE shooting). Errors are bench's own: against the closed form, or, for
 non-circular curves, against verified multiple shooting at rtol 1e-12 (reference_error).
@@ -16,7 +16,7 @@ Then, unless --no-sweeps, two whole-process measurements (each command run --swe
 alternating, output discarded, wall-clock medians): the raw Adams sweep
 `thrust --eccentricity 0:1:4000 --method shooting --no-verify` on one thread, with its time per scene
 beyond start-up (a 2-scene run's time subtracted), against --base if given; and the 20000-scene catenary
-sweep on one thread and on two, whose outputs must be byte-identical (issue 14: at least 1.7x).
+sweep on one thread and on two, whose outputs must be byte-identical (the target: at least 1.7x).
 
 Prints a Markdown table on stdout; exits 1 if a bench call fails.
 """
@@ -161,7 +161,7 @@ def main():
             else:
                 line += " | |"
         print(line)
-    # Issue 14's bound on multiple shooting: 8 segments at most 2.5 times single shooting, same scene.
+    # The bound on multiple shooting: 8 segments at most 2.5 times single shooting, same scene.
     single = median[("new", "raw shooting adams, eps 0.5")]
     multiple = median[("new", "raw multiple shooting adams 8 segments, eps 0.5")]
     print()

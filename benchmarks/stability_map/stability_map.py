@@ -64,7 +64,7 @@ for name in ["parabola-40.csv", "semicircle-24.csv", "catenary-survey.csv"]:
     SCENES.append(("surveys", f"points {name} no restarts",
                    ["--curve", "points", "--curve-file", os.path.join(CURVES, name), "--ignore-breakpoints"]))
 
-# Whole arches (issue 11): loads, supports and hinges that make a scene asymmetric, solved over the whole
+# Whole arches: loads, supports and hinges that make a scene asymmetric, solved over the whole
 # arch (a fill, symmetric, with --whole-arch). The reference is the closed form where it applies (point
 # loads, supports, hinges on circular arcs), else verified multiple shooting at rtol 1e-12.
 LOADS = os.path.join(ROOT, "data", "loads")

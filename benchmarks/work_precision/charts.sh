@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Every benchmark table and chart of the README, in one run (about 10 minutes on 2 cores):
+# The work-precision data and charts (docs/methods.md, benchmarks/work_precision/README.md), in one run:
 #
 #   bash benchmarks/work_precision/charts.sh [OGIVE]        # OGIVE defaults to build/ogive
 #
