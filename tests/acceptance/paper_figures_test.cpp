@@ -14,15 +14,6 @@ using namespace ogive;
 
 namespace {
 
-Solution closed_form(const Scene& scene, int stations = 0) {
-  Options o;
-  o.method = Method::closed_form;
-  o.stations = stations;
-  return solve(scene, o);
-}
-
-// Two exact methods in floating point agree to round-off times the system's condition (~10^2..10^3).
-constexpr double kTwoExactMethods = 1e-11;
 // Tolerances for readings off the paper's figures and text.
 constexpr double kFigureReading = 0.05;  // a value read off a plotted curve, relative
 

@@ -17,42 +17,17 @@
 #include <fmt/format.h>
 
 #include "ogive/geometry/curve_families.hpp"
+#include "support/curves.hpp"
 #include "support/tolerances.hpp"
 
 using namespace ogive;
+using namespace ogive::test;
 
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 // Fourth-order central differences: truncation ~d^4 f^(5) / 30, round-off ~1e-16 L / d.
 constexpr double kFiniteDifference = 1e-9;
-
-// Fourth-order central difference of g at s with step d.
-double derivative(const std::function<double(double)>& g, double s, double d) {
-  return (-g(s + 2 * d) + 8 * g(s + d) - 8 * g(s - d) + g(s - 2 * d)) / (12 * d);
-}
-
-// The default composite-Gauss first moment of a curve (Curve::first_moment_x, not the override).
-struct DefaultMoment final : Curve {
-  std::shared_ptr<const Curve> inner;
-  std::string family() const override { return "quadrature"; }
-  double span() const override { return inner->span(); }
-  double length() const override { return inner->length(); }
-  CurvePoint at(double s) const override { return inner->at(s); }
-  std::vector<double> breakpoints() const override { return inner->breakpoints(); }
-};
-
-double parabola_y(double L, double h, double x) { return 4 * h * x * (L - x) / (L * L); }
-double parabola_theta(double L, double h, double x) { return std::atan(4 * h * (L - 2 * x) / (L * L)); }
-
-std::vector<std::pair<double, double>> parabola_points(double L, double h, int n) {
-  std::vector<std::pair<double, double>> xy;
-  for (int i = 0; i < n; ++i) {
-    const double x = 0.5 * L * i / (n - 1);
-    xy.emplace_back(x, parabola_y(L, h, x));
-  }
-  return xy;
-}
 
 std::string data_file(const char* name) { return std::string(OGIVE_DATA_DIR) + "/curves/" + name; }
 

@@ -18,20 +18,6 @@
 
 using namespace ogive;
 
-namespace {
-
-Solution closed_form(const Scene& scene, int stations = 0) {
-  Options o;
-  o.method = Method::closed_form;
-  o.stations = stations;
-  return solve(scene, o);
-}
-
-// Two exact methods in floating point agree to round-off times the system's condition (~10^2..10^3).
-constexpr double kTwoExactMethods = 1e-11;
-
-}  // namespace
-
 TEST_CASE("closed form: the solution meets all six boundary conditions and global equilibrium") {
   for (double eps : {0.0, 0.3, 0.5, 1.0, 3.0})
     for (double t : {0.06, 0.2})

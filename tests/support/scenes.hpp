@@ -17,6 +17,14 @@ inline Scene paper_scene(double eps, double t_over_L = 0.08, double d_over_L = 0
   return s;
 }
 
+// The scene in closed form, its profile at `stations` stations (0: none).
+inline Solution closed_form(const Scene& scene, int stations = 0) {
+  Options o;
+  o.method = Method::closed_form;
+  o.stations = stations;
+  return solve(scene, o);
+}
+
 // The largest |e| over a solution's profile, in per cent of the kern.
 inline double max_abs_e(const Solution& sol) {
   double m = 0;

@@ -7,6 +7,8 @@
 namespace ogive {
 
 inline constexpr double kExact = 1e-12;  // algebra and exact formulas, after round-off
+// Two exact methods in floating point agree to round-off times the system's condition (~10^2..10^3).
+inline constexpr double kTwoExactMethods = 1e-11;
 
 // |a - b| <= tol * max(|a|, |b|): a relative comparison.
 inline bool close(double a, double b, double tol) {
