@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 
 #include "commands.hpp"
 #include "help.hpp"
@@ -38,25 +39,62 @@ constexpr Subcommand kSubcommands[] = {
      add_limit_options},
 };
 
+// The parse error in the user's words rather than the parser's: an unknown option or a stray value,
+// an option without its value or given twice, a missing subcommand; anything else as the parser says it.
+std::string parse_error_words(CLI::App& app, CLI::App* where, const std::vector<std::string>& names,
+                              const CLI::ParseError& e) {
+  std::string what = e.what();
+  std::replace(what.begin(), what.end(), '\n', ' ');
+  if (dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr) {
+    const std::string command = where == &app ? std::string("ogive") : where->get_name();
+    const std::vector<std::string> extras = app.remaining(true);
+    for (const std::string& word : extras) {
+      const std::string name = word.substr(0, word.find('='));
+      if (name.rfind("--", 0) == 0 && name != "--help" && name != "--version" &&
+          std::find(names.begin(), names.end(), name) == names.end())
+        return fmt::format("{}: unknown option '{}'", command, name);
+    }
+    if (!extras.empty()) {
+      std::string list;
+      for (const std::string& word : extras) list += (list.empty() ? "'" : " '") + word + "'";
+      return fmt::format("{}: unexpected argument{} {} (a value follows its option, e.g. --span 8)", command,
+                         extras.size() > 1 ? "s" : "", list);
+    }
+  }
+  if (dynamic_cast<const CLI::ArgumentMismatch*>(&e) != nullptr) {
+    const std::string option = what.substr(0, what.find(':'));
+    if (what.find("missing") != std::string::npos) return option + ": needs a value (" + option + " VALUE)";
+    if (what.find("At Most") != std::string::npos)
+      return option + ": given more than once (several values are one list a,b,c or a range start:stop:count)";
+  }
+  if (dynamic_cast<const CLI::RequiredError*>(&e) != nullptr && where == &app) {
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+    return "a subcommand comes first: " + list;
+  }
+  return what;
+}
+
 // The one line a parse error prints; for an option nobody knows, the closest option of the subcommand
 // (or subcommand name) is suggested.
 std::string parse_error_line(CLI::App& app, const std::vector<std::string>& args, const CLI::ParseError& e) {
-  std::string what = e.what();
-  std::replace(what.begin(), what.end(), '\n', ' ');
   std::vector<std::string> names;
   CLI::App* where = &app;
   for (CLI::App* sub : app.get_subcommands({}))
     if (sub->parsed()) where = sub;
   for (const CLI::Option* opt : where->get_options())
     for (const std::string& n : opt->get_lnames()) names.push_back("--" + n);
-  if (where == &app)
+  if (where == &app) {
+    names.clear();
     for (CLI::App* sub : app.get_subcommands({})) names.push_back(sub->get_name());
+  }
   std::string hint;
   for (const std::string& word : args)
     if (hint.empty() && std::find(names.begin(), names.end(), word.substr(0, word.find('='))) == names.end() &&
         (word.rfind("--", 0) == 0 || where == &app))
       hint = did_you_mean(word.substr(0, word.find('=')), names);
-  return "ogive: " + what + hint + "\n";
+  const std::string words = parse_error_words(app, where, names, e);
+  return (words.rfind("ogive:", 0) == 0 ? "" : "ogive: ") + words + hint + "\n";
 }
 
 // Help or version: refused with status 2 when the command line holds arguments nobody takes (CLI11

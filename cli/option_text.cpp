@@ -56,7 +56,16 @@ std::string did_you_mean(const std::string& name, const std::vector<std::string>
       best = i;
     }
   }
-  return best == std::string::npos ? "" : " (did you mean '" + candidates[best] + "'?)";
+  if (best != std::string::npos) return " (did you mean '" + candidates[best] + "'?)";
+  // A word cut short ("--thick", "--rise"): the options it begins, up to three of them.
+  std::vector<std::string> longer;
+  if (name.size() >= 5)
+    for (const std::string& c : candidates)
+      if (c.size() > name.size() && c.compare(0, name.size(), name) == 0) longer.push_back("'" + c + "'");
+  if (longer.empty() || longer.size() > 3) return "";
+  std::string list = longer.front();
+  for (std::size_t i = 1; i < longer.size(); ++i) list += (i + 1 == longer.size() ? " or " : ", ") + longer[i];
+  return " (did you mean " + list + "?)";
 }
 
 namespace {

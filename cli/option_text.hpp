@@ -34,7 +34,9 @@ std::vector<std::string> split_names(const std::string& text);
 // as ratios of the span on the command line, so "thickness: ..." names --thickness-ratio.
 std::string as_option_message(const std::string& what);
 
-// " (did you mean 'x'?)" for the candidate closest to a misspelt name (edit distance at most 2), or "".
+// " (did you mean 'x'?)" for the candidate closest to a misspelt name (edit distance at most 2), else
+// for a name cut short (5 characters or more) the one to three candidates it begins
+// (" (did you mean 'a' or 'b'?)"), or "".
 std::string did_you_mean(const std::string& name, const std::vector<std::string>& candidates);
 
 // A file or directory option given as "": UsageError naming it (rather than read as not given);

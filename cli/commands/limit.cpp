@@ -8,6 +8,7 @@
 #include <memory>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -68,6 +69,27 @@ void add_analysis_options(CLI::App& cmd, LimitText& t) {
       ->check(whole_count());
 }
 
+// The scene options that rigid voussoirs without tensile strength do not use, and why: refused when
+// given, and left out of `limit --help`.
+constexpr const char* kMovementWhy =
+    "rigid voussoirs ignore the supports' movements: a spreading support brings the arch to H_min";
+constexpr const char* kElasticWhy =
+    "rigid voussoirs have no stiffness: the material's elastic constants belong to thrust, profile and draw";
+constexpr std::pair<const char*, const char*> kNotForLimit[] = {
+    {"--support-displacement-ratio", kMovementWhy},
+    {"--left-spread-ratio", kMovementWhy},
+    {"--right-spread-ratio", kMovementWhy},
+    {"--left-settlement-ratio", kMovementWhy},
+    {"--right-settlement-ratio", kMovementWhy},
+    {"--left-rotation", kMovementWhy},
+    {"--right-rotation", kMovementWhy},
+    {"--youngs-modulus", kElasticWhy},
+    {"--poisson-ratio", kElasticWhy},
+    {"--shear-coefficient", kElasticWhy},
+    {"--plane-strain", kElasticWhy},
+    {"--section", "the voussoirs carry no tension by construction: --section chooses the elastic analyses' model"},
+};
+
 // The options as the library's, refused with the option's name when they break a rule.
 LimitOptions limit_options(const LimitText& t, const CLI::App& cmd) {
   LimitOptions o;
@@ -78,13 +100,9 @@ LimitOptions limit_options(const LimitText& t, const CLI::App& cmd) {
     throw UsageError(fmt::format("--friction: must be > 0 (omit it for no sliding check), got {}", t.friction));
   o.friction = t.friction;
   // The loads are the scene's (--point-load, --live-load, --fill-density, --loads-file) and so are the
-  // pins (--supports pinned, --crown-hinge); the supports' movements do not enter rigid voussoirs.
-  for (const char* flag : {"--support-displacement-ratio", "--left-spread-ratio", "--right-spread-ratio",
-                           "--left-settlement-ratio", "--right-settlement-ratio", "--left-rotation", "--right-rotation"})
-    if (cmd.count(flag) > 0)
-      throw UsageError(fmt::format("{}: does not apply to limit (rigid voussoirs ignore the supports' movements: a "
-                                   "spreading support brings the arch to H_min)",
-                                   flag));
+  // pins (--supports pinned, --crown-hinge); the rest of the scene options does not enter rigid voussoirs.
+  for (const auto& [flag, why] : kNotForLimit)
+    if (cmd.count(flag) > 0) throw UsageError(fmt::format("{}: does not apply to limit ({})", flag, why));
   if (!t.thrust_line.empty()) lookup(kThrustLines, t.thrust_line, "--thrust-line");
   if (t.repeats < 0 || t.repeats > 100000)
     throw UsageError(fmt::format("--repeats: must lie in [0, 100000] (0: no timing), got {}", t.repeats));
@@ -231,6 +249,7 @@ int run_limit(LimitCommandOptions& lo, const CLI::App& cmd, std::ostream& out) {
 Run add_limit_options(CLI::App& cmd) {
   auto options = std::make_shared<LimitCommandOptions>();
   add_scene_options(cmd, options->scene);
+  for (const auto& [flag, why] : kNotForLimit) cmd.get_option(flag)->group("");  // hidden from --help
   add_analysis_options(cmd, options->text);
   add_column_options(cmd, options->columns);
   add_threads_option(cmd, options->text.threads);

@@ -152,6 +152,11 @@ TEST_CASE("cli: limit refuses bad input with one line and exit 2") {
       {"--threads", "0"},
       {"--threads", "257"},
       {"--threads", "two"},
+      {"--youngs-modulus", "1"},
+      {"--poisson-ratio", "0.3"},
+      {"--shear-coefficient", "1"},
+      {"--plane-strain"},
+      {"--section", "no-tension"},
   };
   for (const auto& args : cases) {
     std::string joined;
@@ -185,4 +190,22 @@ TEST_CASE("cli: limit --threads 2 prints the same bytes as --threads 1, in the s
   const Run lines_one = with_threads(lines, "1"), lines_two = with_threads(lines, "2");
   REQUIRE(lines_one.status == 0);
   CHECK(lines_two.out == lines_one.out);
+}
+
+TEST_CASE("cli: limit names the elastic options it refuses, and its help lists only what it takes") {
+  const Run r = limit_cli({"--youngs-modulus", "1"});
+  CHECK(r.status == 2);
+  CHECK(r.err.find("--youngs-modulus: does not apply to limit (rigid voussoirs have no stiffness") != std::string::npos);
+  const Run help = limit_cli({"--help"});
+  REQUIRE(help.status == 0);
+  for (const char* elastic : {"--youngs-modulus", "--poisson-ratio", "--shear-coefficient", "--plane-strain",
+                              "--section", "--support-displacement-ratio", "--left-spread-ratio"}) {
+    CAPTURE(elastic);
+    CHECK(help.out.find(elastic) == std::string::npos);
+  }
+  for (const char* own : {"--thickness-ratio", "--point-load", "--fill-density", "--supports", "--joints-count",
+                          "--threads"}) {
+    CAPTURE(own);
+    CHECK(help.out.find(own) != std::string::npos);
+  }
 }

@@ -165,6 +165,28 @@ TEST_CASE("help that teaches: a misspelt option or subcommand gets a suggestion 
   CHECK(r.err.find("did you mean '--eccentricity'?") != std::string::npos);
   CHECK(lines(r.err).size() == 1);
   CHECK(run_command({"thrus"}).err.find("did you mean 'thrust'?") != std::string::npos);
+  // A name cut short: the options it begins.
+  const Run short_name = run_command({"thrust", "--thicknes", "0.1"});
+  CHECK(short_name.status == 2);
+  CHECK(short_name.out.empty());
+  CHECK(short_name.err.find("did you mean '--thickness-ratio'?") != std::string::npos);
+  CHECK(run_command({"thrust", "--left-spread", "0"}).err.find("did you mean '--left-spread-ratio'?") !=
+        std::string::npos);
+  // The parser's errors in the user's words: one line that names the option and what it wants.
+  const std::vector<std::pair<std::vector<std::string>, std::string>> worded = {
+      {{"thrust", "--thicknes", "0.1"}, "ogive: thrust: unknown option '--thicknes'"},
+      {{"thrust", "0.3"}, "ogive: thrust: unexpected argument '0.3' (a value follows its option"},
+      {{"thrust", "--span"}, "ogive: --span: needs a value (--span VALUE)"},
+      {{"thrust", "--span", "1", "--span", "2"}, "ogive: --span: given more than once"},
+      {{"frobnicate"}, "ogive: a subcommand comes first: thrust, profile, check, curve, bench, draw, limit"},
+  };
+  for (const auto& [args, words] : worded) {
+    const Run refused = run_command(args);
+    CHECK(refused.status == 2);
+    CHECK(refused.out.empty());
+    CHECK(lines(refused.err).size() == 1);
+    CHECK(refused.err.rfind(words, 0) == 0);
+  }
   // --curve-file - reads the points from standard input: the same rows as the file.
   const std::string path = OGIVE_DATA_DIR "/curves/semicircle-24.csv";
   std::ifstream file(path);
