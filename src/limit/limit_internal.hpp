@@ -34,9 +34,9 @@ void add_refinement(const Ring& ring, const std::vector<Hinge>& hinges, std::vec
 // The ring of the scene (as make_ring) with its joints at `fractions` (as merged_fractions returns them).
 Ring make_ring_at(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions);
 
-// The LP library's model, kept from one program to the next so that each reuses its work areas
-// instead of making its own: one per round of an analysis, so never shared between threads (the library's objects
-// are not thread-safe).
+// What the programs of one round share: Clp's model, made on the first program Clp solves and reused by
+// the next ones instead of making work areas of its own; one per round of an analysis, so never shared
+// between threads (the library's objects are not thread-safe).
 class LpWorkspace {
  public:
   LpWorkspace();
@@ -50,6 +50,10 @@ class LpWorkspace {
   std::unique_ptr<Impl> impl_;
 };
 
+// Which method solves the programs: the dense simplex method (dense_lp.hpp), or COIN-OR Clp (the
+// independent reference the tests compare it with).
+enum class LpSolver { dense, clp };
+
 // The linear programs of one ring and its loads. Unknowns: the thrust H, the left support's vertical
 // reaction V and moment M about the origin, the load factor lambda and the margin mu. Joint j carries
 // F_j = (H, V - D_j - lambda P_j) with moment m_j = M - MD_j - lambda MP_j about the origin; the
@@ -59,7 +63,7 @@ class LpWorkspace {
 class LimitLp {
  public:
   // `workspace`: the model to solve in (nullptr: one of its own); it must outlive this.
-  LimitLp(const Ring& ring, double friction, LpWorkspace* workspace = nullptr);
+  LimitLp(const Ring& ring, double friction, LpWorkspace* workspace = nullptr, LpSolver solver = LpSolver::dense);
   ~LimitLp();
   LimitLp(const LimitLp&) = delete;
   LimitLp& operator=(const LimitLp&) = delete;
@@ -79,6 +83,8 @@ class LimitLp {
   // The largest load factor lambda >= 0 with an admissible state (mu = 0).
   Answer collapse();
   int solves() const { return solves_; }
+  // Programs the dense method handed to Clp (a basis it found singular, or its step limit).
+  int clp_fallbacks() const;
 
  private:
   struct Impl;
