@@ -15,6 +15,8 @@ struct LoadsLeftOfJoints {
   std::vector<VerticalLoad> dead, live;
 };
 LoadsLeftOfJoints loads_left_of_joints(const Ring& ring);
+// The same into `out`, whose storage is reused.
+void loads_left_of_joints(const Ring& ring, LoadsLeftOfJoints& out);
 
 // Joint fractions (Ring::joint_fractions): closer than this are one joint.
 inline constexpr double kFractionGap = 1e-9;
@@ -33,6 +35,24 @@ std::vector<double> merged_fractions(std::vector<double> fractions);
 void add_refinement(const Ring& ring, const std::vector<Hinge>& hinges, std::vector<double>& out);
 // The ring of the scene (as make_ring) with its joints at `fractions` (as merged_fractions returns them).
 Ring make_ring_at(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions);
+
+// Work areas for building ring after ring (the search for t_min builds one per thickness): their storage
+// is kept, so that the heap does not grow and shrink at every ring.
+class RingScratch {
+ public:
+  RingScratch();
+  ~RingScratch();
+  RingScratch(const RingScratch&) = delete;
+  RingScratch& operator=(const RingScratch&) = delete;
+
+ private:
+  friend void make_ring_at(const Scene&, const LimitOptions&, const std::vector<double>&, Ring&, RingScratch&);
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+// make_ring_at written over `ring`, whose storage is reused with the scratch's.
+void make_ring_at(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions, Ring& ring,
+                  RingScratch& scratch);
 
 // What the programs of one round share: Clp's model, made on the first program Clp solves and reused by
 // the next ones instead of making work areas of its own; one per round of an analysis, so never shared
@@ -67,6 +87,8 @@ class LimitLp {
   ~LimitLp();
   LimitLp(const LimitLp&) = delete;
   LimitLp& operator=(const LimitLp&) = delete;
+  // The programs of another ring (another thickness, say), in the storage of this one's.
+  void load(const Ring& ring, double friction);
 
   enum class Outcome { optimal, infeasible, unbounded, failure };
   struct Answer {

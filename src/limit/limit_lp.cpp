@@ -54,8 +54,10 @@ struct Held {
   bool infeasible = false;  // a row of held unknowns only is violated
 };
 
-Held hold(const std::vector<Inequality>& rows, const std::array<double, kUnknowns>& fixed) {
-  Held h;
+// Into `h`, whose storage is reused.
+void hold(const std::vector<Inequality>& rows, const std::array<double, kUnknowns>& fixed, Held& h) {
+  h.free.clear();
+  h.infeasible = false;
   for (int c = 0; c < kUnknowns; ++c)
     if (std::isnan(fixed[c])) h.free.push_back(c);
   h.b.resize(rows.size());
@@ -70,7 +72,6 @@ Held hold(const std::vector<Inequality>& rows, const std::array<double, kUnknown
     // A row of held unknowns only: it holds or the program is infeasible.
     if (!any && (b < -1e-12 || (row.equality && b > 1e-12))) h.infeasible = true;
   }
-  return h;
 }
 
 }  // namespace
@@ -103,6 +104,9 @@ struct LimitLp::Impl {
   std::vector<Inequality> rows;
   double weight = 1, span = 1;  // the scales: forces in W, lengths in L
   mutable int fallbacks = 0;
+  // Work areas kept from one program (and one ring) to the next.
+  LoadsLeftOfJoints left;
+  mutable Held held;
 
   // Maximises (or minimises) unknown `target` with the unknowns in `fixed` (NaN: free) held.
   Answer optimise(Column target, bool maximise, const std::array<double, kUnknowns>& fixed,
@@ -124,6 +128,10 @@ LimitLp::LimitLp(const Ring& ring, double friction, LpWorkspace* workspace, LpSo
   }
   impl_->workspace = workspace->impl_.get();
   impl_->solver = solver;
+  load(ring, friction);
+}
+
+void LimitLp::load(const Ring& ring, double friction) {
   // The force scale: every load in magnitude (1 for a ring loaded with nothing, where any scale will do).
   double W = 0;
   for (const Voussoir& v : ring.voussoirs) W += std::abs(v.dead().force) + std::abs(v.live.force);
@@ -132,7 +140,9 @@ LimitLp::LimitLp(const Ring& ring, double friction, LpWorkspace* workspace, LpSo
   impl_->weight = W;
   impl_->span = L;
   std::vector<Inequality>& rows = impl_->rows;
-  const LoadsLeftOfJoints left = loads_left_of_joints(ring);
+  rows.clear();
+  LoadsLeftOfJoints& left = impl_->left;
+  loads_left_of_joints(ring, left);
   std::size_t pin = 0;
   for (std::size_t j = 0; j < ring.joints.size(); ++j) {
     const Eigen::Vector2d I = ring.joints[j].intrados / L, E = ring.joints[j].extrados / L;
@@ -190,7 +200,8 @@ LimitLp::Answer LimitLp::Impl::unscaled(std::array<double, kUnknowns> z, Column 
 
 LimitLp::Answer LimitLp::Impl::optimise(Column target, bool maximise, const std::array<double, kUnknowns>& fixed,
                                         const std::vector<int>* warm) const {
-  const Held h = hold(rows, fixed);
+  Held& h = held;
+  hold(rows, fixed, h);
   if (h.infeasible) {
     Answer infeasible;
     infeasible.outcome = Outcome::infeasible;

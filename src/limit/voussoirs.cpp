@@ -3,6 +3,7 @@
 #include <array>
 #include <limits>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <utility>
 #include <stdexcept>
@@ -163,8 +164,9 @@ CrownEnds crown_ends(const SideView& side, double thickness, double span) {
 // The joints and voussoirs of one side, with their self-weight and fill: the springing bed, a joint at
 // each of `fractions` (ascending in (0, 1): its intrados at that fraction of the intrados' arc length to
 // the crown's vertical) and the crown joint.
-SideRing make_side(const SideView& side, double thickness, double unit_weight, const std::vector<FillLoad>& fills,
-                   double gravity, const LimitOptions& options, const std::vector<double>& fractions, double span) {
+void make_side(const SideView& side, double thickness, double unit_weight, const std::vector<FillLoad>& fills,
+               double gravity, const LimitOptions& options, const std::vector<double>& fractions, double span,
+               SideRing& out) {
   const double S = side.length(), half_t = 0.5 * thickness, xc = side.crown_x();
   const int m = static_cast<int>(fractions.size()) + 1;  // voussoirs per side
   const SideExtrados extrados(side, thickness, span);
@@ -182,9 +184,8 @@ SideRing make_side(const SideView& side, double thickness, double unit_weight, c
     h.s_axis = s_axis;
     return h;
   };
-  SideRing out;
   std::vector<SideJoint>& joints = out.joints;
-  joints.reserve(m + 1);
+  joints.clear();
   joints.push_back(make_joint(0.0, 0.0, 0.0));  // the springing bed, normal to the axis
   for (int j = 1; j < m; ++j) {
     // Both orientations space the joints over the part of the arch whose joints cut it in two: radial
@@ -204,7 +205,7 @@ SideRing make_side(const SideView& side, double thickness, double unit_weight, c
   joints.push_back(crown);
 
   const double x_min = side.at(0.0).x;  // the springing's axis point: the span starts there
-  out.voussoirs.resize(m);
+  out.voussoirs.assign(m, Voussoir{});
   for (int k = 0; k < m; ++k) {
     const SideJoint &a = joints[k], &b = joints[k + 1];
     Voussoir& v = out.voussoirs[k];
@@ -237,7 +238,6 @@ SideRing make_side(const SideView& side, double thickness, double unit_weight, c
         v.fill += fill_load(side, extrados, f, gravity, 0.0, x_min, a.s_axis, b.s_axis, span);
     }
   }
-  return out;
 }
 
 // Where a side's joints must lie for a hinge to form where a load's line of action meets the faces
@@ -332,9 +332,11 @@ void add_live_loads(Ring& ring, const Loads& loads, WeightModel w) {
     }
 }
 
-// The ring of any curve with the self-weight and fills (make_ring's two forms).
-Ring build_ring(const Curve& curve, double thickness, double unit_weight, const std::vector<FillLoad>& fills,
-                double gravity, const LimitOptions& options, const std::vector<double>& fractions) {
+// The ring of any curve with the self-weight and fills (make_ring's two forms), written over `ring`
+// (its vectors' storage reused) with the sides built in `scratch`.
+void build_ring(const Curve& curve, double thickness, double unit_weight, const std::vector<FillLoad>& fills,
+                double gravity, const LimitOptions& options, const std::vector<double>& fractions, Ring& ring,
+                std::array<SideRing, 2>& scratch) {
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
   if (!std::isfinite(unit_weight) || !(unit_weight >= 0))
@@ -345,13 +347,13 @@ Ring build_ring(const Curve& curve, double thickness, double unit_weight, const 
         max_thickness(curve), thickness));
   const double L = curve.span();
   const SideView left_view(curve, false);
-  const SideRing left = make_side(left_view, thickness, unit_weight, fills, gravity, options, fractions, L);
-  Ring ring;
+  SideRing& left = scratch[0];
+  make_side(left_view, thickness, unit_weight, fills, gravity, options, fractions, L, left);
   ring.span = L;
   ring.joint_fractions = fractions;
+  ring.pins.clear();
   const int m = static_cast<int>(left.voussoirs.size());
-  ring.joints.reserve(2 * m + 1);
-  ring.voussoirs.reserve(2 * m);
+  ring.joints.clear();
   for (const SideJoint& h : left.joints) ring.joints.push_back(h.joint);
   ring.voussoirs = left.voussoirs;
   if (curve.extent() == CurveExtent::half) {
@@ -368,10 +370,11 @@ Ring build_ring(const Curve& curve, double thickness, double unit_weight, const 
       v.fill.moment = v.fill.force * L - v.fill.moment;
       ring.voussoirs.push_back(v);
     }
-    return ring;
+    return;
   }
   const SideView right_view(curve, true);
-  const SideRing right = make_side(right_view, thickness, unit_weight, fills, gravity, options, fractions, L);
+  SideRing& right = scratch[1];
+  make_side(right_view, thickness, unit_weight, fills, gravity, options, fractions, L, right);
   // Both sides end on the crown's vertical; at a kink the two sides' faces meet there only when the
   // kink is symmetric (else the vertical joint would not cut the arch in two).
   const Joint a = left.joints.back().joint, b = to_curve(right_view, right.joints.back().joint);
@@ -383,6 +386,13 @@ Ring build_ring(const Curve& curve, double thickness, double unit_weight, const 
         curve.crown(), mismatch));
   for (int j = m - 1; j >= 0; --j) ring.joints.push_back(to_curve(right_view, right.joints[j].joint));
   for (int k = m - 1; k >= 0; --k) ring.voussoirs.push_back(to_curve(right_view, right.voussoirs[k]));
+}
+
+Ring build_ring(const Curve& curve, double thickness, double unit_weight, const std::vector<FillLoad>& fills,
+                double gravity, const LimitOptions& options, const std::vector<double>& fractions) {
+  Ring ring;
+  std::array<SideRing, 2> scratch;
+  build_ring(curve, thickness, unit_weight, fills, gravity, options, fractions, ring, scratch);
   return ring;
 }
 
@@ -504,22 +514,37 @@ void add_refinement(const Ring& ring, const std::vector<Hinge>& hinges, std::vec
   }
 }
 
-Ring make_ring_at(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions) {
+struct RingScratch::Impl {
+  std::array<SideRing, 2> sides;
+};
+
+RingScratch::RingScratch() : impl_(std::make_unique<Impl>()) {}
+RingScratch::~RingScratch() = default;
+
+void make_ring_at(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions, Ring& ring,
+                  RingScratch& scratch) {
   if (!scene.curve) throw std::invalid_argument("curve: a scene needs a generator curve");
   const Material& m = scene.material;
-  Ring ring = build_ring(*scene.curve, scene.thickness, m.density * m.gravity, scene.loads.fills, m.gravity, options,
-                         fractions);
+  build_ring(*scene.curve, scene.thickness, m.density * m.gravity, scene.loads.fills, m.gravity, options, fractions,
+             ring, scratch.impl_->sides);
   add_live_loads(ring, scene.loads, options.weight);
   const int last = static_cast<int>(ring.joints.size()) - 1;
   if (scene.left.kind == SupportKind::pinned) ring.pins.push_back(0);
   if (scene.crown_hinge) ring.pins.push_back(ring.crown_joint());
   if (scene.right.kind == SupportKind::pinned) ring.pins.push_back(last);
+}
+
+Ring make_ring_at(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions) {
+  Ring ring;
+  RingScratch scratch;
+  make_ring_at(scene, options, fractions, ring, scratch);
   return ring;
 }
 
-LoadsLeftOfJoints loads_left_of_joints(const Ring& ring) {
+void loads_left_of_joints(const Ring& ring, LoadsLeftOfJoints& out) {
   const std::size_t n = ring.joints.size();
-  LoadsLeftOfJoints out{std::vector<VerticalLoad>(n), std::vector<VerticalLoad>(n)};
+  out.dead.assign(n, VerticalLoad{});
+  out.live.assign(n, VerticalLoad{});
   for (std::size_t j = 1; j < n; ++j) {
     const Voussoir& v = ring.voussoirs[j - 1];
     out.dead[j] = out.dead[j - 1];
@@ -527,6 +552,11 @@ LoadsLeftOfJoints loads_left_of_joints(const Ring& ring) {
     out.live[j] = out.live[j - 1];
     out.live[j] += v.live;
   }
+}
+
+LoadsLeftOfJoints loads_left_of_joints(const Ring& ring) {
+  LoadsLeftOfJoints out;
+  loads_left_of_joints(ring, out);
   return out;
 }
 
