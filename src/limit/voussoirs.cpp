@@ -84,11 +84,41 @@ struct SideJoint {
   double s_intrados = 0, s_extrados = 0, s_axis = 0;
 };
 
-// One side's joints (springing to crown, crown included) and voussoirs in the side's coordinates.
+// The integrals over the piece [a, b] of a side's axis that give the weight and centroid of the voussoir
+// between the radial joints at a and b, whatever the thickness t: the region P(s) + n N(s), |n| <= t/2
+// (N the normal towards the extrados), has the Jacobian 1 - n kappa, so its area is t (b - a) and its
+// first moment t int P ds - t^3 / 12 int kappa N ds (the terms odd in n vanish).
+struct Band {
+  double a = 0, b = 0;
+  Eigen::Vector2d P, kN;  // int P ds, int kappa N ds
+};
+
+// One side's joints (springing to crown, crown included) and voussoirs in the side's coordinates, and
+// its bands: those of the last ring built, which the next one (another thickness, the same joints on a
+// smooth crown) reuses.
 struct SideRing {
   std::vector<SideJoint> joints;
   std::vector<Voussoir> voussoirs;
+  std::vector<Band> bands, previous_bands;
 };
+
+// The band [a, b] of the side: the previous ring's when it had one (`cursor` walks through them in
+// order), else integrated anew; appended to out.bands.
+const Band& band_of(const SideView& side, SideRing& out, std::size_t& cursor, double a, double b) {
+  const std::vector<Band>& previous = out.previous_bands;
+  while (cursor < previous.size() && previous[cursor].a < a) ++cursor;
+  if (cursor < previous.size() && previous[cursor].a == a && previous[cursor].b == b) {
+    out.bands.push_back(previous[cursor]);
+  } else {
+    const Eigen::Vector4d g = integral_between_knots<Eigen::Vector4d>(side.breaks(), a, b, [&](double s) {
+      const CurvePoint q = side.at(s);
+      const double c = std::cos(q.theta), sn = std::sin(q.theta);
+      return Eigen::Vector4d(q.x, q.y, -q.kappa * sn, q.kappa * c);
+    });
+    out.bands.push_back({a, b, g.head<2>(), g.tail<2>()});
+  }
+  return out.bands.back();
+}
 
 // The fill's load on the stretch of a side between arc lengths a < b of the line at offset n (the
 // extrados, n = t/2, or the axis, n = 0) that lies over the span (x >= x_min, the side's springing), as
@@ -175,9 +205,16 @@ void make_side(const SideView& side, double thickness, double unit_weight, const
 
   auto make_joint = [&](double s_in, double s_ex, double s_axis) {
     SideJoint h;
-    h.joint.intrados = face_at(side, -half_t, s_in).p;
-    h.joint.extrados = face_at(side, half_t, s_ex).p;
-    h.joint.axis = face_at(side, 0.0, s_axis).p;
+    if (s_in == s_ex && s_ex == s_axis) {  // a radial joint: one point of the axis serves its three
+      const CurvePoint q = side.at(s_axis);
+      h.joint.intrados = offset(q, -half_t).p;
+      h.joint.extrados = offset(q, half_t).p;
+      h.joint.axis = offset(q, 0.0).p;
+    } else {
+      h.joint.intrados = face_at(side, -half_t, s_in).p;
+      h.joint.extrados = face_at(side, half_t, s_ex).p;
+      h.joint.axis = face_at(side, 0.0, s_axis).p;
+    }
     h.joint.s = side.whole_s(s_axis);
     h.s_intrados = s_in;
     h.s_extrados = s_ex;
@@ -206,17 +243,23 @@ void make_side(const SideView& side, double thickness, double unit_weight, const
 
   const double x_min = side.at(0.0).x;  // the springing's axis point: the span starts there
   out.voussoirs.assign(m, Voussoir{});
+  std::swap(out.bands, out.previous_bands);
+  out.bands.clear();
+  std::size_t cursor = 0;
   for (int k = 0; k < m; ++k) {
     const SideJoint &a = joints[k], &b = joints[k + 1];
     Voussoir& v = out.voussoirs[k];
-    if (options.weight == WeightModel::voussoir) {
-      RegionMoments r;
-      if (a.s_intrados == a.s_extrados && b.s_intrados == b.s_extrados) {  // radial joints: one band
-        r.add_faces<2>(side, {{{-half_t, 1.0}, {half_t, -1.0}}}, a.s_intrados, b.s_intrados);
-      } else {
-        r.add_faces<1>(side, {{{-half_t, 1.0}}}, a.s_intrados, b.s_intrados);
-        r.add_faces<1>(side, {{{half_t, 1.0}}}, b.s_extrados, a.s_extrados);
-      }
+    const bool radial = a.s_intrados == a.s_extrados && a.s_intrados == a.s_axis && b.s_intrados == b.s_extrados &&
+                        b.s_intrados == b.s_axis;
+    if (options.weight == WeightModel::voussoir && radial) {  // one band between radial joints
+      const Band& band = band_of(side, out, cursor, a.s_axis, b.s_axis);
+      const double length = b.s_axis - a.s_axis;
+      v.weight = unit_weight * thickness * length;
+      v.centroid = (band.P - (thickness * thickness / 12.0) * band.kN) / length;
+    } else if (options.weight == WeightModel::voussoir) {
+      RegionMoments r;  // Green's theorem along its faces and joints
+      r.add_faces<1>(side, {{{-half_t, 1.0}}}, a.s_intrados, b.s_intrados);
+      r.add_faces<1>(side, {{{half_t, 1.0}}}, b.s_extrados, a.s_extrados);
       r.add_segment(b.joint.intrados, b.joint.extrados);
       r.add_segment(a.joint.extrados, a.joint.intrados);
       v.weight = unit_weight * r.area;
