@@ -147,9 +147,12 @@ VerticalLoad fill_load(const SideView& side, const SideExtrados& extrados, const
   };
   std::vector<double> knots;
   double from = a;
+  bool submerged = false;  // the excess is positive at the end of some piece
   auto add_root = [&](double to) {
     double lo = from, hi = to, f_lo = excess(lo, nullptr);
-    if (f_lo * excess(hi, nullptr) < 0) {
+    const double f_hi = excess(hi, nullptr);
+    submerged = submerged || f_lo > 0 || f_hi > 0;
+    if (f_lo * f_hi < 0) {
       for (int it = 0; it < 200 && hi - lo > 1e-15 * span; ++it) {
         const double mid = 0.5 * (lo + hi), f_mid = excess(mid, nullptr);
         if ((f_mid < 0) == (f_lo < 0)) lo = mid, f_lo = f_mid; else hi = mid;
@@ -170,6 +173,9 @@ VerticalLoad fill_load(const SideView& side, const SideExtrados& extrados, const
   for (double k : breaks)
     if (k > a && k < b) add_root(k);
   add_root(b);
+  // Each piece between the knots has the sign of its ends (a root inside one is found from them): none
+  // positive, the stretch lies above the fill's level and carries nothing.
+  if (!submerged) return {};
   const Eigen::Vector2d load = integral_between_knots<Eigen::Vector2d>(knots, a, b, [&](double s) {
     Eigen::Vector2d p;
     const double q = unit_weight * std::max(0.0, excess(s, &p));
