@@ -100,6 +100,12 @@ struct SideRing {
   std::vector<SideJoint> joints;
   std::vector<Voussoir> voussoirs;
   std::vector<Band> bands, previous_bands;
+  // The axis point and normal of each radial joint, kept in the same way.
+  struct AxisSample {
+    double s = 0;
+    Eigen::Vector2d point, normal;
+  };
+  std::vector<AxisSample> samples, previous_samples;
 };
 
 // The band [a, b] of the side: the previous ring's when it had one (`cursor` walks through them in
@@ -209,13 +215,26 @@ void make_side(const SideView& side, double thickness, double unit_weight, const
   const double s_extrados_crown = extrados.s_crown();
   const double s_intrados_crown = side.at(S).theta > 1e-12 ? face_at_x(side, -half_t, xc, 0.0, S, span) : S;
 
+  std::swap(out.samples, out.previous_samples);
+  out.samples.clear();
+  std::size_t sample_cursor = 0;
   auto make_joint = [&](double s_in, double s_ex, double s_axis) {
     SideJoint h;
     if (s_in == s_ex && s_ex == s_axis) {  // a radial joint: one point of the axis serves its three
-      const CurvePoint q = side.at(s_axis);
-      h.joint.intrados = offset(q, -half_t).p;
-      h.joint.extrados = offset(q, half_t).p;
-      h.joint.axis = offset(q, 0.0).p;
+      const std::vector<SideRing::AxisSample>& previous = out.previous_samples;
+      while (sample_cursor < previous.size() && previous[sample_cursor].s < s_axis) ++sample_cursor;
+      if (sample_cursor < previous.size() && previous[sample_cursor].s == s_axis) {
+        out.samples.push_back(previous[sample_cursor]);
+      } else {
+        const CurvePoint q = side.at(s_axis);
+        const Eigen::Vector2d normal(-std::sin(q.theta), std::cos(q.theta));
+        out.samples.push_back({s_axis, Eigen::Vector2d(q.x, q.y), normal});
+      }
+      // As offset() computes the face points, from the same numbers.
+      const SideRing::AxisSample& q = out.samples.back();
+      h.joint.intrados = q.point + -half_t * q.normal;
+      h.joint.extrados = q.point + half_t * q.normal;
+      h.joint.axis = q.point + 0.0 * q.normal;
     } else {
       h.joint.intrados = face_at(side, -half_t, s_in).p;
       h.joint.extrados = face_at(side, half_t, s_ex).p;
