@@ -53,7 +53,20 @@ struct Work {
   limit_detail::RingScratch scratch;
   Ring margin_ring;                        // the ring of the thickness the search tries
   std::unique_ptr<LimitLp> lp, margin_lp;  // the round's programs, the search's
+  // The previous round's optimal bases of the margin, the extreme thrusts and the collapse, by row key:
+  // the next, finer ring starts from them (most of its joints are the coarser ring's).
+  std::vector<LimitLp::RowKey> margin_basis, min_basis, max_basis, collapse_basis;
 };
+
+// The program solved from the previous round's basis `keys` (when this ring has all its rows), whose
+// own optimal basis replaces it.
+template <class Solve>
+LimitLp::Answer solve_warm(const LimitLp& lp, std::vector<LimitLp::RowKey>& keys, Solve&& solve) {
+  const std::vector<int> warm = lp.rows(keys);
+  LimitLp::Answer a = solve(warm.empty() ? nullptr : &warm);
+  keys = lp.keys(a.basis);
+  return a;
+}
 
 // The programs of `ring` in work's storage.
 LimitLp& programs_of(const Ring& ring, double friction, Work& work, std::unique_ptr<LimitLp>& lp) {
@@ -421,13 +434,17 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   };
   auto state = [&](const LimitLp::Answer& a) { return thrust_state(ring, a.H, a.V, a.M, a.load_factor); };
 
-  LimitLp::Answer margin = lp.margin(load_factor);
+  using Warm = const std::vector<int>*;
+  LimitLp::Answer margin = solve_warm(lp, work.margin_basis, [&](Warm w) { return lp.margin(load_factor, w); });
   if (margin.outcome == LimitLp::Outcome::infeasible) margin.margin = kNoMargin;
   else if (margin.outcome != LimitLp::Outcome::optimal) return fail("the feasibility margin");
   bool admissible = margin.margin >= 0;
   bool unbounded_thrust = false;
   if (admissible) {
-    const LimitLp::Answer lo = lp.extreme_thrust(load_factor, false), hi = lp.extreme_thrust(load_factor, true);
+    const LimitLp::Answer lo =
+        solve_warm(lp, work.min_basis, [&](Warm w) { return lp.extreme_thrust(load_factor, false, w); });
+    const LimitLp::Answer hi =
+        solve_warm(lp, work.max_basis, [&](Warm w) { return lp.extreme_thrust(load_factor, true, w); });
     if (lo.outcome == LimitLp::Outcome::failure || lo.outcome == LimitLp::Outcome::unbounded)
       return fail("the minimum thrust");
     if (hi.outcome == LimitLp::Outcome::failure) return fail("the maximum thrust");
@@ -440,7 +457,7 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
     }
   }
   if (live) {
-    const LimitLp::Answer c = lp.collapse();
+    const LimitLp::Answer c = solve_warm(lp, work.collapse_basis, [&](Warm w) { return lp.collapse(w); });
     if (c.outcome == LimitLp::Outcome::optimal) {
       r.collapse_state = state(c);
       r.load_factor_mechanism = mechanism_load_factor(ring, r.collapse_state.hinges);

@@ -2,6 +2,7 @@
 // linear programs (src/limit/limit_lp.cpp, the only file that includes the LP library).
 #pragma once
 
+#include <compare>
 #include <memory>
 #include <vector>
 
@@ -97,13 +98,26 @@ class LimitLp {
     std::vector<int> basis;  // the optimal basis (which joint inequalities are tight), to warm-start
   };
   // The smallest or largest H of an admissible state under dead + load_factor * live (mu = 0).
-  Answer extreme_thrust(double load_factor, bool largest);
+  // `warm` (here and below): an optimal basis of the same question to start from (the previous ring's,
+  // translated by rows(keys(...))); ignored unless it is a nonsingular, dual-feasible basis here.
+  Answer extreme_thrust(double load_factor, bool largest, const std::vector<int>* warm = nullptr);
   // The largest margin mu under dead + load_factor * live: >= 0 iff the arch is admissible.
   // `warm`: the basis of the margin of a ring with the same joints count (another thickness), to start
   // from.
   Answer margin(double load_factor, const std::vector<int>* warm = nullptr);
   // The largest load factor lambda >= 0 with an admissible state (mu = 0).
-  Answer collapse();
+  Answer collapse(const std::vector<int>* warm = nullptr);
+  // A row by what it says rather than by its index, which a finer ring changes: the arc length of its
+  // joint (Joint::s) and its place among the joint's rows, or infinity and its place among the sign and
+  // cap rows after the joints.
+  struct RowKey {
+    double s = 0;
+    int place = 0;
+    auto operator<=>(const RowKey&) const = default;
+  };
+  std::vector<RowKey> keys(const std::vector<int>& basis) const;
+  // The rows with those keys here; empty when one of them has none (its joint is not in this ring).
+  std::vector<int> rows(const std::vector<RowKey>& keys) const;
   int solves() const { return solves_; }
   // Programs the dense method handed to Clp (a basis it found singular, or its step limit).
   int clp_fallbacks() const;

@@ -104,6 +104,7 @@ struct LimitLp::Impl {
   std::vector<Inequality> rows;
   double weight = 1, span = 1;  // the scales: forces in W, lengths in L
   mutable int fallbacks = 0;
+  std::vector<RowKey> keys;  // each row's, ascending
   // Work areas kept from one program (and one ring) to the next.
   LoadsLeftOfJoints left;
   mutable Held held;
@@ -144,7 +145,10 @@ void LimitLp::load(const Ring& ring, double friction) {
   LoadsLeftOfJoints& left = impl_->left;
   loads_left_of_joints(ring, left);
   std::size_t pin = 0;
+  std::vector<RowKey>& keys = impl_->keys;
+  keys.clear();
   for (std::size_t j = 0; j < ring.joints.size(); ++j) {
+    const std::size_t first = rows.size();
     const Eigen::Vector2d I = ring.joints[j].intrados / L, E = ring.joints[j].extrados / L;
     const double D = left.dead[j].force / W, MD = left.dead[j].moment / (W * L);
     const double P = left.live[j].force / W, MP = left.live[j].moment / (W * L);
@@ -166,7 +170,9 @@ void LimitLp::load(const Ring& ring, double friction) {
         rows.push_back({{a.x(), a.y(), 0.0, -a.y() * P, 0.0}, a.y() * D});
       }
     }
+    for (std::size_t r = first; r < rows.size(); ++r) keys.push_back({ring.joints[j].s, static_cast<int>(r - first)});
   }
+  const std::size_t tail = rows.size();
   // The sign of H and lambda, and the caps.
   rows.push_back({{-1, 0, 0, 0, 0}, 0.0});
   rows.push_back({{0, 0, 0, -1, 0}, 0.0});
@@ -176,6 +182,8 @@ void LimitLp::load(const Ring& ring, double friction) {
       cap.a[c] = sign;
       rows.push_back(cap);
     }
+  for (std::size_t r = tail; r < rows.size(); ++r)
+    keys.push_back({std::numeric_limits<double>::infinity(), static_cast<int>(r - tail)});
   for (Inequality& row : rows) {
     double sum = 0;
     for (double a : row.a) sum += a * a;
@@ -305,10 +313,27 @@ LimitLp::Answer LimitLp::Impl::clp(const Held& h, const std::array<double, kUnkn
   return a;
 }
 
-LimitLp::Answer LimitLp::extreme_thrust(double load_factor, bool largest) {
+std::vector<LimitLp::RowKey> LimitLp::keys(const std::vector<int>& basis) const {
+  std::vector<RowKey> out;
+  for (int r : basis) out.push_back(impl_->keys[static_cast<std::size_t>(r)]);
+  return out;
+}
+
+std::vector<int> LimitLp::rows(const std::vector<RowKey>& keys) const {
+  std::vector<int> out;
+  const std::vector<RowKey>& all = impl_->keys;
+  for (const RowKey& k : keys) {
+    const auto it = std::lower_bound(all.begin(), all.end(), k);
+    if (it == all.end() || !(*it == k)) return {};
+    out.push_back(static_cast<int>(it - all.begin()));
+  }
+  return out;
+}
+
+LimitLp::Answer LimitLp::extreme_thrust(double load_factor, bool largest, const std::vector<int>* warm) {
   ++solves_;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  return impl_->optimise(kH, largest, {nan, nan, nan, load_factor, 0.0});
+  return impl_->optimise(kH, largest, {nan, nan, nan, load_factor, 0.0}, warm);
 }
 
 LimitLp::Answer LimitLp::margin(double load_factor, const std::vector<int>* warm) {
@@ -317,10 +342,10 @@ LimitLp::Answer LimitLp::margin(double load_factor, const std::vector<int>* warm
   return impl_->optimise(kMu, true, {nan, nan, nan, load_factor, nan}, warm);
 }
 
-LimitLp::Answer LimitLp::collapse() {
+LimitLp::Answer LimitLp::collapse(const std::vector<int>* warm) {
   ++solves_;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  return impl_->optimise(kLambda, true, {nan, nan, nan, nan, 0.0});
+  return impl_->optimise(kLambda, true, {nan, nan, nan, nan, 0.0}, warm);
 }
 
 }  // namespace ogive::limit_detail
