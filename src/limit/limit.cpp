@@ -56,6 +56,12 @@ struct Work {
   // The previous round's optimal bases of the margin, the extreme thrusts and the collapse, by row key:
   // the next, finer ring starts from them (most of its joints are the coarser ring's).
   std::vector<LimitLp::RowKey> margin_basis, min_basis, max_basis, collapse_basis;
+
+  // Before another scene: nothing of the last one is reused, only the storage.
+  void forget() {
+    scratch.forget();
+    for (auto* basis : {&margin_basis, &min_basis, &max_basis, &collapse_basis}) basis->clear();
+  }
 };
 
 // The program solved from the previous round's basis `keys` (when this ring has all its rows), whose
@@ -541,7 +547,11 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
   std::vector<double> refined = limit_detail::uniform_fractions(options.joints_count);
-  Work work;
+  // Each thread keeps its work areas from one analysis to the next (a few hundred kB): freed after every
+  // scene, the memory went back to the system and was faulted in again by the next one, which on the
+  // project's machine took longer than the analysis itself.
+  thread_local Work work;
+  work.forget();
   Round round = analyse_round(scene, options, refined, kNaN, work);
   int solves = round.result.lp_solves;
   double change = std::numeric_limits<double>::infinity();

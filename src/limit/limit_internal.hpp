@@ -45,6 +45,9 @@ class RingScratch {
   ~RingScratch();
   RingScratch(const RingScratch&) = delete;
   RingScratch& operator=(const RingScratch&) = delete;
+  // Forgets the last rings (what the next ring of the same joints would reuse), keeping the storage:
+  // before the rings of another scene.
+  void forget();
 
  private:
   friend void make_ring_at(const Scene&, const LimitOptions&, const std::vector<double>&, Ring&, RingScratch&);

@@ -589,6 +589,15 @@ struct RingScratch::Impl {
 RingScratch::RingScratch() : impl_(std::make_unique<Impl>()) {}
 RingScratch::~RingScratch() = default;
 
+void RingScratch::forget() {
+  for (SideRing& side : impl_->sides) {
+    side.bands.clear();
+    side.previous_bands.clear();
+    side.samples.clear();
+    side.previous_samples.clear();
+  }
+}
+
 void make_ring_at(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions, Ring& ring,
                   RingScratch& scratch) {
   if (!scene.curve) throw std::invalid_argument("curve: a scene needs a generator curve");
