@@ -190,6 +190,17 @@ VerticalLoad fill_load(const SideView& side, const SideExtrados& extrados, const
   return {load.x(), load.y()};
 }
 
+// Whether fill_load along the extrados between joints a and b is zero for a fill up to `level`, known
+// from the joints' extrados points alone: both at or above the level, no break of the side between them
+// and a not before the span's start (then fill_load evaluates its excess at these two points only, and
+// neither is positive).
+bool above_fill(const SideView& side, const SideJoint& a, const SideJoint& b, double level, double x_min) {
+  if (!(a.joint.extrados.y() >= level && b.joint.extrados.y() >= level && a.joint.extrados.x() >= x_min)) return false;
+  for (double k : side.breaks())
+    if (k > a.s_extrados && k < b.s_extrados) return false;
+  return true;
+}
+
 // Where the joints of a side end at the crown: the crown joint is vertical through the crown. At a
 // pointed crown the intrados reaches the crown's vertical before the axis does and the extrados after
 // it. Joints are placed by their intrados' arc length in [0, intrados].
@@ -300,6 +311,7 @@ void make_side(const SideView& side, double thickness, double unit_weight, const
     // The fills over the voussoir's stretch: of the extrados with the true ring, of the axis with the
     // axis model (the elastic model's convention).
     for (const FillLoad& f : fills) {
+      if (options.weight == WeightModel::voussoir && above_fill(side, a, b, f.height_ratio * span, x_min)) continue;
       if (options.weight == WeightModel::voussoir)
         v.fill += fill_load(side, extrados, f, gravity, half_t, x_min, a.s_extrados, b.s_extrados, span);
       else
