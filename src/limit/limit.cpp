@@ -1,6 +1,7 @@
 // Limit analysis: the thrust range, the minimum thickness and the collapse load of a ring of voussoirs.
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -43,27 +44,66 @@ std::vector<double> fractions_at(const Scene& scene, double t, const LimitOption
 // arch: at t_min the margin is zero to the root-finder's tolerance, not to round-off.
 constexpr double kThinnestHingeTolerance = 1e-6;
 
+// What the rounds of one analysis reuse: the LP library's model and the storage of the rings and their
+// programs. The search for t_min builds a ring and its programs for every thickness it tries; freeing
+// them each time made the heap shrink and grow again (the memory returned to the system and faulted in
+// anew), which cost about a third of the time on the project's machine.
+struct Work {
+  limit_detail::LpWorkspace workspace;
+  limit_detail::RingScratch scratch;
+  Ring margin_ring;                        // the ring of the thickness the search tries
+  std::unique_ptr<LimitLp> lp, margin_lp;  // the round's programs, the search's
+  // The previous round's optimal bases of the margin, the extreme thrusts and the collapse, by row key:
+  // the next, finer ring starts from them (most of its joints are the coarser ring's).
+  std::vector<LimitLp::RowKey> margin_basis, min_basis, max_basis, collapse_basis;
+
+  // Before another scene: nothing of the last one is reused, only the storage.
+  void forget() {
+    scratch.forget();
+    for (auto* basis : {&margin_basis, &min_basis, &max_basis, &collapse_basis}) basis->clear();
+  }
+};
+
+// The program solved from the previous round's basis `keys` (when this ring has all its rows), whose
+// own optimal basis replaces it.
+template <class Solve>
+LimitLp::Answer solve_warm(const LimitLp& lp, std::vector<LimitLp::RowKey>& keys, Solve&& solve) {
+  const std::vector<int> warm = lp.rows(keys);
+  LimitLp::Answer a = solve(warm.empty() ? nullptr : &warm);
+  keys = lp.keys(a.basis);
+  return a;
+}
+
+// The programs of `ring` in work's storage.
+LimitLp& programs_of(const Ring& ring, double friction, Work& work, std::unique_ptr<LimitLp>& lp) {
+  if (lp) lp->load(ring, friction);
+  else lp = std::make_unique<LimitLp>(ring, friction, &work.workspace);
+  return *lp;
+}
+
 // The feasibility margin of the arch of the same axis and loads with thickness t (see analyse_limit).
 struct MarginFunction {
   Scene scene;  // a copy whose thickness changes
   const LimitOptions& options;
   const std::vector<double>& refined;
   double load_factor;
-  limit_detail::LpWorkspace& workspace;
+  Work& work;
   int solves = 0;
   bool failed = false;
   std::vector<int> basis;  // the last margin's optimal basis: the next thickness starts from it
   double feasible_t = std::numeric_limits<double>::infinity();
   std::vector<double> feasible_refinement;  // around the hinges of the thinnest admissible arch so far
+  int basis_joints = 0;                     // the joints of the ring whose margin gave `basis`
 
   double operator()(double t) {
     scene.thickness = t;
-    const Ring ring = limit_detail::make_ring_at(scene, options, fractions_at(scene, t, options, refined));
-    LimitLp lp(ring, options.friction, &workspace);
+    Ring& ring = work.margin_ring;
+    limit_detail::make_ring_at(scene, options, fractions_at(scene, t, options, refined), ring, work.scratch);
+    LimitLp& lp = programs_of(ring, options.friction, work, work.margin_lp);
     // A warm start needs the same joints (a load's joints can merge with others at some thickness).
     const bool warm = !basis.empty() && basis_joints == static_cast<int>(ring.joints.size());
     LimitLp::Answer a = lp.margin(load_factor, warm ? &basis : nullptr);
-    solves += lp.solves();
+    ++solves;
     basis = std::move(a.basis);
     basis_joints = static_cast<int>(ring.joints.size());
     // No margin at all (friction can forbid every thrust line, whatever mu): as inadmissible as it gets.
@@ -77,8 +117,6 @@ struct MarginFunction {
     }
     return a.margin;
   }
-
-  int basis_joints = 0;  // the joints of the ring whose margin gave `basis`
 };
 
 // The smallest thickness with margin >= 0, from a bracket lo < hi with f(lo) < 0 <= f(hi): Illinois
@@ -378,12 +416,13 @@ struct Round {
 };
 
 Round analyse_round(const Scene& scene, const LimitOptions& options, const std::vector<double>& refined,
-                    double previous_t_min) {
+                    double previous_t_min, Work& work) {
   const Curve& curve = *scene.curve;
-  const Ring ring = limit_detail::make_ring_at(scene, options, fractions_at(scene, scene.thickness, options, refined));
   Round round;
   LimitResult& r = round.result;
-  r.ring = ring;
+  limit_detail::make_ring_at(scene, options, fractions_at(scene, scene.thickness, options, refined), r.ring,
+                             work.scratch);
+  const Ring& ring = r.ring;
   if (!(ring.total_dead() != 0.0 || ring.has_live_load()))
     throw std::invalid_argument(
         "loads: the ring carries no load (density 0, and the fills lie below the extrados over the whole span)");
@@ -391,23 +430,27 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   const double load_factor = live ? 1.0 : 0.0;  // the H range and t_min: under the loads as given
 
   r.V = 0.5 * (ring.total_dead() + ring.total_live());
-  limit_detail::LpWorkspace workspace;
-  LimitLp lp(ring, options.friction, &workspace);
+  LimitLp& lp = programs_of(ring, options.friction, work, work.lp);
+  const int solves_before = lp.solves();
   auto fail = [&](const char* problem) {
     r.status = LimitStatus::lp_failure;
     r.message = fmt::format("the LP of {} stopped without an answer", problem);
-    r.lp_solves += lp.solves();
+    r.lp_solves += lp.solves() - solves_before;
     return round;
   };
   auto state = [&](const LimitLp::Answer& a) { return thrust_state(ring, a.H, a.V, a.M, a.load_factor); };
 
-  LimitLp::Answer margin = lp.margin(load_factor);
+  using Warm = const std::vector<int>*;
+  LimitLp::Answer margin = solve_warm(lp, work.margin_basis, [&](Warm w) { return lp.margin(load_factor, w); });
   if (margin.outcome == LimitLp::Outcome::infeasible) margin.margin = kNoMargin;
   else if (margin.outcome != LimitLp::Outcome::optimal) return fail("the feasibility margin");
   bool admissible = margin.margin >= 0;
   bool unbounded_thrust = false;
   if (admissible) {
-    const LimitLp::Answer lo = lp.extreme_thrust(load_factor, false), hi = lp.extreme_thrust(load_factor, true);
+    const LimitLp::Answer lo =
+        solve_warm(lp, work.min_basis, [&](Warm w) { return lp.extreme_thrust(load_factor, false, w); });
+    const LimitLp::Answer hi =
+        solve_warm(lp, work.max_basis, [&](Warm w) { return lp.extreme_thrust(load_factor, true, w); });
     if (lo.outcome == LimitLp::Outcome::failure || lo.outcome == LimitLp::Outcome::unbounded)
       return fail("the minimum thrust");
     if (hi.outcome == LimitLp::Outcome::failure) return fail("the maximum thrust");
@@ -420,7 +463,7 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
     }
   }
   if (live) {
-    const LimitLp::Answer c = lp.collapse();
+    const LimitLp::Answer c = solve_warm(lp, work.collapse_basis, [&](Warm w) { return lp.collapse(w); });
     if (c.outcome == LimitLp::Outcome::optimal) {
       r.collapse_state = state(c);
       r.load_factor_mechanism = mechanism_load_factor(ring, r.collapse_state.hinges);
@@ -429,10 +472,10 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
     }
     // infeasible: the dead loads alone cannot stand; unbounded: the live load cannot make a mechanism.
   }
-  r.lp_solves += lp.solves();
+  r.lp_solves += lp.solves() - solves_before;
 
   // t_min: bracket the root of the margin, then Illinois.
-  MarginFunction f{scene,        options, refined, load_factor, workspace, 0, false, margin.basis,
+  MarginFunction f{scene,        options, refined, load_factor, work, 0, false, margin.basis,
                    std::numeric_limits<double>::infinity(), {}, static_cast<int>(ring.joints.size())};
   const double t = scene.thickness;
   const double t_cap = 0.99 * max_thickness(curve);
@@ -504,7 +547,12 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
   std::vector<double> refined = limit_detail::uniform_fractions(options.joints_count);
-  Round round = analyse_round(scene, options, refined, kNaN);
+  // Each thread keeps its work areas from one analysis to the next (a few hundred kB): freed after every
+  // scene, the memory went back to the system and was faulted in again by the next one, which on the
+  // project's machine took longer than the analysis itself.
+  thread_local Work work;
+  work.forget();
+  Round round = analyse_round(scene, options, refined, kNaN, work);
   int solves = round.result.lp_solves;
   double change = std::numeric_limits<double>::infinity();
   // Converged after two refinements in a row that moved no number by more than the tolerance: one alone
@@ -518,7 +566,7 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
     }
     refined.insert(refined.end(), round.refinement.begin(), round.refinement.end());
     refined = limit_detail::merged_fractions(std::move(refined));
-    Round next = analyse_round(scene, options, refined, round.result.thickness_min);
+    Round next = analyse_round(scene, options, refined, round.result.thickness_min, work);
     solves += next.result.lp_solves;
     change = next.result.status == LimitStatus::lp_failure ? change : largest_change(round.result, next.result);
     round = std::move(next);

@@ -2,6 +2,7 @@
 // linear programs (src/limit/limit_lp.cpp, the only file that includes the LP library).
 #pragma once
 
+#include <compare>
 #include <memory>
 #include <vector>
 
@@ -15,6 +16,8 @@ struct LoadsLeftOfJoints {
   std::vector<VerticalLoad> dead, live;
 };
 LoadsLeftOfJoints loads_left_of_joints(const Ring& ring);
+// The same into `out`, whose storage is reused.
+void loads_left_of_joints(const Ring& ring, LoadsLeftOfJoints& out);
 
 // Joint fractions (Ring::joint_fractions): closer than this are one joint.
 inline constexpr double kFractionGap = 1e-9;
@@ -34,9 +37,30 @@ void add_refinement(const Ring& ring, const std::vector<Hinge>& hinges, std::vec
 // The ring of the scene (as make_ring) with its joints at `fractions` (as merged_fractions returns them).
 Ring make_ring_at(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions);
 
-// The LP library's model, kept from one program to the next so that each reuses its work areas
-// instead of making its own: one per round of an analysis, so never shared between threads (the library's objects
-// are not thread-safe).
+// Work areas for building ring after ring (the search for t_min builds one per thickness): their storage
+// is kept, so that the heap does not grow and shrink at every ring.
+class RingScratch {
+ public:
+  RingScratch();
+  ~RingScratch();
+  RingScratch(const RingScratch&) = delete;
+  RingScratch& operator=(const RingScratch&) = delete;
+  // Forgets the last rings (what the next ring of the same joints would reuse), keeping the storage:
+  // before the rings of another scene.
+  void forget();
+
+ private:
+  friend void make_ring_at(const Scene&, const LimitOptions&, const std::vector<double>&, Ring&, RingScratch&);
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+// make_ring_at written over `ring`, whose storage is reused with the scratch's.
+void make_ring_at(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions, Ring& ring,
+                  RingScratch& scratch);
+
+// What the programs of one round share: Clp's model, made on the first program Clp solves and reused by
+// the next ones instead of making work areas of its own; one per round of an analysis, so never shared
+// between threads (the library's objects are not thread-safe).
 class LpWorkspace {
  public:
   LpWorkspace();
@@ -50,6 +74,10 @@ class LpWorkspace {
   std::unique_ptr<Impl> impl_;
 };
 
+// Which method solves the programs: the dense simplex method (dense_lp.hpp), or COIN-OR Clp (the
+// independent reference the tests compare it with).
+enum class LpSolver { dense, clp };
+
 // The linear programs of one ring and its loads. Unknowns: the thrust H, the left support's vertical
 // reaction V and moment M about the origin, the load factor lambda and the margin mu. Joint j carries
 // F_j = (H, V - D_j - lambda P_j) with moment m_j = M - MD_j - lambda MP_j about the origin; the
@@ -59,10 +87,12 @@ class LpWorkspace {
 class LimitLp {
  public:
   // `workspace`: the model to solve in (nullptr: one of its own); it must outlive this.
-  LimitLp(const Ring& ring, double friction, LpWorkspace* workspace = nullptr);
+  LimitLp(const Ring& ring, double friction, LpWorkspace* workspace = nullptr, LpSolver solver = LpSolver::dense);
   ~LimitLp();
   LimitLp(const LimitLp&) = delete;
   LimitLp& operator=(const LimitLp&) = delete;
+  // The programs of another ring (another thickness, say), in the storage of this one's.
+  void load(const Ring& ring, double friction);
 
   enum class Outcome { optimal, infeasible, unbounded, failure };
   struct Answer {
@@ -71,14 +101,29 @@ class LimitLp {
     std::vector<int> basis;  // the optimal basis (which joint inequalities are tight), to warm-start
   };
   // The smallest or largest H of an admissible state under dead + load_factor * live (mu = 0).
-  Answer extreme_thrust(double load_factor, bool largest);
+  // `warm` (here and below): an optimal basis of the same question to start from (the previous ring's,
+  // translated by rows(keys(...))); ignored unless it is a nonsingular, dual-feasible basis here.
+  Answer extreme_thrust(double load_factor, bool largest, const std::vector<int>* warm = nullptr);
   // The largest margin mu under dead + load_factor * live: >= 0 iff the arch is admissible.
   // `warm`: the basis of the margin of a ring with the same joints count (another thickness), to start
   // from.
   Answer margin(double load_factor, const std::vector<int>* warm = nullptr);
   // The largest load factor lambda >= 0 with an admissible state (mu = 0).
-  Answer collapse();
+  Answer collapse(const std::vector<int>* warm = nullptr);
+  // A row by what it says rather than by its index, which a finer ring changes: the arc length of its
+  // joint (Joint::s) and its place among the joint's rows, or infinity and its place among the sign and
+  // cap rows after the joints.
+  struct RowKey {
+    double s = 0;
+    int place = 0;
+    auto operator<=>(const RowKey&) const = default;
+  };
+  std::vector<RowKey> keys(const std::vector<int>& basis) const;
+  // The rows with those keys here; empty when one of them has none (its joint is not in this ring).
+  std::vector<int> rows(const std::vector<RowKey>& keys) const;
   int solves() const { return solves_; }
+  // Programs the dense method handed to Clp (a basis it found singular, or its step limit).
+  int clp_fallbacks() const;
 
  private:
   struct Impl;

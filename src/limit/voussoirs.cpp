@@ -3,6 +3,7 @@
 #include <array>
 #include <limits>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <utility>
 #include <stdexcept>
@@ -83,11 +84,47 @@ struct SideJoint {
   double s_intrados = 0, s_extrados = 0, s_axis = 0;
 };
 
-// One side's joints (springing to crown, crown included) and voussoirs in the side's coordinates.
+// The integrals over the piece [a, b] of a side's axis that give the weight and centroid of the voussoir
+// between the radial joints at a and b, whatever the thickness t: the region P(s) + n N(s), |n| <= t/2
+// (N the normal towards the extrados), has the Jacobian 1 - n kappa, so its area is t (b - a) and its
+// first moment t int P ds - t^3 / 12 int kappa N ds (the terms odd in n vanish).
+struct Band {
+  double a = 0, b = 0;
+  Eigen::Vector2d P, kN;  // int P ds, int kappa N ds
+};
+
+// One side's joints (springing to crown, crown included) and voussoirs in the side's coordinates, and
+// its bands: those of the last ring built, which the next one (another thickness, the same joints on a
+// smooth crown) reuses.
 struct SideRing {
   std::vector<SideJoint> joints;
   std::vector<Voussoir> voussoirs;
+  std::vector<Band> bands, previous_bands;
+  // The axis point and normal of each radial joint, kept in the same way.
+  struct AxisSample {
+    double s = 0;
+    Eigen::Vector2d point, normal;
+  };
+  std::vector<AxisSample> samples, previous_samples;
 };
+
+// The band [a, b] of the side: the previous ring's when it had one (`cursor` walks through them in
+// order), else integrated anew; appended to out.bands.
+const Band& band_of(const SideView& side, SideRing& out, std::size_t& cursor, double a, double b) {
+  const std::vector<Band>& previous = out.previous_bands;
+  while (cursor < previous.size() && previous[cursor].a < a) ++cursor;
+  if (cursor < previous.size() && previous[cursor].a == a && previous[cursor].b == b) {
+    out.bands.push_back(previous[cursor]);
+  } else {
+    const Eigen::Vector4d g = integral_between_knots<Eigen::Vector4d>(side.breaks(), a, b, [&](double s) {
+      const CurvePoint q = side.at(s);
+      const double c = std::cos(q.theta), sn = std::sin(q.theta);
+      return Eigen::Vector4d(q.x, q.y, -q.kappa * sn, q.kappa * c);
+    });
+    out.bands.push_back({a, b, g.head<2>(), g.tail<2>()});
+  }
+  return out.bands.back();
+}
 
 // The fill's load on the stretch of a side between arc lengths a < b of the line at offset n (the
 // extrados, n = t/2, or the axis, n = 0) that lies over the span (x >= x_min, the side's springing), as
@@ -116,9 +153,12 @@ VerticalLoad fill_load(const SideView& side, const SideExtrados& extrados, const
   };
   std::vector<double> knots;
   double from = a;
+  bool submerged = false;  // the excess is positive at the end of some piece
   auto add_root = [&](double to) {
     double lo = from, hi = to, f_lo = excess(lo, nullptr);
-    if (f_lo * excess(hi, nullptr) < 0) {
+    const double f_hi = excess(hi, nullptr);
+    submerged = submerged || f_lo > 0 || f_hi > 0;
+    if (f_lo * f_hi < 0) {
       for (int it = 0; it < 200 && hi - lo > 1e-15 * span; ++it) {
         const double mid = 0.5 * (lo + hi), f_mid = excess(mid, nullptr);
         if ((f_mid < 0) == (f_lo < 0)) lo = mid, f_lo = f_mid; else hi = mid;
@@ -139,12 +179,26 @@ VerticalLoad fill_load(const SideView& side, const SideExtrados& extrados, const
   for (double k : breaks)
     if (k > a && k < b) add_root(k);
   add_root(b);
+  // Each piece between the knots has the sign of its ends (a root inside one is found from them): none
+  // positive, the stretch lies above the fill's level and carries nothing.
+  if (!submerged) return {};
   const Eigen::Vector2d load = integral_between_knots<Eigen::Vector2d>(knots, a, b, [&](double s) {
     Eigen::Vector2d p;
     const double q = unit_weight * std::max(0.0, excess(s, &p));
     return Eigen::Vector2d(q, q * p.x());
   });
   return {load.x(), load.y()};
+}
+
+// Whether fill_load along the extrados between joints a and b is zero for a fill up to `level`, known
+// from the joints' extrados points alone: both at or above the level, no break of the side between them
+// and a not before the span's start (then fill_load evaluates its excess at these two points only, and
+// neither is positive).
+bool above_fill(const SideView& side, const SideJoint& a, const SideJoint& b, double level, double x_min) {
+  if (!(a.joint.extrados.y() >= level && b.joint.extrados.y() >= level && a.joint.extrados.x() >= x_min)) return false;
+  for (double k : side.breaks())
+    if (k > a.s_extrados && k < b.s_extrados) return false;
+  return true;
 }
 
 // Where the joints of a side end at the crown: the crown joint is vertical through the crown. At a
@@ -163,28 +217,48 @@ CrownEnds crown_ends(const SideView& side, double thickness, double span) {
 // The joints and voussoirs of one side, with their self-weight and fill: the springing bed, a joint at
 // each of `fractions` (ascending in (0, 1): its intrados at that fraction of the intrados' arc length to
 // the crown's vertical) and the crown joint.
-SideRing make_side(const SideView& side, double thickness, double unit_weight, const std::vector<FillLoad>& fills,
-                   double gravity, const LimitOptions& options, const std::vector<double>& fractions, double span) {
+void make_side(const SideView& side, double thickness, double unit_weight, const std::vector<FillLoad>& fills,
+               double gravity, const LimitOptions& options, const std::vector<double>& fractions, double span,
+               SideRing& out) {
   const double S = side.length(), half_t = 0.5 * thickness, xc = side.crown_x();
   const int m = static_cast<int>(fractions.size()) + 1;  // voussoirs per side
   const SideExtrados extrados(side, thickness, span);
   const double s_extrados_crown = extrados.s_crown();
   const double s_intrados_crown = side.at(S).theta > 1e-12 ? face_at_x(side, -half_t, xc, 0.0, S, span) : S;
 
+  std::swap(out.samples, out.previous_samples);
+  out.samples.clear();
+  std::size_t sample_cursor = 0;
   auto make_joint = [&](double s_in, double s_ex, double s_axis) {
     SideJoint h;
-    h.joint.intrados = face_at(side, -half_t, s_in).p;
-    h.joint.extrados = face_at(side, half_t, s_ex).p;
-    h.joint.axis = face_at(side, 0.0, s_axis).p;
+    if (s_in == s_ex && s_ex == s_axis) {  // a radial joint: one point of the axis serves its three
+      const std::vector<SideRing::AxisSample>& previous = out.previous_samples;
+      while (sample_cursor < previous.size() && previous[sample_cursor].s < s_axis) ++sample_cursor;
+      if (sample_cursor < previous.size() && previous[sample_cursor].s == s_axis) {
+        out.samples.push_back(previous[sample_cursor]);
+      } else {
+        const CurvePoint q = side.at(s_axis);
+        const Eigen::Vector2d normal(-std::sin(q.theta), std::cos(q.theta));
+        out.samples.push_back({s_axis, Eigen::Vector2d(q.x, q.y), normal});
+      }
+      // As offset() computes the face points, from the same numbers.
+      const SideRing::AxisSample& q = out.samples.back();
+      h.joint.intrados = q.point + -half_t * q.normal;
+      h.joint.extrados = q.point + half_t * q.normal;
+      h.joint.axis = q.point + 0.0 * q.normal;
+    } else {
+      h.joint.intrados = face_at(side, -half_t, s_in).p;
+      h.joint.extrados = face_at(side, half_t, s_ex).p;
+      h.joint.axis = face_at(side, 0.0, s_axis).p;
+    }
     h.joint.s = side.whole_s(s_axis);
     h.s_intrados = s_in;
     h.s_extrados = s_ex;
     h.s_axis = s_axis;
     return h;
   };
-  SideRing out;
   std::vector<SideJoint>& joints = out.joints;
-  joints.reserve(m + 1);
+  joints.clear();
   joints.push_back(make_joint(0.0, 0.0, 0.0));  // the springing bed, normal to the axis
   for (int j = 1; j < m; ++j) {
     // Both orientations space the joints over the part of the arch whose joints cut it in two: radial
@@ -204,18 +278,24 @@ SideRing make_side(const SideView& side, double thickness, double unit_weight, c
   joints.push_back(crown);
 
   const double x_min = side.at(0.0).x;  // the springing's axis point: the span starts there
-  out.voussoirs.resize(m);
+  out.voussoirs.assign(m, Voussoir{});
+  std::swap(out.bands, out.previous_bands);
+  out.bands.clear();
+  std::size_t cursor = 0;
   for (int k = 0; k < m; ++k) {
     const SideJoint &a = joints[k], &b = joints[k + 1];
     Voussoir& v = out.voussoirs[k];
-    if (options.weight == WeightModel::voussoir) {
-      RegionMoments r;
-      if (a.s_intrados == a.s_extrados && b.s_intrados == b.s_extrados) {  // radial joints: one band
-        r.add_faces<2>(side, {{{-half_t, 1.0}, {half_t, -1.0}}}, a.s_intrados, b.s_intrados);
-      } else {
-        r.add_faces<1>(side, {{{-half_t, 1.0}}}, a.s_intrados, b.s_intrados);
-        r.add_faces<1>(side, {{{half_t, 1.0}}}, b.s_extrados, a.s_extrados);
-      }
+    const bool radial = a.s_intrados == a.s_extrados && a.s_intrados == a.s_axis && b.s_intrados == b.s_extrados &&
+                        b.s_intrados == b.s_axis;
+    if (options.weight == WeightModel::voussoir && radial) {  // one band between radial joints
+      const Band& band = band_of(side, out, cursor, a.s_axis, b.s_axis);
+      const double length = b.s_axis - a.s_axis;
+      v.weight = unit_weight * thickness * length;
+      v.centroid = (band.P - (thickness * thickness / 12.0) * band.kN) / length;
+    } else if (options.weight == WeightModel::voussoir) {
+      RegionMoments r;  // Green's theorem along its faces and joints
+      r.add_faces<1>(side, {{{-half_t, 1.0}}}, a.s_intrados, b.s_intrados);
+      r.add_faces<1>(side, {{{half_t, 1.0}}}, b.s_extrados, a.s_extrados);
       r.add_segment(b.joint.intrados, b.joint.extrados);
       r.add_segment(a.joint.extrados, a.joint.intrados);
       v.weight = unit_weight * r.area;
@@ -231,13 +311,13 @@ SideRing make_side(const SideView& side, double thickness, double unit_weight, c
     // The fills over the voussoir's stretch: of the extrados with the true ring, of the axis with the
     // axis model (the elastic model's convention).
     for (const FillLoad& f : fills) {
+      if (options.weight == WeightModel::voussoir && above_fill(side, a, b, f.height_ratio * span, x_min)) continue;
       if (options.weight == WeightModel::voussoir)
         v.fill += fill_load(side, extrados, f, gravity, half_t, x_min, a.s_extrados, b.s_extrados, span);
       else
         v.fill += fill_load(side, extrados, f, gravity, 0.0, x_min, a.s_axis, b.s_axis, span);
     }
   }
-  return out;
 }
 
 // Where a side's joints must lie for a hinge to form where a load's line of action meets the faces
@@ -332,9 +412,11 @@ void add_live_loads(Ring& ring, const Loads& loads, WeightModel w) {
     }
 }
 
-// The ring of any curve with the self-weight and fills (make_ring's two forms).
-Ring build_ring(const Curve& curve, double thickness, double unit_weight, const std::vector<FillLoad>& fills,
-                double gravity, const LimitOptions& options, const std::vector<double>& fractions) {
+// The ring of any curve with the self-weight and fills (make_ring's two forms), written over `ring`
+// (its vectors' storage reused) with the sides built in `scratch`.
+void build_ring(const Curve& curve, double thickness, double unit_weight, const std::vector<FillLoad>& fills,
+                double gravity, const LimitOptions& options, const std::vector<double>& fractions, Ring& ring,
+                std::array<SideRing, 2>& scratch) {
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
   if (!std::isfinite(unit_weight) || !(unit_weight >= 0))
@@ -345,13 +427,13 @@ Ring build_ring(const Curve& curve, double thickness, double unit_weight, const 
         max_thickness(curve), thickness));
   const double L = curve.span();
   const SideView left_view(curve, false);
-  const SideRing left = make_side(left_view, thickness, unit_weight, fills, gravity, options, fractions, L);
-  Ring ring;
+  SideRing& left = scratch[0];
+  make_side(left_view, thickness, unit_weight, fills, gravity, options, fractions, L, left);
   ring.span = L;
   ring.joint_fractions = fractions;
+  ring.pins.clear();
   const int m = static_cast<int>(left.voussoirs.size());
-  ring.joints.reserve(2 * m + 1);
-  ring.voussoirs.reserve(2 * m);
+  ring.joints.clear();
   for (const SideJoint& h : left.joints) ring.joints.push_back(h.joint);
   ring.voussoirs = left.voussoirs;
   if (curve.extent() == CurveExtent::half) {
@@ -368,10 +450,11 @@ Ring build_ring(const Curve& curve, double thickness, double unit_weight, const 
       v.fill.moment = v.fill.force * L - v.fill.moment;
       ring.voussoirs.push_back(v);
     }
-    return ring;
+    return;
   }
   const SideView right_view(curve, true);
-  const SideRing right = make_side(right_view, thickness, unit_weight, fills, gravity, options, fractions, L);
+  SideRing& right = scratch[1];
+  make_side(right_view, thickness, unit_weight, fills, gravity, options, fractions, L, right);
   // Both sides end on the crown's vertical; at a kink the two sides' faces meet there only when the
   // kink is symmetric (else the vertical joint would not cut the arch in two).
   const Joint a = left.joints.back().joint, b = to_curve(right_view, right.joints.back().joint);
@@ -383,6 +466,13 @@ Ring build_ring(const Curve& curve, double thickness, double unit_weight, const 
         curve.crown(), mismatch));
   for (int j = m - 1; j >= 0; --j) ring.joints.push_back(to_curve(right_view, right.joints[j].joint));
   for (int k = m - 1; k >= 0; --k) ring.voussoirs.push_back(to_curve(right_view, right.voussoirs[k]));
+}
+
+Ring build_ring(const Curve& curve, double thickness, double unit_weight, const std::vector<FillLoad>& fills,
+                double gravity, const LimitOptions& options, const std::vector<double>& fractions) {
+  Ring ring;
+  std::array<SideRing, 2> scratch;
+  build_ring(curve, thickness, unit_weight, fills, gravity, options, fractions, ring, scratch);
   return ring;
 }
 
@@ -504,22 +594,46 @@ void add_refinement(const Ring& ring, const std::vector<Hinge>& hinges, std::vec
   }
 }
 
-Ring make_ring_at(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions) {
+struct RingScratch::Impl {
+  std::array<SideRing, 2> sides;
+};
+
+RingScratch::RingScratch() : impl_(std::make_unique<Impl>()) {}
+RingScratch::~RingScratch() = default;
+
+void RingScratch::forget() {
+  for (SideRing& side : impl_->sides) {
+    side.bands.clear();
+    side.previous_bands.clear();
+    side.samples.clear();
+    side.previous_samples.clear();
+  }
+}
+
+void make_ring_at(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions, Ring& ring,
+                  RingScratch& scratch) {
   if (!scene.curve) throw std::invalid_argument("curve: a scene needs a generator curve");
   const Material& m = scene.material;
-  Ring ring = build_ring(*scene.curve, scene.thickness, m.density * m.gravity, scene.loads.fills, m.gravity, options,
-                         fractions);
+  build_ring(*scene.curve, scene.thickness, m.density * m.gravity, scene.loads.fills, m.gravity, options, fractions,
+             ring, scratch.impl_->sides);
   add_live_loads(ring, scene.loads, options.weight);
   const int last = static_cast<int>(ring.joints.size()) - 1;
   if (scene.left.kind == SupportKind::pinned) ring.pins.push_back(0);
   if (scene.crown_hinge) ring.pins.push_back(ring.crown_joint());
   if (scene.right.kind == SupportKind::pinned) ring.pins.push_back(last);
+}
+
+Ring make_ring_at(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions) {
+  Ring ring;
+  RingScratch scratch;
+  make_ring_at(scene, options, fractions, ring, scratch);
   return ring;
 }
 
-LoadsLeftOfJoints loads_left_of_joints(const Ring& ring) {
+void loads_left_of_joints(const Ring& ring, LoadsLeftOfJoints& out) {
   const std::size_t n = ring.joints.size();
-  LoadsLeftOfJoints out{std::vector<VerticalLoad>(n), std::vector<VerticalLoad>(n)};
+  out.dead.assign(n, VerticalLoad{});
+  out.live.assign(n, VerticalLoad{});
   for (std::size_t j = 1; j < n; ++j) {
     const Voussoir& v = ring.voussoirs[j - 1];
     out.dead[j] = out.dead[j - 1];
@@ -527,6 +641,11 @@ LoadsLeftOfJoints loads_left_of_joints(const Ring& ring) {
     out.live[j] = out.live[j - 1];
     out.live[j] += v.live;
   }
+}
+
+LoadsLeftOfJoints loads_left_of_joints(const Ring& ring) {
+  LoadsLeftOfJoints out;
+  loads_left_of_joints(ring, out);
   return out;
 }
 

@@ -11,9 +11,11 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
+#include "ogive/geometry/curve_families.hpp"
 #include "ogive/limit/limit.hpp"
 #include "support/scenes.hpp"
 #include "support/tolerances.hpp"
@@ -460,4 +462,27 @@ TEST_CASE("limit: the three-hinged semicircle (pinned springings, crown hinge) i
   CHECK(close(r.H_max(), H, kSameRing));
   REQUIRE(r.min_state.hinges.size() == 3);
   for (const Hinge& h : r.min_state.hinges) CHECK(h.face == Face::axis);
+}
+
+TEST_CASE("limit: an analysis does not depend on the analyses its thread made before") {
+  // Each thread keeps its work areas (rings, programs, the bands and bases a finer ring reuses) from
+  // one analysis to the next: what it keeps of another scene must not reach this one.
+  Scene a = paper_scene(0.5, 0.1);
+  a.loads.points.push_back({2e4, 0.3});
+  Scene b = scene_of(make_parabolic(10.0, 0.4), 0.9);
+  b.loads.fills.push_back({1800.0, 0.3});
+  LimitResult fresh, after;
+  std::thread([&] { fresh = analyse_limit(a, {}); }).join();
+  std::thread([&] {
+    (void)analyse_limit(b, {});
+    (void)analyse_limit(paper_scene(0.5, 0.12), {});
+    after = analyse_limit(a, {});
+  }).join();
+  CHECK(after.status == fresh.status);
+  CHECK(after.H_min() == fresh.H_min());
+  CHECK(after.H_max() == fresh.H_max());
+  CHECK(after.thickness_min == fresh.thickness_min);
+  CHECK(after.load_factor() == fresh.load_factor());
+  CHECK(after.lp_solves == fresh.lp_solves);
+  CHECK(after.ring.joints.size() == fresh.ring.joints.size());
 }
