@@ -102,6 +102,27 @@ double reaction_difference(const Reactions& a, const Reactions& r, double thickn
   return std::isfinite(worst) ? worst : std::numeric_limits<double>::quiet_NaN();
 }
 
+double roundoff_bound(const Solution& sol) {
+  const double base = sol.diagnostics.condition_estimate * std::numeric_limits<double>::epsilon();
+  if (!sol.model) return kRoundoffProfile * base;
+  const double L = sol.model->scene().span(), t = sol.model->scene().thickness;
+  // The couples' scales are reaction_difference's and profile_difference's.
+  const Reactions& r = sol.reactions;
+  const double F = std::max({std::abs(r.H_left), std::abs(r.V_left), std::abs(r.V_right)});
+  const double reactions = F * L / std::max({std::abs(r.M_left), std::abs(r.M_right), F * t / 6});
+  double bound = base * (kRoundoffFloor + kRoundoffReactions * reactions);
+  if (!sol.profile.empty()) {
+    double Fp = 0, N = 0, M = 0;
+    for (const ArchState& a : sol.profile) {
+      Fp = std::max(Fp, std::hypot(a.N, a.V));
+      N = std::max(N, std::abs(a.N));
+      M = std::max(M, std::abs(a.M));
+    }
+    bound = std::max(bound, kRoundoffProfile * base * std::max(1.0, Fp * L / std::max(M, N * t / 6)));
+  }
+  return std::isfinite(bound) ? bound : kRoundoffProfile * base;
+}
+
 double solution_difference(const Solution& a, const Solution& b) {
   if (!a.field || !b.field) return std::numeric_limits<double>::quiet_NaN();
   const double thickness = b.model->scene().thickness;

@@ -241,6 +241,18 @@ std::int64_t sample_nodes(const ArchModel& model, Panel& panel, int degree) {
   return evaluations;
 }
 
+// The error of the finer of two degrees N and 2N, from the differences d1 = |x_N - x_2N| and
+// d0 = |x_N/2 - x_N|. Where the differences shrink by a ratio q = d1 / d0 <= 1/2 per doubling (converging),
+// the finer degree's error is the tail of the differences still to come, at most d1 q / (1 - q) if they
+// keep shrinking at least geometrically: spectral convergence makes them shrink faster, so the bound
+// errs on the safe side by about d0 / C. Otherwise (no previous difference, or not yet converging) d1
+// itself, which bounds the coarser degree's error.
+double finer_error_bound(double d1, double d0) {
+  if (!(d0 > 0) || !(d1 >= 0)) return d1;
+  const double q = d1 / d0;
+  return q <= 0.5 ? d1 * q / (1 - q) : d1;
+}
+
 }  // namespace
 
 Solution solve_quadrature(std::shared_ptr<const ArchModel> model, const Options& options) {
@@ -287,7 +299,7 @@ Solution solve_quadrature(std::shared_ptr<const ArchModel> model, const Options&
   std::int64_t evaluations = 0;
   // Short panels (a survey's, cut at every point) converge sooner: start lower there; a single long
   // panel starts higher, where it would otherwise spend one more level.
-  int degree = panels.size() > 1 ? kMinChebyshevDegree : 2 * kMinChebyshevDegree;
+  int degree = kMinChebyshevDegree;
   for (Panel& p : panels) evaluations += sample_nodes(*model, p, degree);
   // Without stations, a degree that is not returned needs no field: only its H (its Fx at the springing).
   const bool profiles = options.stations > 0;
@@ -295,6 +307,7 @@ Solution solve_quadrature(std::shared_ptr<const ArchModel> model, const Options&
   Solution coarse_solution = profiles ? make_solution(model, panels, coarse, options) : Solution{};
   Solution sol;
   double estimate = std::numeric_limits<double>::quiet_NaN();
+  double previous_difference = std::numeric_limits<double>::quiet_NaN();
   while (true) {
     degree *= 2;
     for (Panel& p : panels) evaluations += sample_nodes(*model, p, degree);
@@ -307,18 +320,19 @@ Solution solve_quadrature(std::shared_ptr<const ArchModel> model, const Options&
       sol = make_solution(model, panels, fine, options);
       difference = solution_difference(coarse_solution, sol);
     }
-    // Round-off bounds what any degree can show: the estimate never claims less than 10 x eps x the
-    // condition estimate, or x 100 for well-conditioned scenes (the springing state's round-off is
-    // condition x eps; the nested sums over O(1) terms and the profile's measure of M against the kern
-    // lose more: measured 7e-14 = 15 x condition x eps against the closed form on the pointed arch
-    // eps = 2, condition 21). Once two degrees agree to that, more nodes cannot help.
+    // Round-off bounds what any degree can show: once two degrees agree to 10 x eps x the condition
+    // estimate (x 100 for well-conditioned scenes), more nodes cannot help. solve() floors the estimate
+    // at the solution's round-off bound (roundoff_bound).
     const double roundoff = 10 * std::max(condition, 100.0) * std::numeric_limits<double>::epsilon();
-    estimate = std::max(difference, roundoff);
-    const bool done = !(difference > std::max(options.rtol, roundoff)) || degree == kMaxChebyshevDegree;
+    estimate = finer_error_bound(difference, previous_difference);
+    // The first degree is never returned: the estimate needs two differences.
+    const bool done = (!(difference > std::max(options.rtol, roundoff)) && !std::isnan(previous_difference)) ||
+                      degree == kMaxChebyshevDegree;
     if (done) {
       if (!profiles) sol = make_solution(model, panels, fine, options);
       break;
     }
+    previous_difference = difference;
     coarse = std::move(fine);
     if (profiles) coarse_solution = std::move(sol);
   }

@@ -9,12 +9,12 @@
 // The six boundary conditions then close the same 6x6 system as the other methods.
 //
 // Error estimate of its own (no second solve): the nodes of degree N are half of those of degree 2N, so
-// the method solves at N = 8, 16, 32, ... 256 per panel (from 4 when breakpoints cut the arch into
-// several panels), reusing every angle, until the difference between two successive degrees (of H
-// relative to max(|H|, V / 100), as solution_difference measures it, and, with stations,
-// profile_difference) meets rtol, and returns the finer one. Diagnostics::error_estimate is that difference, which bounds the
-// coarser solution's error and overstates the finer one's, floored at round-off: 10 x eps x the
-// condition estimate (at least 100).
+// the method solves at N = 4, 8, 16, ... 256 per panel, reusing every angle, until the difference between
+// two successive degrees (as solution_difference measures it: the reactions and, with stations,
+// profile_difference) meets rtol, and returns the finer one (never the first pair's). The estimate is of
+// the returned degree's own error: with the last two differences d0, d1 shrinking by q = d1 / d0 <= 1/2,
+// the tail d1 q / (1 - q) (spectral convergence shrinks them faster still, so it errs on the safe side),
+// else d1 (finer_error_bound). solve() floors it at the solution's round-off bound (roundoff_bound).
 // The field (Solution::at, profiles) interpolates the nodes' states per panel (barycentric formula),
 // accurate to the method's tolerance at any station.
 #pragma once

@@ -92,37 +92,36 @@ TEST_CASE("trust: no atol - rtol - method or integrator makes a wrong row say su
   CHECK(refused > 300);    // raw rows, absurd atol, rtol below CVODE's floor
 }
 
-TEST_CASE("trust: a loose atol cannot fool verification") {
-  for (double atol : {1e-8, 1.0, 1e300}) {
+TEST_CASE("trust: a loose atol cannot fool verification - nor change a verified row") {
+  // A verified solve runs no looser than CVODE's default atol: a loose atol changes neither the numbers
+  // nor the estimate nor the status (it used to turn identical rows into tolerance_not_met).
+  for (Integrator integ : {Integrator::adams, Integrator::bdf}) {
     Options o;
     o.method = Method::shooting;
-    o.atol = atol;
+    o.integrator = integ;
+    o.rtol = integ == Integrator::bdf ? 1e-10 : 1e-8;
     const Scene scene = paper_scene(0.5);
-    const Solution sol = solve(scene, o);
-    CAPTURE(atol);
-    CHECK(sol.status == Status::tolerance_not_met);
-    CHECK(sol.diagnostics.error_estimate > o.rtol);
-    // The estimate is no underestimate: the raw first solve's error was what it says, or less.
-    Options raw = o;
-    raw.verify = false;
-    const double err = thrust_error(solve(scene, raw).H_over_V, exact(scene).H_over_V);
-    CHECK(err > o.rtol);
+    const Solution plain = solve(scene, o);
+    const Solution truth = exact(scene);
+    for (double atol : {1e-8, 1.0, 1e300}) {
+      o.atol = atol;
+      const Solution sol = solve(scene, o);
+      CAPTURE(atol);
+      CHECK(sol.status == plain.status);
+      CHECK(sol.H_over_V == plain.H_over_V);
+      CHECK(sol.diagnostics.error_estimate == plain.diagnostics.error_estimate);
+      if (sol.ok()) CHECK(within_tolerance(thrust_error(sol.H_over_V, truth.H_over_V), o.rtol));
+    }
   }
-  // The catenary with --atol 0.01 (auto): CVODE's first solve is 1.4 % off there. auto takes the
-  // quadrature method, which has no atol; whatever it takes, success means within rtol.
-  Options o;
-  o.atol = 0.01;
-  const Scene catenary_scene = scene_of(make_catenary(10.0, 0.5));
-  const Solution catenary = solve(catenary_scene, o);
-  Options reference;
-  reference.method = Method::multiple_shooting;
-  reference.rtol = 1e-12;
-  reference.segments = 32;
-  const Solution truth = solve(catenary_scene, reference);
-  REQUIRE(truth.ok());
-  if (catenary.ok()) CHECK(within_tolerance(thrust_error(catenary.H_over_V, truth.H_over_V), o.rtol + 1e-12));
-  o.method = Method::shooting;
-  CHECK(solve(catenary_scene, o).status != Status::success);  // CVODE itself, with that atol: caught
+  // Raw (--no-verify), the atol is CVODE's as given: with atol 1e300 CVODE's error control is off and
+  // the raw row is far off, and says unverified.
+  Options raw;
+  raw.method = Method::shooting;
+  raw.verify = false;
+  raw.atol = 1e300;
+  const Solution loose = solve(paper_scene(0.5), raw);
+  CHECK(loose.status == Status::unverified);
+  CHECK(thrust_error(loose.H_over_V, exact(paper_scene(0.5)).H_over_V) > raw.rtol);
 }
 
 TEST_CASE("trust: below CVODE's floor a verifying solve cannot be tighter - unverified, never success") {
@@ -135,9 +134,12 @@ TEST_CASE("trust: below CVODE's floor a verifying solve cannot be tighter - unve
       const Solution sol = solve(paper_scene(5.0), o);
       CAPTURE(to_string(integ));
       CAPTURE(rtol);
-      CHECK(sol.status == Status::unverified);
-      CHECK(sol.message.find("floor") != std::string::npos);
-      CHECK(std::isnan(sol.diagnostics.error_estimate));
+      // Below the round-off bound the row is ill_conditioned first; either way, never success.
+      CHECK((sol.status == Status::unverified || sol.status == Status::ill_conditioned));
+      if (sol.status == Status::unverified) {
+        CHECK(sol.message.find("floor") != std::string::npos);
+        CHECK(std::isnan(sol.diagnostics.error_estimate));
+      }
       CHECK(sol.field);  // the numbers are there, without a promise
     }
   // Where the floor leaves room (Adams at 1.6e-13 and above), the same scene is verified.

@@ -57,18 +57,22 @@ TEST_CASE("quadrature: the closed form's H/V and profile on every circular famil
   scenes.push_back(scene_of(make_four_centred(10.0, 0.5, 40.0, 10.0)));
   for (const Scene& scene : scenes) {
     const Solution ref = solve_with(scene, Method::closed_form, 1e-12);
-    REQUIRE(ref.ok());
+    // The closed form's profile at rtol 1e-12 may lie below its round-off bound (ill_conditioned): solved.
+    REQUIRE(ref.field);
     for (double rtol : {1e-4, 1e-6, 1e-8, 1e-10, 1e-12}) {
       const Solution sol = solve_with(scene, Method::quadrature, rtol);
       CAPTURE(scene.curve->family());
       CAPTURE(rtol);
+      if (sol.status == Status::ill_conditioned) {  // the round-off bound (kern-amplified) exceeds rtol
+        CHECK(roundoff_bound(sol) > rtol);
+        continue;
+      }
       REQUIRE(sol.ok());
       CHECK(sol.method == Method::quadrature);
       const double error = true_error(sol, ref, scene);
       CHECK(error <= 10 * rtol);
       // Its own estimate bounds its true error, up to the closed form's own round-off.
-      CHECK(error <= sol.diagnostics.error_estimate +
-                         ref.diagnostics.condition_estimate * std::numeric_limits<double>::epsilon());
+      CHECK(error <= sol.diagnostics.error_estimate + roundoff_bound(ref));
       CHECK(sol.diagnostics.error_estimate <= 10 * rtol);
     }
   }
@@ -92,9 +96,9 @@ TEST_CASE("quadrature: verified CVODE multiple shooting's H/V and profile on smo
     const Solution ref = solve(scene, o);
     REQUIRE(ref.field);  // success, or ill_conditioned on the survey (condition 1e4): solved
     // The reference's own error: its verification estimate, or its conditioning, whichever is larger.
-    const double ref_error = std::max(ref.diagnostics.error_estimate,
-                                      ref.diagnostics.condition_estimate * std::numeric_limits<double>::epsilon());
-    REQUIRE(ref_error <= 1e-11);
+    // (Its estimate is at least its round-off bound, condition x eps amplified by L / t for the couples.)
+    const double ref_error = std::max(ref.diagnostics.error_estimate, roundoff_bound(ref));
+    REQUIRE(ref_error <= 1e-10);
     for (double rtol : {1e-6, 1e-8, 1e-10}) {
       const Solution sol = solve_with(scene, Method::quadrature, rtol);
       CAPTURE(scene.curve->family());
@@ -115,7 +119,8 @@ TEST_CASE("quadrature: the catenary tends to its funicular H/V = 1/sinh(L/2a) as
   double previous_gap = 0, previous_t = 0;
   for (double t : {0.08, 0.02, 0.005, 0.001, 1e-4}) {
     const Solution sol = solve_with(scene_of(make_catenary(L, rise), t), Method::quadrature, 1e-12, 0);
-    REQUIRE(sol.ok());
+    // Thin arches' couples amplify round-off by L / t: ill_conditioned at rtol 1e-12, H/V still exact.
+    REQUIRE((sol.ok() || sol.status == Status::ill_conditioned));
     const double gap = relative_difference(sol.H_over_V, funicular);
     CAPTURE(t);
     if (previous_t > 0) {

@@ -72,7 +72,7 @@ struct Options {
   int segments = 8;    // multiple shooting: segments over the domain (>= 1; breakpoints, loads, a hinge add more)
   std::int64_t max_steps = 200000;  // CVODE step limit for one integration span
   // Profile stations over the whole arch, springing to springing (0: none, else >= 2). With a profile,
-  // its error is part of the estimate, compared at min(stations, kVerificationStations) stations.
+  // its error is part of the estimate, compared at kVerificationStations stations whatever this number.
   int stations = 0;
   // Estimate the global error of a CVODE solve by a second solve at rtol / 16 (about 2.5x the time):
   // CVODE controls local errors only, and the stability map (docs/methods.md) measured unverified solves at up
@@ -151,10 +151,12 @@ struct Solution {
 };
 
 
-// The profile's error is estimated at this many equally spaced stations at most (a denser profile is
-// sampled from the same verified field): the fields are smooth between them, and the estimate's cost
-// stays bounded whatever the number of printed stations.
-inline constexpr int kVerificationStations = 513;
+// The profile's error is estimated at this many equally spaced stations, whatever the number of printed
+// stations (they are sampled from the same verified field afterwards): so the estimate, and the status,
+// do not depend on --stations, and no quantity is measured against its size at a few stations where it
+// vanishes (psi and Ux at the springings and the crown). Odd, so that the crown is one of them; the
+// fields are smooth between them.
+inline constexpr int kVerificationStations = 129;
 
 // Fills solution.profile with `stations` equally spaced states over the whole arch from its field.
 void sample_profile(Solution& solution, int stations);
@@ -169,6 +171,21 @@ std::vector<ArchState> sample_stations(const Solution& solution, int stations, i
 // then held to rtol V / 100); each couple's relative to the larger of the largest |M| and F t / 6 (the
 // couple that puts the thrust at the kern's edge).
 double reaction_difference(const Reactions& a, const Reactions& reference, double thickness);
+
+// The round-off bound of a solution's numbers by the measures above: condition x machine epsilon,
+// amplified where a measure's scale is smaller than the terms a number is summed from. A couple is a
+// sum of forces (up to F, the largest) times lever arms up to the span L, so its absolute round-off is
+// about F L eps; measured against max(|M|, F t / 6) that is A = F L / max(|M|, F t / 6) times larger (up
+// to 6 L / t on a thin near-funicular arch). The factors are measured against a 40-digit reference
+// (benchmarks/pessimism: the closed form's true error over random circular arches, t/L 0.005 .. 0.25,
+// at most a third of the bound): the reactions (kRoundoffFloor + kRoundoffReactions x A) x condition x
+// eps (thick arches, A small, lose some 4 x condition x eps), the profile (sampled station by station,
+// more operations) kRoundoffProfile x condition x eps x A of the profile. The closed form's
+// error_estimate is this bound, and every method's estimate is at least this.
+inline constexpr double kRoundoffFloor = 8;
+inline constexpr double kRoundoffReactions = 0.5;
+inline constexpr double kRoundoffProfile = 4;
+double roundoff_bound(const Solution& solution);
 
 // The larger of the relative differences of the reactions and of the profiles (when both carry one):
 // the error estimate of a solution a against a tighter one b. NaN when either has no field.
