@@ -64,9 +64,13 @@ ShootingResidual no_tension_residual(const ArchModel& model, const Options& opti
 // norm, is at most max(rtol / 100, 1e-14)); a trial z is first checked for admissibility on every node.
 // Newton, its damping and convergence rules and the first guesses are solve_no_tension's (the caller's
 // guesses, the first admissible at every node, then most_admissible_start); at the quadrature's noise
-// when the residual is within 10 times its tolerance of the integrals' L1 norms. The field: the same
+// when the residual is within 10 times its tolerance, or the accuracy the panels reach above it, of the
+// integrals' L1 norms. The field: the same
 // integrals from 0 to any s (the panels' cumulative sums, the last panel's part by the same rule).
-// No error estimate of its own: solve() verifies it by a second solve at rtol / 16 as the CVODE solves.
+// Its error_estimate: what the panels' errors (the larger of |K15 - G7| and their round-off, which near
+// a hinge whose compressed depth is a tiny part of t holds the integrals above their tolerance: such a
+// panel is not halved) and Newton's last residual leave in the reactions, to first order through
+// Newton's matrix; solve() adds a second solve at rtol / 16 and takes the larger estimate.
 // Status as solve_no_tension's (success provisional; not_applicable for a crown hinge over the whole
 // arch, as there). Diagnostics: rhs_evaluations = integrand and geometry evaluations, segments = the
 // final panels, steps = 0.

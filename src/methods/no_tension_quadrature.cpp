@@ -182,10 +182,33 @@ Forces forces_at(const Point& g, const Point& origin, const StateVector& y0) {
 // N < 0 and |M / N| < t / 2: the section's domain (section.hpp), checked before anything is integrated.
 bool admissible(const Forces& f, double t) { return f.N < 0 && std::abs(f.M) < -f.N * 0.5 * t; }
 
-bool integrands(const Point& g, const Point& origin, const StateVector& y0, double t, double aV, double* f) {
+// The round-off in the values at one node: N and M are sums of terms (forces_at) each rounded to a few
+// units of round-off of its size (the geometry's x, y, B and C, exact to round-off, included), and the
+// section's law turns an error dN, dM into |kappa_N| dN + |kappa_M| dM, which near a hinge (u -> 0) grows
+// as 1 / u^3: there round-off, not the rule, bounds what any quadrature of these integrands can reach.
+void node_noise(const Point& g, const Point& origin, const StateVector& y0, const Forces& F, const SectionStrain& ss,
+                double* noise) {
+  constexpr double kUnits = 4 * std::numeric_limits<double>::epsilon();
+  const double dN = kUnits * (std::abs(g.c * F.Fx) + std::abs(g.sn * F.Fy) + std::abs(g.sn * g.B));
+  const double dM = kUnits * (std::abs(y0[kM]) + std::abs(F.Fx * (g.y - origin.y)) +
+                              std::abs(y0[kFy] * (g.x - origin.x)) + std::abs(g.C));
+  const double dk = std::abs(ss.kappa_N) * dN + std::abs(ss.kappa_M) * dM;
+  const double de = std::abs(ss.eps_N) * dN + std::abs(ss.eps_M) * dM;
+  noise[kKappa] = dk;
+  noise[kKappaY] = dk * std::abs(g.y);
+  noise[kKappaX] = dk * std::abs(g.x);
+  noise[kGx] = de * std::abs(g.c);
+  noise[kGy] = de * std::abs(g.sn);
+}
+
+// The integrands at node g (false where the section is inadmissible); with noise, each value's round-off
+// (node_noise) too.
+bool integrands(const Point& g, const Point& origin, const StateVector& y0, double t, double aV, double* f,
+                double* noise = nullptr) {
   const Forces F = forces_at(g, origin, y0);
   const SectionStrain ss = section_strain(SectionKind::no_tension, F.N, F.M, t);
   if (!ss.admissible) return false;
+  if (noise) node_noise(g, origin, y0, F, ss, noise);
   f[kKappa] = ss.kappa;
   f[kKappaY] = ss.kappa * g.y;
   f[kKappaX] = ss.kappa * g.x;
@@ -221,19 +244,31 @@ StateVector state_at(const Point& g, double B, const Point& origin, const StateV
 
 // A panel of the adaptive quadrature with its nodes' known functions (kept while Newton iterates: only
 // the integrands change with the unknowns) and, for the current unknowns, its Kronrod integrals, its
-// error (|K15 - G7| of the values) and the values' L1 norms.
+// error (|K15 - G7| of the values), the values' L1 norms and their round-off (the rule's weights times
+// node_noise: what |K15 - G7| cannot fall below however small the panel).
 struct Panel {
   double a = 0, b = 0;
   std::size_t piece = 0;
   std::array<Point, kNodes> nodes;
   Integrands kronrod = Integrands::Zero();
-  std::array<double, kValues> error{}, l1{};
+  std::array<double, kValues> error{}, l1{}, noise{};
+  // At its round-off: each value's |K15 - G7| within kNoiseFactor of the noise both rules carry (the
+  // difference of two sums each off by up to the noise), so that halving it cannot lower its error.
+  static constexpr double kNoiseFactor = 2;
+  bool at_noise() const {
+    for (std::size_t v = 0; v < kValues; ++v)
+      if (error[v] > kNoiseFactor * noise[v]) return false;
+    return true;
+  }
 };
 
 // The adaptive G7-K15 quadrature of the integrands over [0, S~], panels between the model's knots.
 // Global: the panels whose share of the error is largest are halved until the sum over the panels of
-// the largest value error (each value's |K15 - G7| over its L1 norm over the domain) is at most tol. The
-// panels are kept from one call to the next (the peaks move little between Newton's iterates).
+// the largest value error (each value's |K15 - G7| over its L1 norm over the domain) is at most tol, or
+// until every panel above its share is at its round-off (Panel::at_noise: near a hinge whose compressed
+// depth is a tiny fraction of t, the section law amplifies round-off in M beyond tol) or too narrow:
+// that sum is then the accuracy the integrals have, above tol (accuracy()). The panels are kept from one
+// call to the next (the peaks move little between Newton's iterates).
 class AdaptiveQuadrature {
  public:
   AdaptiveQuadrature(const ArchModel& model, const Geometry& geometry, double tol)
@@ -252,9 +287,10 @@ class AdaptiveQuadrature {
   }
 
   // The integrals over the domain at the springing state y0 and the values' L1 norms; false when a node
-  // is inadmissible or the tolerance cannot be met above the smallest panel.
+  // is inadmissible. Their accuracy (the sum of the panels' relative errors) is accuracy().
   bool integrate(const StateVector& y0, Integrands& total, std::array<double, kValues>& l1) {
     at_.reset();
+    accuracy_ = std::numeric_limits<double>::infinity();
     // Admissibility first, on every node, before any integrand is formed.
     for (const Panel& p : panels_)
       for (const Point& g : p.nodes)
@@ -273,21 +309,18 @@ class AdaptiveQuadrature {
         share[i] = e;
         sum += e;
       }
-      if (sum <= tol_) break;
-      // Below the tolerance round-off allows (rtol 1e-14), halving would go on until memory ran out
-      // (found: rtol 1e-14 was killed at several GB): a bounded number of panels, then a failure.
-      if (round == kMaxRounds || panels_.size() > kMaxPanels) {
-        exhausted_ = true;
-        return false;
-      }
-      // Halve every panel above the mean share that is still wide enough.
+      accuracy_ = sum;
+      // Below the tolerance round-off allows, halving would go on until memory ran out (found: rtol 1e-14
+      // was killed at several GB): a bounded number of panels, at most, and the accuracy reached.
+      if (sum <= tol_ || round == kMaxRounds || panels_.size() > kMaxPanels) break;
+      // Halve every panel above the mean share that is still wide enough and above its round-off.
       const double threshold = tol_ / static_cast<double>(panels_.size());
       std::vector<Panel> next;
       next.reserve(panels_.size() + 16);
       bool split = false;
       for (std::size_t i = 0; i < panels_.size(); ++i) {
         const Panel& p = panels_[i];
-        if (share[i] > threshold && p.b - p.a > min_width_) {
+        if (share[i] > threshold && p.b - p.a > min_width_ && !p.at_noise()) {
           const double mid = 0.5 * (p.a + p.b);
           for (auto [a, b] : {std::pair{p.a, mid}, std::pair{mid, p.b}}) {
             Panel half = make_panel(a, b, p.piece);
@@ -302,10 +335,7 @@ class AdaptiveQuadrature {
         }
       }
       panels_ = std::move(next);
-      if (!split) {
-        exhausted_ = true;
-        return false;
-      }
+      if (!split) break;
     }
     total.setZero();
     for (const Panel& p : panels_) total += p.kronrod;
@@ -314,16 +344,15 @@ class AdaptiveQuadrature {
   }
   // Whether the panels hold the integrals at y0 (the last successful integrate was there).
   bool holds(const StateVector& y0) const { return at_ && *at_ == y0; }
+  // The last integration's relative accuracy: the sum of the panels' value errors over their L1 norms
+  // (at most tol unless round-off or the bounds on the panels stopped it above).
+  double accuracy() const { return accuracy_; }
 
   const std::vector<Panel>& panels() const { return panels_; }
-  // Whether an integration stopped because the tolerance could not be met (round-off in the panels'
-  // error sums: rtol below about 1e-10), not because a node was inadmissible.
-  bool exhausted() const { return exhausted_; }
   std::int64_t evaluations() const { return evaluations_; }
 
  private:
   static constexpr int kInitialPanels = 32;
-  bool exhausted_ = false;
   static constexpr int kMaxRounds = 60;
   static constexpr std::size_t kMaxPanels = 8192;  // about 120 times what a cracked arch needs at rtol 1e-12
 
@@ -341,19 +370,25 @@ class AdaptiveQuadrature {
     const KronrodRule& r = kronrod_rule();
     const double h = 0.5 * (p.b - p.a);
     Integrands f, gauss = Integrands::Zero();
+    std::array<double, kValues> noise{};
     p.kronrod.setZero();
     p.l1.fill(0);
+    p.noise.fill(0);
     for (std::size_t i = 0; i < kNodes; ++i) {
-      if (!integrands(p.nodes[i], geometry_.start(), y0, t_, aV_, f.data())) return false;
+      if (!integrands(p.nodes[i], geometry_.start(), y0, t_, aV_, f.data(), noise.data())) return false;
       p.kronrod += r.kronrod[i] * f;
       if (r.gauss[i] != 0) gauss += r.gauss[i] * f;
-      for (std::size_t v = 0; v < kValues; ++v) p.l1[v] += r.kronrod[i] * std::abs(f[static_cast<Eigen::Index>(v)]);
+      for (std::size_t v = 0; v < kValues; ++v) {
+        p.l1[v] += r.kronrod[i] * std::abs(f[static_cast<Eigen::Index>(v)]);
+        p.noise[v] += r.kronrod[i] * noise[v];
+      }
     }
     evaluations_ += kNodes;
     p.kronrod *= h;
     for (std::size_t v = 0; v < kValues; ++v) {
       p.error[v] = h * std::abs(p.kronrod[static_cast<Eigen::Index>(v)] / h - gauss[static_cast<Eigen::Index>(v)]);
       p.l1[v] *= h;
+      p.noise[v] *= h;
     }
     return true;
   }
@@ -362,6 +397,7 @@ class AdaptiveQuadrature {
   std::vector<Panel> panels_;
   std::optional<StateVector> at_;
   double tol_, t_, aV_, min_width_ = 0;
+  double accuracy_ = std::numeric_limits<double>::infinity();
   std::int64_t evaluations_ = 0;
 };
 
@@ -371,7 +407,9 @@ struct Evaluation {
   Eigen::VectorXd residual;
   Eigen::MatrixXd jacobian;
   StateVector y0, yS;
+  Eigen::Matrix<double, kStateSize, 3> dyS_dz = Eigen::Matrix<double, kStateSize, 3>::Zero();
   double kinematic_scale = 1;  // the size the end's displacements and rotation are integrated against
+  double accuracy = 0;         // the integrals' relative accuracy (AdaptiveQuadrature::accuracy)
 };
 
 class QuadratureShooter {
@@ -386,6 +424,7 @@ class QuadratureShooter {
     Integrands I;
     std::array<double, kValues> l1{};
     if (!quadrature_.integrate(e.y0, I, l1)) return e;
+    e.accuracy = quadrature_.accuracy();
     const Point& o = geometry_->start();
     const Point& g = geometry_->end();
     e.yS = state_at(g, geometry_->B_end(), o, e.y0, I);
@@ -405,7 +444,8 @@ class QuadratureShooter {
     const BoundaryConditions& bc = model_.boundary_conditions();
     const Eigen::Matrix<double, 3, kStateSize> B = bc.at_end.bottomRows<3>();
     e.residual = B * e.yS - bc.rhs.tail<3>();
-    e.jacobian = B * D * split_.U;
+    e.dyS_dz = D * split_.U;
+    e.jacobian = B * e.dyS_dz;
     e.kinematic_scale = std::max(1.0, l1[kKappa] * (1 + std::abs(g.x) + std::abs(g.y)) + l1[kKappaY] + l1[kKappaX] +
                                           l1[kGx] + l1[kGy]);
     e.ok = true;
@@ -471,6 +511,36 @@ class QuadratureField final : public StateField {
   std::vector<Integrands> cumulative_;
 };
 
+// What the integrals' errors and Newton's last residual leave in the reactions, to first order through
+// Newton's matrix J. A panel's error in the values (the larger of |K15 - G7| and its round-off) moves
+// the end's state along known directions: dK turns the end by dK about the panel's middle (psi by dK, Ux
+// by -dK (y_S - y_m), Uy by dK (x_S - x_m)), dGx and dGy move it along x and y; each direction is carried
+// through J^-1 B (B the end's conditions) and the panels' parts added in absolute value, with Newton's
+// remaining step J^-1 r. The errors of one panel thus keep their correlation: near a hinge they turn the
+// end about it, which J resists most (the soft direction of a mechanism is another). Each unknown's
+// error is then carried through the reactions (the end's forces are explicit in z) and the parts'
+// reaction_difference (the verification's measure) added. Infinite when J is singular.
+double reaction_floor(const ArchModel& model, const SpringingSplit& split, const Evaluation& e,
+                      const std::vector<Panel>& panels, const Point& end) {
+  const Eigen::FullPivLU<Eigen::Matrix3d> lu(e.jacobian);
+  if (!lu.isInvertible()) return std::numeric_limits<double>::infinity();
+  const Eigen::Matrix<double, 3, kStateSize> JB = lu.inverse() * model.boundary_conditions().at_end.bottomRows<3>();
+  Eigen::Vector3d dz = (lu.inverse() * e.residual).cwiseAbs();
+  for (const Panel& p : panels) {
+    const Point& m = p.nodes[kNodes / 2];
+    auto bound = [&](Value v) { return std::max(p.error[static_cast<std::size_t>(v)], p.noise[static_cast<std::size_t>(v)]); };
+    const Eigen::Vector3d turn = JB.col(kPsi) - (end.y - m.y) * JB.col(kUx) + (end.x - m.x) * JB.col(kUy);
+    dz += turn.cwiseAbs() * bound(kKappa) + JB.col(kUx).cwiseAbs() * bound(kGx) + JB.col(kUy).cwiseAbs() * bound(kGy);
+  }
+  const Reactions at = model.reactions(e.y0, e.yS);
+  double floor = 0;
+  for (int j = 0; j < 3; ++j) {
+    const StateVector y0 = e.y0 + split.U.col(j) * dz[j], yS = e.yS + e.dyS_dz.col(j) * dz[j];
+    floor += reaction_difference(model.reactions(y0, yS), at, model.scene().thickness);
+  }
+  return floor;
+}
+
 // The quadrature's tolerance: well below rtol (its |K15 - G7| overstates the Kronrod rule's error by
 // orders of magnitude on resolved panels), above round-off.
 double quadrature_tolerance(double rtol) { return std::max(1e-2 * rtol, 1e-14); }
@@ -512,27 +582,20 @@ Solution solve_no_tension_quadrature(std::shared_ptr<const ArchModel> model, con
     e = shooter.evaluate(x);
     return e.ok;
   }, sol);
-  // Say why when the quadrature, not the arch, was the limit.
-  auto name_the_limit = [&] {
-    if (shooter.quadrature().exhausted())
-      sol.message = fmt::format("the adaptive quadrature cannot meet its tolerance {:.1e} (round-off in its panels' "
-                                "error sums; rtol down to about 1e-10 works): use shooting or a larger rtol",
-                                tol);
-  };
   if (!started) {
     count_work();
-    name_the_limit();
     return sol;
   }
+  // At the noise: the residual within 10 times what the integrals' tolerance, or the accuracy they
+  // reached above it (round-off near a hinge), leaves in the end's conditions.
   const bool converged = damped_newton(
       [&](const Eigen::VectorXd& trial) { return shooter.evaluate(trial); },
-      [&](const Evaluation& at) { return at.residual.lpNorm<Eigen::Infinity>() <= 10 * tol * at.kinematic_scale; },
+      [&](const Evaluation& at) {
+        return at.residual.lpNorm<Eigen::Infinity>() <= 10 * std::max(tol, at.accuracy) * at.kinematic_scale;
+      },
       1e-2 * options.rtol, x, e, sol);
   count_work();
-  if (!converged) {
-    name_the_limit();
-    return sol;
-  }
+  if (!converged) return sol;
   // The last accepted evaluation is at x, but the panels may since have been refined by rejected trials:
   // evaluate once more, so that the field's panels hold the integrals at the solution.
   if (!shooter.quadrature().holds(e.y0)) e = shooter.evaluate(x);
@@ -550,6 +613,12 @@ Solution solve_no_tension_quadrature(std::shared_ptr<const ArchModel> model, con
   // The condition of Newton's last matrix (the linearised problem's), Skeel's measure as every method's.
   bvp.condition = boundary_value_condition(e.jacobian);
   finish_solution(sol, bvp, std::make_shared<QuadratureField>(model, shooter, e.y0));
+  if (!sol.field) return sol;
+  sol.diagnostics.error_estimate =
+      reaction_floor(*model, shooter.split(), e, shooter.quadrature().panels(), shooter.geometry()->end());
+  // The end's conditions are differences of integrals that a hinge's rotations make much larger than
+  // the scaled units' one: their residual is measured against the integrals' size, as Newton's is.
+  sol.diagnostics.boundary_residual /= e.kinematic_scale;
   return sol;
 }
 

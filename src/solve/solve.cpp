@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -144,19 +145,19 @@ Solution solve_with(const std::shared_ptr<const ArchModel>& model, const Options
 
 namespace {
 
-// Whether two scenes differ at most in their supports' movements (the continuation's path).
-bool same_but_movements(const Scene& a, const Scene& b) {
+// Whether two scenes differ at most in their supports' movements and in the sizes of their loads (point
+// forces, live intensities, fill densities; the loads' places the same): the continuation's path.
+bool on_one_path(const Scene& a, const Scene& b) {
   auto same_support = [](const Support& x, const Support& y) { return x.kind == y.kind; };
-  auto same_loads = [](const Loads& x, const Loads& y) {
+  auto same_places = [](const Loads& x, const Loads& y) {
     if (x.points.size() != y.points.size() || x.live.size() != y.live.size() || x.fills.size() != y.fills.size())
       return false;
     for (std::size_t i = 0; i < x.points.size(); ++i)
-      if (x.points[i].force != y.points[i].force || x.points[i].at != y.points[i].at) return false;
+      if (x.points[i].at != y.points[i].at) return false;
     for (std::size_t i = 0; i < x.live.size(); ++i)
-      if (x.live[i].intensity != y.live[i].intensity || x.live[i].from != y.live[i].from || x.live[i].to != y.live[i].to)
-        return false;
+      if (x.live[i].from != y.live[i].from || x.live[i].to != y.live[i].to) return false;
     for (std::size_t i = 0; i < x.fills.size(); ++i)
-      if (x.fills[i].density != y.fills[i].density || x.fills[i].height_ratio != y.fills[i].height_ratio) return false;
+      if (x.fills[i].height_ratio != y.fills[i].height_ratio) return false;
     return true;
   };
   // Curves are rebuilt for every scene of a sweep: the same curve has the same family and lengths.
@@ -168,11 +169,11 @@ bool same_but_movements(const Scene& a, const Scene& b) {
   return same_curve && a.thickness == b.thickness && a.section == b.section && a.crown_hinge == b.crown_hinge &&
          m.youngs_modulus == n.youngs_modulus && m.poisson_ratio == n.poisson_ratio && m.density == n.density &&
          m.gravity == n.gravity && m.shear_coefficient == n.shear_coefficient && m.plane_strain == n.plane_strain &&
-         same_support(a.left, b.left) && same_support(a.right, b.right) && same_loads(a.loads, b.loads) &&
+         same_support(a.left, b.left) && same_support(a.right, b.right) && same_places(a.loads, b.loads) &&
          a.symmetric() == b.symmetric();
 }
 
-// The scene with movements (1 - lambda) of `from`'s plus lambda of `to`'s.
+// The scene with movements and load sizes (1 - lambda) of `from`'s plus lambda of `to`'s (on_one_path).
 Scene between(const Scene& from, const Scene& to, double lambda) {
   Scene s = to;
   auto mix = [lambda](double a, double b) { return lambda == 1 ? b : (1 - lambda) * a + lambda * b; };
@@ -181,7 +182,26 @@ Scene between(const Scene& from, const Scene& to, double lambda) {
     out->settlement = mix(a->settlement, b->settlement);
     out->rotation = mix(a->rotation, b->rotation);
   }
+  for (std::size_t i = 0; i < s.loads.points.size(); ++i)
+    s.loads.points[i].force = mix(from.loads.points[i].force, to.loads.points[i].force);
+  for (std::size_t i = 0; i < s.loads.live.size(); ++i)
+    s.loads.live[i].intensity = mix(from.loads.live[i].intensity, to.loads.live[i].intensity);
+  for (std::size_t i = 0; i < s.loads.fills.size(); ++i)
+    s.loads.fills[i].density = mix(from.loads.fills[i].density, to.loads.fills[i].density);
   return s;
+}
+
+// A solution's springing state in another model's scaled units (the force scale follows the loads).
+StateVector springing_state_for(const Solution& from, const ArchModel& to) {
+  const Scales &a = from.model->scales(), &b = to.scales();
+  StateVector y = from.springing_state;
+  y[kUx] *= a.displacement / b.displacement;
+  y[kUy] *= a.displacement / b.displacement;
+  y[kPsi] *= a.rotation / b.rotation;
+  y[kFx] *= a.force / b.force;
+  y[kFy] *= a.force / b.force;
+  y[kM] *= a.moment / b.moment;
+  return y;
 }
 
 // One no-tension solver: Newton shooting (segments 1: single, else multiple) or its quadrature form.
@@ -191,12 +211,15 @@ struct NoTensionTry {
   double rtol_factor = 1;  // on the rtol handed to the solver
 };
 
-// One no-tension solve, raw (no verification), from the given guesses; the linear solution is the last.
-// (The linear solution is computed only when no guess is given: along a path every step has one.)
+// One no-tension solve, raw (no verification), from a neighbouring solution's springing state, else from
+// the linear solution (computed only then: along a path every step has a neighbour).
 Solution no_tension_once(const Scene& scene, const Options& options, const NoTensionTry& how,
-                         std::vector<StateVector> guesses) {
+                         const Solution* from = nullptr) {
   auto model = std::make_shared<const ArchModel>(scene, options.whole_arch);
-  if (guesses.empty()) {
+  std::vector<StateVector> guesses;
+  if (from) {
+    guesses.push_back(springing_state_for(*from, *model));
+  } else {
     Scene elastic = scene;
     elastic.section = SectionKind::elastic;
     Options linear = options;
@@ -208,26 +231,141 @@ Solution no_tension_once(const Scene& scene, const Options& options, const NoTen
                                           : solve_no_tension(model, options, how.segments, guesses);
 }
 
-// The no-tension scene at its movements, traced from `from` (solved, with springing state y) in steps
-// that double after a success and halve after a failure. The raw solve at the target, or the last failure.
-Solution trace_movements(const Scene& from, StateVector y, const Scene& to, const Options& options,
-                         const NoTensionTry& how, int& newton_iterations) {
+// The no-tension scene `to`, traced from the solved scene of `start` (on_one_path) in steps of the
+// movements and load sizes that double after a success and halve after a failure, at most kPathSolves
+// solves (near an arch's collapse every step can fail slowly): the raw solve at the target, or the last
+// failure.
+constexpr int kPathSolves = 40;
+Solution trace_path(const Solution& start, const Scene& to, const Options& options, const NoTensionTry& how,
+                    int& newton_iterations) {
+  const Scene& from = start.model->scene();
   double lambda = 0, step = 1;
-  Solution last;
-  while (lambda < 1) {
+  Solution at = start, failure;
+  for (int solves = 0; lambda < 1 && solves < kPathSolves; ++solves) {
     const double next = std::min(1.0, lambda + step);
-    last = no_tension_once(between(from, to, next), options, how, {y});
-    newton_iterations += last.diagnostics.newton_iterations;
-    if (last.status == Status::success) {
+    Solution trial = no_tension_once(between(from, to, next), options, how, &at);
+    newton_iterations += trial.diagnostics.newton_iterations;
+    if (trial.status == Status::success) {
       lambda = next;
-      y = last.springing_state;
+      at = std::move(trial);
       step = std::min(1.0, 2 * step);
     } else {
+      failure = std::move(trial);
       step /= 2;
-      if (step < 1e-6) return last;
+      if (step < 1e-6) break;
     }
   }
-  return last;
+  return lambda == 1 ? at : failure;
+}
+
+// One solver's raw solve of the scene: from the previous scene's solution (continues) or the linear one;
+// where Newton does not converge from them, by continuation (trace_path) from the first start that
+// solves: the previous scene, the scene without its supports' movements, the same without its loads
+// but the self-weight (continuation in the loads as well as in the movements).
+Solution reach(const Scene& scene, const Options& raw, const NoTensionTry& how, const Solution* previous,
+               int& iterations) {
+  Solution coarse = no_tension_once(scene, raw, how, previous);
+  iterations += coarse.diagnostics.newton_iterations;
+  if (previous && coarse.status != Status::success) {
+    coarse = no_tension_once(scene, raw, how);
+    iterations += coarse.diagnostics.newton_iterations;
+  }
+  if (coarse.status != Status::not_converged && coarse.status != Status::integrator_failure) return coarse;
+  std::vector<Scene> starts;
+  Scene still = scene;
+  still.left.spread = still.left.settlement = still.left.rotation = 0;
+  still.right.spread = still.right.settlement = still.right.rotation = 0;
+  starts.push_back(still);
+  if (!scene.loads.empty() && scene.material.density > 0) {
+    Scene unloaded = still;
+    for (PointLoad& p : unloaded.loads.points) p.force = 0;
+    for (LiveLoad& q : unloaded.loads.live) q.intensity = 0;
+    for (FillLoad& f : unloaded.loads.fills) f.density = 0;
+    starts.push_back(unloaded);
+  }
+  if (previous) coarse = trace_path(*previous, scene, raw, how, iterations);
+  for (const Scene& from : starts) {
+    if (coarse.status == Status::success) break;
+    const Solution start = no_tension_once(from, raw, how);
+    iterations += start.diagnostics.newton_iterations;
+    if (start.status == Status::success) coarse = trace_path(start, scene, raw, how, iterations);
+  }
+  return coarse;
+}
+
+// The larger of two estimates, a NaN one (not estimated) ignored.
+double larger_estimate(double a, double b) { return std::isnan(a) ? b : std::isnan(b) ? a : std::max(a, b); }
+
+// The coarse solve verified as every CVODE solve: again 16 times tighter, from the coarse solution (the
+// quadrature down to the options' floor of 1e-14, CVODE down to its own); the estimate is the larger
+// of the two solves' difference and the tighter solve's own (the quadrature's: what the accuracy its
+// integrals reach leaves in the reactions, which round-off near a hinge can hold above rtol). Without a
+// tighter solve, only an own estimate above rtol is kept (it says tolerance_not_met); else unverified.
+Solution verify_no_tension(const Scene& scene, const Options& options, const Options& raw, const NoTensionTry& how,
+                           const Solution& coarse, int& iterations, Diagnostics& spent) {
+  double floor = coarse.diagnostics.error_estimate;
+  Solution sol = coarse;
+  sol.diagnostics.error_estimate = std::numeric_limits<double>::quiet_NaN();
+  if (!options.verify) return sol;
+  const bool quadrature = how.method == Method::quadrature;
+  if (!(quadrature ? raw.rtol / 16 >= 1e-14 : verifiable(raw))) {
+    if (floor > options.rtol) sol.diagnostics.error_estimate = floor;
+    else sol.message = "rtol below what a 16 times tighter solve can verify";
+    return sol;
+  }
+  Options fine = verifying_options(raw);
+  fine.verify = false;
+  sol = no_tension_once(scene, fine, how, &coarse);
+  iterations += sol.diagnostics.newton_iterations;
+  add_work(spent, sol.diagnostics);
+  if (sol.status != Status::success) {
+    // The answer at rtol stands, without an estimate (unverified): the tighter Newton stopping short
+    // (a residual at CVODE's error through the hinges) says nothing against it.
+    const std::string why = sol.message;
+    sol = coarse;
+    sol.diagnostics.error_estimate = std::numeric_limits<double>::quiet_NaN();
+    sol.message = fmt::format("not verified: the 16 times tighter solve did not converge ({})", why);
+    return sol;
+  }
+  Solution first = coarse;
+  if (options.stations > 0) {
+    sample_profile(first, kVerificationStations);
+    sample_profile(sol, kVerificationStations);
+  }
+  floor = larger_estimate(floor, sol.diagnostics.error_estimate);
+  sol.diagnostics.error_estimate = larger_estimate(solution_difference(first, sol), floor);
+  return sol;
+}
+
+// Whether a is a better answer than b: success first, then one with numbers, then the smaller estimate.
+bool better(const Solution& a, const Solution& b) {
+  if (a.ok() != b.ok()) return a.ok();
+  if (static_cast<bool>(a.field) != static_cast<bool>(b.field)) return static_cast<bool>(a.field);
+  if (!a.field) return false;
+  return a.diagnostics.error_estimate < b.diagnostics.error_estimate ||
+         (std::isnan(b.diagnostics.error_estimate) && !std::isnan(a.diagnostics.error_estimate));
+}
+
+// Whether a quadrature answer misses rtol for a reason of the scene in double precision, which no
+// other method cures, and then says in its message the rtol the scene supports: the largest of its
+// error estimate, residuals and condition times round-off (what judge_solution holds against rtol),
+// rounded up to one significant digit. The quadrature resolves its integrals to rtol / 100 unless
+// round-off near a hinge stops it above (its own estimate carries that), and CVODE integrates the
+// same section law with its own error on top.
+bool name_the_floor(Solution& sol, double rtol) {
+  const bool missed = sol.status == Status::tolerance_not_met || sol.status == Status::ill_conditioned;
+  if (sol.method != Method::quadrature || !sol.field || !missed) return false;
+  const Diagnostics& d = sol.diagnostics;
+  const double limit = std::max({d.error_estimate, d.boundary_residual, d.equilibrium_residual,
+                                 d.condition_estimate * std::numeric_limits<double>::epsilon()});
+  if (!(limit > rtol)) return false;
+  const double unit = std::pow(10.0, std::floor(std::log10(limit)));
+  const double supported = std::ceil(limit / unit * (1 - 1e-12)) * unit;
+  sol.message += fmt::format(": in double precision this scene's answer is good to about {:.1e} (its error estimate, "
+                             "residuals and condition; round-off in the section law near the hinges bounds the "
+                             "quadrature's integrals): ask for rtol {:.1e} or larger",
+                             supported, supported);
+  return true;
 }
 
 Solution solve_no_tension_scene(const Scene& scene, const Options& options, const Solution* previous) {
@@ -239,12 +377,12 @@ Solution solve_no_tension_scene(const Scene& scene, const Options& options, cons
     sol.message = "the no-tension section is solved by Newton (quadrature, shooting, multiple-shooting or auto)";
     return sol;
   }
-  const bool continues = previous && previous->field && previous->model &&
-                         same_but_movements(previous->model->scene(), scene) &&
+  const bool continues = previous && previous->field && previous->model && on_one_path(previous->model->scene(), scene) &&
                          previous->model->half() == ArchModel(scene, options.whole_arch).half();
   // auto tries the quadrature form (no integration of an ODE: milliseconds), then single shooting, then
   // 8 segments, then 8 segments with CVODE 10 times tighter (a profile through hinges needs it); judged
-  // against the rtol asked, always.
+  // against the rtol asked, always. The best answer is kept; a quadrature answer that double precision
+  // holds above rtol ends the search (name_the_floor), as does an arch that cannot stand.
   std::vector<NoTensionTry> tries;
   if (options.method == Method::quadrature) tries = {{Method::quadrature, 0, 1.0}};
   else if (options.method == Method::shooting) tries = {{Method::shooting, 1, 1.0}};
@@ -254,78 +392,31 @@ Solution solve_no_tension_scene(const Scene& scene, const Options& options, cons
              {Method::shooting, 1, 1.0},
              {Method::multiple_shooting, 8, 1.0},
              {Method::multiple_shooting, 8, 0.1}};
-  Solution sol;
+  Solution best;
   int iterations = 0;
   Diagnostics spent;
   for (const NoTensionTry& how : tries) {
     Options raw = options;
     raw.verify = false;
     raw.rtol = std::max(options.rtol * how.rtol_factor, 1e-14);
-    std::vector<StateVector> guesses;
-    if (continues) guesses.push_back(previous->springing_state);
-    Solution coarse = no_tension_once(scene, raw, how, guesses);
-    if (continues && coarse.status != Status::success) coarse = no_tension_once(scene, raw, how, {});
-    iterations += coarse.diagnostics.newton_iterations;
-    if (coarse.status == Status::not_converged || coarse.status == Status::integrator_failure) {
-      // Trace the movements from the previous scene's, or from none.
-      Scene from = scene;
-      StateVector y;
-      bool have_start = false;
-      if (continues) {
-        from = previous->model->scene();
-        y = previous->springing_state;
-        have_start = true;
-      } else {
-        // from = scene (assigned above), its movements taken away
-        from.left.spread = from.left.settlement = from.left.rotation = 0;
-        from.right.spread = from.right.settlement = from.right.rotation = 0;
-        const Solution start = no_tension_once(from, raw, how, {});
-        iterations += start.diagnostics.newton_iterations;
-        if (start.status == Status::success) {
-          y = start.springing_state;
-          have_start = true;
-        } else {
-          coarse = start;
-        }
-      }
-      if (have_start) coarse = trace_movements(from, y, scene, raw, how, iterations);
-    }
+    Solution coarse = reach(scene, raw, how, continues ? previous : nullptr, iterations);
     add_work(spent, coarse.diagnostics);
-    if (coarse.status != Status::success) {
-      sol = coarse;
-      continue;
-    }
-    // Verified as every CVODE solve: again 16 times tighter, from the coarse solution (the quadrature
-    // down to the options' floor of 1e-14, CVODE down to its own).
-    const bool quadrature = how.method == Method::quadrature;
-    if (options.verify && (quadrature ? raw.rtol / 16 >= 1e-14 : verifiable(raw))) {
-      Options fine = verifying_options(raw);
-      fine.verify = false;
-      sol = no_tension_once(scene, fine, how, {coarse.springing_state});
-      iterations += sol.diagnostics.newton_iterations;
-      add_work(spent, sol.diagnostics);
-      if (sol.status == Status::success) {
-        if (options.stations > 0) {
-          sample_profile(coarse, kVerificationStations);
-          sample_profile(sol, kVerificationStations);
-        }
-        sol.diagnostics.error_estimate = solution_difference(coarse, sol);
-      }
-    } else {
-      sol = coarse;
-      if (options.verify) sol.message = "rtol below what a 16 times tighter solve can verify";
-    }
+    Solution sol = coarse.status == Status::success
+                       ? verify_no_tension(scene, options, raw, how, coarse, iterations, spent)
+                       : coarse;
     sol.diagnostics.steps = spent.steps;
     sol.diagnostics.rhs_evaluations = spent.rhs_evaluations;
     sol.diagnostics.error_test_failures = spent.error_test_failures;
     sol.diagnostics.jacobian_evaluations = spent.jacobian_evaluations;
     judge_solution(sol, options.rtol);
+    const bool at_floor = name_the_floor(sol, options.rtol);
     if (sol.field && options.stations > 0 && static_cast<int>(sol.profile.size()) != options.stations)
       sample_profile(sol, options.stations);
-    if (sol.status == Status::success) break;
+    if (best.status == Status::not_applicable || better(sol, best)) best = std::move(sol);
+    if (best.ok() || at_floor || best.status == Status::inadmissible) break;
   }
-  sol.diagnostics.newton_iterations = iterations;
-  return sol;
+  best.diagnostics.newton_iterations = iterations;
+  return best;
 }
 
 }  // namespace

@@ -43,7 +43,8 @@ enum class Status {
   ill_conditioned,     // solved, but condition * unit round-off exceeds rtol: digits may be lost
   tolerance_not_met,   // solved, but the error estimate, or the boundary or equilibrium residual, exceeds rtol
   unverified,          // solved by CVODE without an error estimate: Options::verify was off, or rtol lies
-                       // below what a second, 16 times tighter CVODE solve can reach (kCvodeRtolFloor)
+                       // below what a second, 16 times tighter CVODE solve can reach (kCvodeRtolFloor),
+                       // or (no-tension section) that second solve did not converge
   not_converged,       // no-tension section: Newton did not reach the boundary conditions (the iterations
                        // are in Diagnostics::newton_iterations, the message says where it stopped)
   inadmissible,        // no-tension section: no state keeps the resultant inside every section (the arch
@@ -105,7 +106,9 @@ struct Diagnostics {
   // of the same problem: multiple shooting condenses its segments' transfers into Phi(S) U for this
   // estimate, so it does not grow with the number of segments.
   double condition_estimate = std::numeric_limits<double>::quiet_NaN();
-  double boundary_residual = std::numeric_limits<double>::quiet_NaN();   // max |BC residual|, scaled
+  // max |BC residual|, scaled (the no-tension quadrature's over the size of the integrals it is a
+  // difference of, which a hinge's rotations make much larger than one)
+  double boundary_residual = std::numeric_limits<double>::quiet_NaN();
   double equilibrium_residual = std::numeric_limits<double>::quiet_NaN(); // relative to the domain's load
   // Estimated relative error of the printed numbers, never smaller than condition_estimate times
   // round-off. CVODE methods (verified): the difference between a solve at rtol and one at rtol / 16, of
