@@ -8,6 +8,7 @@
 #include <utility>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 #include <fmt/format.h>
 
@@ -106,7 +107,21 @@ struct SideRing {
     Eigen::Vector2d point, normal;
   };
   std::vector<AxisSample> samples, previous_samples;
+  // The axis' points the fills' integrals asked for, by arc length, when the curve's at() is costly (not
+  // piecewise circular: a parabola inverts its arc length by Newton's method): the next ring meets
+  // the same nodes wherever its joints are the same.
+  bool memoize = false;
+  std::unordered_map<double, CurvePoint> memo;
 };
+
+// The side's axis at s, through the memo when the side keeps one.
+CurvePoint axis_at(const SideView& side, SideRing& cache, double s) {
+  if (!cache.memoize) return side.at(s);
+  if (cache.memo.size() > 100000) cache.memo.clear();  // bounded: the nodes of thicknesses long past
+  const auto [it, inserted] = cache.memo.try_emplace(s);
+  if (inserted) it->second = side.at(s);
+  return it->second;
+}
 
 // The band [a, b] of the side: the previous ring's when it had one (`cursor` walks through them in
 // order), else integrated anew; appended to out.bands.
@@ -134,20 +149,21 @@ const Band& band_of(const SideView& side, SideRing& out, std::size_t& cursor, do
 // vertical springing), and only where the extrados lies over the axis point (none over the bed's outer
 // end's x at an overhanging springing). The integrand's kink where the fill's level meets y_e is a knot.
 VerticalLoad fill_load(const SideView& side, const SideExtrados& extrados, const FillLoad& fill, double gravity,
-                       double n, double x_min, double a, double b, double span) {
+                       double n, double x_min, double a, double b, double span, SideRing& cache) {
   const double level = fill.height_ratio * span, unit_weight = fill.density * gravity;
   if (!(unit_weight > 0) || !(b > a)) return {};
   if (n == 0.0) x_min = std::max(x_min, extrados.x_begin());
-  if (face_at(side, n, b).p.x() <= x_min) return {};
-  if (face_at(side, n, a).p.x() < x_min) a = face_at_x(side, n, x_min, a, b, span);
+  auto face = [&](double s) { return offset(axis_at(side, cache, s), n); };
+  if (face(b).p.x() <= x_min) return {};
+  if (face(a).p.x() < x_min) a = face_at_x(side, n, x_min, a, b, span);
   // (h_f - y_e) dx/ds: its sign is that of the fill's depth (dx/ds >= 0), its positive part the load.
   auto excess = [&](double s, Eigen::Vector2d* point) {
     if (n == 0.0) {
-      const CurvePoint q = side.at(s);
+      const CurvePoint q = axis_at(side, cache, s);
       if (point) *point = {q.x, q.y};
       return (level - extrados.height(q.x, s)) * std::cos(q.theta);
     }
-    const FacePoint f = face_at(side, n, s);
+    const FacePoint f = face(s);
     if (point) *point = f.p;
     return (level - f.p.y()) * f.dp.x();
   };
@@ -313,9 +329,9 @@ void make_side(const SideView& side, double thickness, double unit_weight, const
     for (const FillLoad& f : fills) {
       if (options.weight == WeightModel::voussoir && above_fill(side, a, b, f.height_ratio * span, x_min)) continue;
       if (options.weight == WeightModel::voussoir)
-        v.fill += fill_load(side, extrados, f, gravity, half_t, x_min, a.s_extrados, b.s_extrados, span);
+        v.fill += fill_load(side, extrados, f, gravity, half_t, x_min, a.s_extrados, b.s_extrados, span, out);
       else
-        v.fill += fill_load(side, extrados, f, gravity, 0.0, x_min, a.s_axis, b.s_axis, span);
+        v.fill += fill_load(side, extrados, f, gravity, 0.0, x_min, a.s_axis, b.s_axis, span, out);
     }
   }
 }
@@ -427,6 +443,7 @@ void build_ring(const Curve& curve, double thickness, double unit_weight, const 
         max_thickness(curve), thickness));
   const double L = curve.span();
   const SideView left_view(curve, false);
+  for (SideRing& side : scratch) side.memoize = curve.arcs().empty();
   SideRing& left = scratch[0];
   make_side(left_view, thickness, unit_weight, fills, gravity, options, fractions, L, left);
   ring.span = L;
@@ -607,6 +624,7 @@ void RingScratch::forget() {
     side.previous_bands.clear();
     side.samples.clear();
     side.previous_samples.clear();
+    side.memo.clear();
   }
 }
 
