@@ -37,8 +37,9 @@ void add_solver_options(CLI::App& cmd, Options& o, SolverText& text, bool with_m
                  "at rtol/16. A value, a list a,b,c or a range start:stop:count: a row for each")
       ->capture_default_str();
   cmd.add_option("--atol", o.atol,
-                 "CVODE's absolute tolerance on the scaled state; must be >= 0 (0: 1e-6 of CVODE's rtol); the "
-                 "verifying solve uses the smaller of atol and that default, /16")
+                 "CVODE's absolute tolerance on the scaled state; must be >= 0 (0: 1e-6 of CVODE's rtol); a "
+                 "verified solve uses the smaller of atol and that default (/16 for its second solve), "
+                 "--no-verify atol as given")
       ->check(finite_number())
       ->capture_default_str();
   cmd.add_option("--segments", o.segments,

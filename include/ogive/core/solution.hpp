@@ -67,8 +67,9 @@ struct Options {
   // because it controls local errors only.
   double rtol = 1e-8;
   // CVODE's absolute tolerance on the scaled state (order-one numbers); 0 (the default) means 1e-6 of
-  // CVODE's rtol. A larger atol loosens the first solve only: the verifying solve uses the smaller of
-  // atol and that default, divided by 16, so that no atol can make both solves agree on a wrong answer.
+  // CVODE's rtol. A verified solve uses the smaller of atol and that default (divided by 16 for its
+  // tighter solve): a loose atol changes neither its numbers nor its estimate nor its status. Raw
+  // solves (verify off) take it as given.
   double atol = 0.0;
   int segments = 8;    // multiple shooting: segments over the domain (>= 1; breakpoints, loads, a hinge add more)
   std::int64_t max_steps = 200000;  // CVODE step limit for one integration span
