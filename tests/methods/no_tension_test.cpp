@@ -244,7 +244,8 @@ TEST_CASE("no-tension: an arch too thin to stand without tension is inadmissible
 TEST_CASE("no-tension: an rtol below what double precision supports is the best answer, with the rtol it supports") {
   // At rtol 1e-14 the adaptive quadrature cannot resolve its integrals to rtol / 100 (round-off in the
   // section law near the hinges): it stops at a bounded number of panels, gives its best answer as
-  // tolerance_not_met, and its message names the rtol the scene supports, which is then met.
+  // tolerance_not_met (or ill_conditioned, where the round-off bound exceeds rtol), and its message names
+  // the rtol the scene supports, which is then met.
   Scene s = paper_scene(0.0, 0.08, 1e-3);
   s.section = SectionKind::no_tension;
   Options o;
@@ -252,7 +253,8 @@ TEST_CASE("no-tension: an rtol below what double precision supports is the best 
   const Solution sol = solve(s, o);
   REQUIRE(sol.field);
   CHECK(sol.method == Method::quadrature);
-  CHECK(sol.status == Status::tolerance_not_met);
+  // Either the estimate exceeds rtol, or the round-off bound does (core/solution.hpp: roundoff_bound).
+  CHECK((sol.status == Status::tolerance_not_met || sol.status == Status::ill_conditioned));
   CHECK(sol.diagnostics.error_estimate > o.rtol);
   CHECK(sol.diagnostics.segments <= 10000);  // panels: bounded (AdaptiveQuadrature's kMaxPanels and rounds)
   const std::string ask = "ask for rtol ";
