@@ -46,18 +46,18 @@ std::string parse_error_words(CLI::App& app, CLI::App* where, const std::vector<
   std::string what = e.what();
   std::replace(what.begin(), what.end(), '\n', ' ');
   if (dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr) {
-    const std::string command = where == &app ? std::string("ogive") : where->get_name();
+    const std::string command = where == &app ? std::string() : where->get_name() + ": ";
     const std::vector<std::string> extras = app.remaining(true);
     for (const std::string& word : extras) {
       const std::string name = word.substr(0, word.find('='));
       if (name.rfind("--", 0) == 0 && name != "--help" && name != "--version" &&
           std::find(names.begin(), names.end(), name) == names.end())
-        return fmt::format("{}: unknown option '{}'", command, name);
+        return fmt::format("{}unknown option '{}'", command, name);
     }
     if (!extras.empty()) {
       std::string list;
       for (const std::string& word : extras) list += (list.empty() ? "'" : " '") + word + "'";
-      return fmt::format("{}: unexpected argument{} {} (a value follows its option, e.g. --span 8)", command,
+      return fmt::format("{}unexpected argument{} {} (a value follows its option, e.g. --span 8)", command,
                          extras.size() > 1 ? "s" : "", list);
     }
   }
@@ -82,19 +82,17 @@ std::string parse_error_line(CLI::App& app, const std::vector<std::string>& args
   CLI::App* where = &app;
   for (CLI::App* sub : app.get_subcommands({}))
     if (sub->parsed()) where = sub;
-  for (const CLI::Option* opt : where->get_options())
-    for (const std::string& n : opt->get_lnames()) names.push_back("--" + n);
-  if (where == &app) {
-    names.clear();
+  if (where == &app)
     for (CLI::App* sub : app.get_subcommands({})) names.push_back(sub->get_name());
-  }
+  else
+    for (const CLI::Option* opt : where->get_options())
+      for (const std::string& n : opt->get_lnames()) names.push_back("--" + n);
   std::string hint;
   for (const std::string& word : args)
     if (hint.empty() && std::find(names.begin(), names.end(), word.substr(0, word.find('='))) == names.end() &&
         (word.rfind("--", 0) == 0 || where == &app))
       hint = did_you_mean(word.substr(0, word.find('=')), names);
-  const std::string words = parse_error_words(app, where, names, e);
-  return (words.rfind("ogive:", 0) == 0 ? "" : "ogive: ") + words + hint + "\n";
+  return "ogive: " + parse_error_words(app, where, names, e) + hint + "\n";
 }
 
 // Help or version: refused with status 2 when the command line holds arguments nobody takes (CLI11
