@@ -66,9 +66,9 @@ TEST_CASE("report: one self-contained page whose numbers are ogive thrust's and 
   CHECK(value_after(html, "<th>minimum (limit analysis)</th>") == std::stod(column(limit.out, "H_min")));
   CHECK(value_after(html, "<th>maximum (limit analysis)</th>") == std::stod(column(limit.out, "H_max")));
   CHECK(value_after(html, "<th>minimum thickness") / 8.0 ==
-        doctest::Approx(std::stod(column(limit.out, "thickness_min_ratio"))).epsilon(kExact));
+        doctest::Approx(std::stod(column(limit.out, "thickness_min_ratio"))).epsilon(ogive::kExact));
   CHECK(value_after(html, "<th>geometric safety factor") ==
-        doctest::Approx(std::stod(column(limit.out, "geometric_safety_factor"))).epsilon(kExact));
+        doctest::Approx(std::stod(column(limit.out, "geometric_safety_factor"))).epsilon(ogive::kExact));
   CHECK(value_after(html, "<th>collapse load factor") == std::stod(column(limit.out, "load_factor")));
   // The drawing inside shows the load, the fill, both limit lines and the mechanism.
   for (const char* id : {"loads", "fill", "thrust-line-min", "thrust-line-max", "mechanism"})
