@@ -237,6 +237,14 @@ void draw_mechanism(std::string& body, const Scene& scene, const CollapseMechani
     body += "<path stroke-dasharray=\"" + fmt::format("{},{}", 3 * frame.stroke, 2 * frame.stroke) + "\" d=\"" +
             path_data({outline}) + " Z\"/>\n";
   }
+  for (PlanePoint h : m.hinges) {  // the hinges where they are, before the blocks move
+    const PlanePoint c = frame.at(h.x, h.y);
+    body += "<circle fill=\"none\" stroke-width=\"" + fmt::format("{}", 2 * frame.stroke) + "\"";
+    attribute(body, "cx", c.x);
+    attribute(body, "cy", -c.y);
+    attribute(body, "r", 0.45 * frame.font);
+    body += "/>\n";
+  }
   body += "</g>\n";
 }
 
