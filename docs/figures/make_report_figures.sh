@@ -28,9 +28,7 @@ for name in semicircle engineers-arch spreading; do
   rsvg-convert --width 800 "$tmp/$name.svg" -o "$out/report-$name-drawing.png"
   # shellcheck disable=SC2086
   "$ogive" report ${scenes[$name]} --output "$tmp/$name.html" >/dev/null
-  "$browser" --headless --no-sandbox --disable-gpu --hide-scrollbars --window-size=900,2600 \
-    --screenshot="$tmp/$name-full.png" "file://$tmp/$name.html" 2>/dev/null
-  # A small PNG: 8-bit palette when pngquant or ImageMagick is at hand, else as rendered.
-  if command -v convert >/dev/null; then convert "$tmp/$name-full.png" -trim -resize 700x -colors 64 "$out/report-$name.png"
-  else cp "$tmp/$name-full.png" "$out/report-$name.png"; fi
+  # The page at 800 px wide, long enough for every section (a few hundred KB).
+  "$browser" --headless --no-sandbox --disable-gpu --hide-scrollbars --window-size=800,2500 \
+    --screenshot="$out/report-$name.png" "file://$tmp/$name.html" 2>/dev/null
 done

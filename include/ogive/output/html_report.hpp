@@ -14,7 +14,8 @@
 //   #spreading  the no-tension section's H/V against both springings' outward spread d/L (0 and a log
 //               scale 1e-6 .. 1e-2), as an SVG chart, with the limit analysis' minimum H/V as a line; a
 //               spread at which the solve fails is left out and listed below the chart
-//   #inputs     the inputs as given (option and value, in the order given)
+//   #inputs     the inputs as given (option and value, in the order the caller lists them; ogive report
+//               lists them in the order of its --help)
 // Every number is printed to 4 significant digits, with its full value (shortest round trip, SI units)
 // in the element's data-value attribute.
 #pragma once
