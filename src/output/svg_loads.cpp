@@ -119,7 +119,7 @@ std::string draw_loads(std::string& body, const Scene& scene, const Outline& out
       if (q.intensity > 0) arrow(body, tails.back(), {x, top}, frame.stroke);
       else arrow(body, {x, top}, tails.back(), frame.stroke);
     }
-    path(body, "live-load", {tails}, fmt::format("fill=\"none\" stroke-width=\"{}\"", frame.stroke).c_str());
+    body += fmt::format("<path fill=\"none\" stroke-width=\"{}\" d=\"{}\"/>\n", frame.stroke, path_data({tails}));
     text(body, {0.5 * (from + to), highest + 0.4 * font}, 0.8 * font, "middle",
          fmt::format("q = {} kN/m^2", kilo(q.intensity)));
     drawn.add({from, highest + 1.5 * font});
