@@ -100,9 +100,13 @@ std::string draw_loads(std::string& body, const Scene& scene, const Outline& out
     const PlanePoint surface{x, top}, away{x, top + length};
     if (p.force > 0) arrow(body, away, surface, stroke);
     else arrow(body, surface, away, stroke);
-    text(body, {x + 0.4 * font, top + length - 0.3 * font}, 0.8 * font, "start", fmt::format("P = {} kN/m", kilo(p.force)));
+    // The label on the side of the arrow with more room, so that it stays in the picture.
+    const bool right = x <= 0.5 * frame.L;
+    const double label_x = x + (right ? 0.4 : -0.4) * font;
+    const char* anchor = right ? "start" : "end";
+    text(body, {label_x, top + length - 0.3 * font}, 0.8 * font, anchor, fmt::format("P = {} kN/m", kilo(p.force)));
     if (thrust_drawn)
-      text(body, {x + 0.4 * font, top + length - 1.3 * font}, 0.7 * font, "start",
+      text(body, {label_x, top + length - 1.3 * font}, 0.7 * font, anchor,
            "the line of thrust jumps here: N changes under P, and so does M/N");
     drawn.add({x, top + length + font});
   }
