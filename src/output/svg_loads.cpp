@@ -101,7 +101,7 @@ std::string draw_loads(std::string& body, const Scene& scene, const Outline& out
     if (p.force > 0) arrow(body, away, surface, stroke);
     else arrow(body, surface, away, stroke);
     // The label on the side of the arrow with more room, so that it stays in the picture.
-    const bool right = x <= 0.5 * frame.L;
+    const bool right = x <= 0.45 * frame.L;
     const double label_x = x + (right ? 0.4 : -0.4) * font;
     const char* anchor = right ? "start" : "end";
     text(body, {label_x, top + length - 0.3 * font}, 0.8 * font, anchor, fmt::format("P = {} kN/m", kilo(p.force)));
