@@ -37,6 +37,8 @@ constexpr Subcommand kSubcommands[] = {
     {"draw", "an SVG picture of each scene to scale: arch, thrust line, supports", add_draw_options},
     {"limit", "limit analysis (rigid voussoirs, no tension): H_min, H_max, t_min, collapse load; one row per scene",
      add_limit_options},
+    {"report", "one HTML page per scene: drawing, reactions, thrust range, safety, collapse, spreading",
+     add_report_options},
 };
 
 // The parse error in the user's words rather than the parser's: an unknown option or a stray value,

@@ -110,7 +110,7 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"error_H_over_V", "", "bench: true error of H_over_V (H_left / V_left) against the reference's"},
     {"error_profile", "", "bench: true error of the profile (profile_difference) against the reference"},
     {"median_seconds", "s", "bench: median time of one solve"},
-    {"file", "", "draw: the SVG file written for the scene"},
+    {"file", "", "draw, report: the SVG drawing or HTML page written for the scene"},
     {"joints", "", "limit: joint orientation, radial (normal to the axis) or vertical"},
     {"weight", "", "limit: voussoir (each voussoir's weight at its centroid) or axis (rho g t per axis length)"},
     {"joints_count", "", "limit: joints springing to springing, both included"},

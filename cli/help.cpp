@@ -37,6 +37,9 @@ void add_help_texts(CLI::App& app) {
       {"draw",
        "  ogive draw --eccentricity 0.5 --output equilateral.svg\n"
        "  ogive draw --eccentricity 0,0.5,1 --support-displacement-ratio 0.0001 --output-dir pictures"},
+      {"report",
+       "  ogive report --eccentricity 0.5 --thickness-ratio 0.1 --output equilateral.html\n"
+       "  ogive report --section no-tension --support-displacement-ratio 0.0001 --output -"},
   };
   for (CLI::App* sub : app.get_subcommands({})) {
     const auto it = examples.find(sub->get_name());

@@ -22,5 +22,6 @@ Run add_curve_options(CLI::App& cmd);    // the generator curve's geometry
 Run add_bench_options(CLI::App& cmd);    // time and true error per method and rtol
 Run add_draw_options(CLI::App& cmd);     // an SVG file per scene
 Run add_limit_options(CLI::App& cmd);    // limit analysis of rigid voussoirs
+Run add_report_options(CLI::App& cmd);   // an HTML page per scene
 
 }  // namespace ogive::cli

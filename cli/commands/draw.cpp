@@ -1,10 +1,12 @@
-// ogive draw: one SVG file per scene (ogive/output/svg.hpp), and one CSV row per file on stdout.
+// ogive draw and ogive report: one file per scene, an SVG drawing (ogive/output/svg.hpp) or an HTML page
+// (ogive/output/html_report.hpp), and one CSV row per file on stdout (report --output -: the page instead).
 #include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <set>
 #include <string>
@@ -19,6 +21,7 @@
 #include "columns.hpp"
 #include "commands.hpp"
 #include "ogive/limit/limit.hpp"
+#include "ogive/output/html_report.hpp"
 #include "ogive/output/svg.hpp"
 #include "ogive/solve/solve.hpp"
 #include "option_text.hpp"
@@ -54,25 +57,13 @@ Columns draw_columns() {
   return Columns(results, results);
 }
 
-// The minimum and maximum thrust states of the limit analysis (default options: radial joints, the
-// voussoirs' own weight) as lines to draw, with their hinges; none where the arch cannot stand.
-std::vector<ExtraThrustLine> limit_lines(const Scene& scene) {
+// The limit analysis (default options: radial joints, the voussoirs' own weight) drawn: the minimum and
+// maximum thrust states as lines with their hinges (none where the arch cannot stand), and with a live
+// load the collapse mechanism.
+void add_limit_drawing(const Scene& scene, DrawingOptions& drawing) {
   const LimitResult r = analyse_limit(scene, LimitOptions{});
-  std::vector<ExtraThrustLine> lines;
-  for (const auto& [state, id, name, colour] :
-       {std::tuple{&r.min_state, "thrust-line-min", "minimum", "#1e8449"},
-        std::tuple{&r.max_state, "thrust-line-max", "maximum", "#7d3c98"}}) {
-    if (!state->found()) continue;
-    ExtraThrustLine line;
-    line.id = id;
-    line.colour = colour;
-    line.label = fmt::format("{} thrust (limit analysis, rigid voussoirs): H/V = {:.4g}, {} hinges", name,
-                             state->H / r.V, state->hinges.size());
-    for (const Eigen::Vector2d& c : state->crossing) line.points.push_back({c.x(), c.y()});
-    for (const Hinge& h : state->hinges) line.hinges.push_back({h.point.x(), h.point.y()});
-    lines.push_back(std::move(line));
-  }
-  return lines;
+  drawing.extra_lines = limit_thrust_lines(r);
+  if (std::optional<CollapseMechanism> m = collapse_mechanism(scene, r)) drawing.mechanisms.push_back(std::move(*m));
 }
 
 // The drawing's caption: the curve, its shape parameters, span, t/L and d/L, as the options name them.
@@ -81,11 +72,13 @@ std::string draw_title(const SceneParameters& p) {
   for (const auto& [name, v] : {std::pair{"eccentricity", p.eccentricity}, std::pair{"rise ratio", p.rise_ratio},
                                 std::pair{"haunch angle", p.haunch_angle}, std::pair{"crown angle", p.crown_angle}})
     if (!std::isnan(v)) title += fmt::format(", {} {}", name, v);
-  title += fmt::format(", span {:.6g} m, t/L {}, d/L {}{}", p.span, p.thickness_ratio, p.support_displacement_ratio,
-                       p.plane_strain ? ", plane strain" : "");
-  if (!std::isnan(p.point_load)) title += fmt::format(", P {:g} N/m at x/L {:g}", p.point_load, p.point_load_at);
+  title += fmt::format(", span {:.6g} m, t/L {}", p.span, p.thickness_ratio);
+  if (p.support_displacement_ratio != 0) title += fmt::format(", d/L {}", p.support_displacement_ratio);
+  if (p.plane_strain) title += ", plane strain";
+  if (std::string(p.section) != "elastic") title += fmt::format(", {} section", p.section);
+  if (!std::isnan(p.point_load)) title += fmt::format(", P {:g} kN/m at x/L {:g}", p.point_load / 1000, p.point_load_at);
   if (!std::isnan(p.live_load))
-    title += fmt::format(", q {:g} N/m^2 over x/L {:g}..{:g}", p.live_load, p.live_load_from, p.live_load_to);
+    title += fmt::format(", q {:g} kN/m^2 over x/L {:g}..{:g}", p.live_load / 1000, p.live_load_from, p.live_load_to);
   if (!std::isnan(p.fill_density)) title += fmt::format(", fill {:g} kg/m^3 to {:g} L", p.fill_density, p.fill_height_ratio);
   if (p.crown_hinge) title += ", crown hinge";
   return title;
@@ -93,11 +86,11 @@ std::string draw_title(const SceneParameters& p) {
 
 // The file of one scene in --output-dir: the curve, then each option that varies in the sweep with the
 // scene's value, e.g. "pointed_thickness-ratio-0.2_eccentricity-0.5.svg" (the order of --help).
-std::string draw_file_name(const SceneParameters& p, const SceneOptions& so) {
+std::string draw_file_name(const SceneParameters& p, const SceneOptions& so, const char* extension) {
   std::string name = p.curve;
   for (const Axis& a : so.axes)
     if (a.values.size() > 1) name += fmt::format("_{}-{}", a.flag.substr(2), p.*(a.field));
-  return name + ".svg";
+  return name + extension;
 }
 
 // Refuses, before anything is solved or printed, a target that cannot be written: a directory where a
@@ -143,7 +136,8 @@ void write_drawing(const std::string& path, const std::string& svg) {
 }
 
 // The file each scene of the plan is drawn into, each checked writable.
-std::vector<std::string> target_files(const ScenePlan& plan, const SceneOptions& so, const DrawTargets& to) {
+std::vector<std::string> target_files(const ScenePlan& plan, const SceneOptions& so, const DrawTargets& to,
+                                      const char* extension) {
   std::vector<std::string> files;
   if (!to.output.empty()) {
     files.push_back(to.output);
@@ -153,7 +147,7 @@ std::vector<std::string> target_files(const ScenePlan& plan, const SceneOptions&
       throw UsageError(fmt::format("--output-dir: '{}' is not an existing directory", to.output_dir));
     std::set<std::string> seen;
     for (std::size_t i = 0; i < plan.size(); ++i) {
-      const std::string name = draw_file_name(plan.parameters(i), so);
+      const std::string name = draw_file_name(plan.parameters(i), so, extension);
       if (!seen.insert(name).second)
         throw UsageError(fmt::format("--output-dir: two scenes would both be drawn into {} (a value repeats)", name));
       files.push_back((std::filesystem::path(to.output_dir) / name).string());
@@ -197,14 +191,14 @@ int run_draw(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
   if (plan.size() > kMaxDrawings)
     throw UsageError(fmt::format("--output-dir: the options give {} scenes, more than {} drawings", plan.size(), kMaxDrawings));
   columns.select(d.columns, plan.varying_inputs());
-  const std::vector<std::string> files = target_files(plan, d.scene, to);
+  const std::vector<std::string> files = target_files(plan, d.scene, to, ".svg");
   const bool all_ok = write_scenes(
       plan, columns, out, 1,  // one file at a time
       [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
         const Solution sol = solve(scene, o);
         DrawingOptions drawing;
         drawing.title = draw_title(p);
-        if (to.limit) drawing.extra_lines = limit_lines(scene);
+        if (to.limit) add_limit_drawing(scene, drawing);
         const std::string& path = files[p.scene - 1];
         write_drawing(path, arch_svg(scene, sol, drawing));
         CsvRow row(columns.keep());
@@ -217,9 +211,70 @@ int run_draw(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
   return all_ok ? kExitOk : kExitNotConverged;
 }
 
-}  // namespace
+// The inputs as given on the command line, option by option in the order of --help.
+std::vector<std::pair<std::string, std::string>> given_inputs(const CLI::App& cmd) {
+  std::vector<std::pair<std::string, std::string>> inputs;
+  for (const CLI::Option* o : cmd.get_options()) {
+    if (o->count() == 0 || o->get_name() == "--output" || o->get_name() == "--output-dir") continue;
+    std::string value;
+    for (const std::string& r : o->results()) value += (value.empty() ? "" : " ") + r;
+    inputs.emplace_back(o->get_name(), value);
+  }
+  return inputs;
+}
 
-Run add_draw_options(CLI::App& cmd) {
+int run_report(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
+  Columns columns = draw_columns();
+  if (d.columns.columns == "help") {
+    write_all(out, columns.help());
+    return kExitOk;
+  }
+  const Options o = drawing_solver(d);
+  const DrawTargets& to = d.targets;
+  check_stations(o.stations);
+  check_options(o);
+  refuse_empty_name(cmd, "--output", to.output, "a file name ending in .html, or - for standard output");
+  refuse_empty_name(cmd, "--output-dir", to.output_dir, "an existing directory, . for the current one");
+  if (to.output.empty() == to.output_dir.empty())
+    throw UsageError(to.output.empty() ? "--output: report needs --output FILE.html (one scene; - for standard output) "
+                                         "or --output-dir DIR (one file per scene)"
+                                       : "--output-dir: give --output FILE.html or --output-dir DIR, not both");
+  const ScenePlan plan(d.scene, cmd);
+  if (!to.output.empty() && plan.size() > 1)
+    throw UsageError(fmt::format("--output: the options give {} scenes and one file holds one report; use "
+                                 "--output-dir DIR for one file per scene", plan.size()));
+  if (plan.size() > kMaxDrawings)
+    throw UsageError(fmt::format("--output-dir: the options give {} scenes, more than {} reports", plan.size(), kMaxDrawings));
+  ReportOptions report;
+  report.solver = o;
+  report.inputs = given_inputs(cmd);
+  if (to.output == "-") {  // the page alone on standard output
+    const SceneParameters p = plan.parameters(0);
+    const ScenePlan::Built built = plan.build(p);
+    if (!built.scene) throw UsageError(built.problem);
+    report.title = draw_title(p);
+    write_all(out, html_report(*built.scene, report));
+    return kExitOk;
+  }
+  columns.select(d.columns, plan.varying_inputs());
+  const std::vector<std::string> files = target_files(plan, d.scene, to, ".html");
+  const bool all_ok = write_scenes(plan, columns, out, 1, [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
+    report.title = draw_title(p);
+    const std::string& path = files[p.scene - 1];
+    write_drawing(path, html_report(scene, report));
+    const Solution sol = solve(scene, o);
+    CsvRow row(columns.keep());
+    add_scene_columns(row, p, scene.curve.get());
+    row.add(to_string(sol.method)).add(to_string(sol.status)).add(sol.H).add(sol.V).add(sol.H_over_V);
+    row.add(sol.message).add(path);
+    emit(row.take());
+    return sol.ok();
+  });
+  return all_ok ? kExitOk : kExitNotConverged;
+}
+
+// The options draw and report share: the scene, the solver, the stations, the targets, the columns.
+std::shared_ptr<DrawOptions> add_picture_options(CLI::App& cmd, const char* output_help) {
   auto options = std::make_shared<DrawOptions>();
   options->solver.stations = 101;
   DrawTargets& to = options->targets;
@@ -229,14 +284,31 @@ Run add_draw_options(CLI::App& cmd) {
                  "points of the thrust line, springing to springing; must lie in [2, 1000000]")
       ->check(whole_count())
       ->capture_default_str();
-  cmd.add_option("--output", to.output, "the SVG file of the one scene (refused for a sweep)");
+  cmd.add_option("--output", to.output, output_help);
+  return options;
+}
+
+}  // namespace
+
+Run add_draw_options(CLI::App& cmd) {
+  auto options = add_picture_options(cmd, "the SVG file of the one scene (refused for a sweep)");
+  DrawTargets& to = options->targets;
   cmd.add_flag("--limit", to.limit,
-               "also draw the limit analysis' minimum and maximum thrust lines with their hinges (ogive limit's "
-               "defaults: radial joints, the voussoirs' weight)");
+               "also draw the limit analysis' minimum and maximum thrust lines with their hinges and, with a point "
+               "or live load, the collapse mechanism (ogive limit's defaults: radial joints, the voussoirs' weight)");
   cmd.add_option("--output-dir", to.output_dir,
                  "an existing directory: one SVG per scene, named after the curve and the options that vary");
   add_column_options(cmd, options->columns);
   return [options, &cmd](std::ostream& out) { return run_draw(*options, cmd, out); };
+}
+
+Run add_report_options(CLI::App& cmd) {
+  auto options = add_picture_options(
+      cmd, "the HTML file of the one scene (refused for a sweep); - writes the page to standard output");
+  cmd.add_option("--output-dir", options->targets.output_dir,
+                 "an existing directory: one HTML page per scene, named after the curve and the options that vary");
+  add_column_options(cmd, options->columns);
+  return [options, &cmd](std::ostream& out) { return run_report(*options, cmd, out); };
 }
 
 }  // namespace ogive::cli

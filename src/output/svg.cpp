@@ -12,91 +12,14 @@
 #include <fmt/format.h>
 
 #include "ogive/output/csv.hpp"
+#include "svg_draw.hpp"
 
 namespace ogive {
 namespace {
 
+using namespace svg_draw;
+
 constexpr const char* kThrustColour = "#c0392b";
-
-struct Box {
-  double x0 = std::numeric_limits<double>::infinity(), y0 = x0;
-  double x1 = -x0, y1 = -x0;
-  void add(PlanePoint p) {
-    x0 = std::min(x0, p.x);
-    x1 = std::max(x1, p.x);
-    y0 = std::min(y0, p.y);
-    y1 = std::max(y1, p.y);
-  }
-  double width() const { return x1 - x0; }
-  bool contains(PlanePoint p, double margin) const {
-    return p.x >= x0 - margin && p.x <= x1 + margin && p.y >= y0 - margin && p.y <= y1 + margin;
-  }
-};
-
-// Every number in the file in its shortest round-trip form (csv.hpp), so that the drawn coordinates
-// are exactly the computed ones.
-void number(std::string& out, double v) { append_number(out, v); }
-
-// An SVG point: metres, y flipped (see svg.hpp).
-void point(std::string& out, PlanePoint p) {
-  number(out, p.x);
-  out += ',';
-  number(out, -p.y);
-}
-
-void attribute(std::string& out, const char* name, double v) {
-  out += fmt::format(" {}=\"", name);
-  number(out, v);
-  out += '"';
-}
-
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else if (c == '"') out += "&quot;";
-    else if (static_cast<unsigned char>(c) < 0x20) out += ' ';  // control characters are not XML
-    else out += c;
-  }
-  return out;
-}
-
-// "M p0 L p1 L p2 ...": one subpath per run of points, a new one after each gap.
-std::string path_data(const std::vector<std::vector<PlanePoint>>& runs) {
-  std::string d;
-  for (const auto& run : runs) {
-    for (std::size_t k = 0; k < run.size(); ++k) {
-      if (!d.empty()) d += ' ';
-      d += k == 0 ? "M " : "L ";
-      point(d, run[k]);
-    }
-  }
-  return d;
-}
-
-void path(std::string& out, const char* id, const std::vector<std::vector<PlanePoint>>& runs, const char* style) {
-  out += fmt::format("<path id=\"{}\" {} d=\"{}\"/>\n", id, style, path_data(runs));
-}
-
-void line(std::string& out, PlanePoint a, PlanePoint b, const std::string& style) {
-  out += "<line";
-  attribute(out, "x1", a.x);
-  attribute(out, "y1", -a.y);
-  attribute(out, "x2", b.x);
-  attribute(out, "y2", -b.y);
-  out += ' ' + style + "/>\n";
-}
-
-// anchor: start, middle or end.
-void text(std::string& out, PlanePoint at, double size, const char* anchor, const std::string& content) {
-  out += "<text";
-  attribute(out, "x", at.x);
-  attribute(out, "y", -at.y);
-  attribute(out, "font-size", size);
-  out += fmt::format(" text-anchor=\"{}\" stroke=\"none\">{}</text>\n", anchor, escaped(content));
-}
 
 // The largest of 1, 2, 5 times a power of ten not above `target` (> 0).
 double round_length(double target) {
@@ -155,22 +78,6 @@ void pinned_support(std::string& out, const char* id, const SectionFaces& faces,
   out += "</g>\n";
 }
 
-// The sizes the drawing is made to, in drawing units (svg.hpp): the span is 100 to 1000 units, whatever
-// its size in metres, so that fonts and strokes are a few units (rsvg draws no text below about 0.1
-// unit, nothing at 1e-5).
-struct Frame {
-  double unit = 1;            // metres per drawing unit
-  double L = 0, t = 0;        // span and thickness
-  Box box;                    // the arch's outline
-  double W = 0;               // the outline's width
-  double stroke = 0, font = 0;
-  double reach = 0;           // how far a support reaches beyond the section's faces
-  PlanePoint at(double x, double y) const { return PlanePoint{x / unit, y / unit}; }
-  SectionFaces faces(const SectionFaces& f) const {
-    return SectionFaces{at(f.intrados.x, f.intrados.y), at(f.extrados.x, f.extrados.y)};
-  }
-};
-
 std::string face_style(double stroke) {
   return fmt::format("fill=\"none\" stroke=\"black\" stroke-width=\"{}\"", stroke);
 }
@@ -186,11 +93,6 @@ std::string extra_line_style(const ExtraThrustLine& extra, double stroke) {
   return fmt::format("stroke=\"{}\" stroke-width=\"{}\" stroke-dasharray=\"{},{}\"", extra.colour, 1.2 * stroke,
                      4 * stroke, 2 * stroke);
 }
-
-// The arch's axis and faces, in drawing units.
-struct Outline {
-  std::vector<PlanePoint> axis, intrados, extrados;
-};
 
 // A face of the left half ends at the crown's vertical joint x = `joint`: carried to it along the
 // crown's tangent when short of it, cut where the polyline crosses it when past it.
@@ -398,28 +300,69 @@ std::string result_text(const Solution& solution) {
                      solution.message);
 }
 
-// Title at title_y: the caption, then the reactions (or why there are none), then a legend.
-std::string title_svg(const Scene& scene, const Solution& solution, const DrawingOptions& options, const Frame& frame,
+// A springing's support and movement, in mm and rad: "left clamped, spreads 0.8 mm outwards".
+std::string springing_text(const char* side, const Support& support) {
+  std::string t = fmt::format("{} {}", side, support.kind == SupportKind::clamped ? "clamped" : "pinned");
+  if (support.spread != 0)
+    t += fmt::format(", spreads {:.4g} mm {}", std::abs(support.spread) * 1000, support.spread > 0 ? "outwards" : "inwards");
+  if (support.settlement != 0)
+    t += fmt::format(", settles {:.4g} mm{}", std::abs(support.settlement) * 1000, support.settlement > 0 ? "" : " upwards");
+  if (support.rotation != 0) t += fmt::format(", turns {:.4g} rad", support.rotation);
+  if (support.spread == 0 && support.settlement == 0 && support.rotation == 0) t += ", fixed";
+  return t;
+}
+
+// The title's lines: the caption wrapped to the page, the reactions (or why there are none), the
+// springings; then the legend, a line each.
+struct TitleText {
+  std::vector<std::string> lines;
+  std::string load_scale;  // the load arrows' scales, "" without loads
+  std::size_t legend_lines(const DrawingOptions& o) const {
+    return 1 + o.extra_lines.size() + o.mechanisms.size() + (load_scale.empty() ? 0 : 1);
+  }
+  double height(const DrawingOptions& o, double font) const {
+    return (1.4 * static_cast<double>(lines.size()) + 1.3 * static_cast<double>(legend_lines(o))) * font;
+  }
+};
+
+TitleText title_text(const Scene& scene, const Solution& solution, const DrawingOptions& options, double chars) {
+  TitleText t;
+  t.lines = wrap(options.title, static_cast<std::size_t>(chars));
+  t.lines.push_back(result_text(solution));
+  t.lines.push_back(fmt::format("springings: {}; {}", springing_text("left", scene.left),
+                                springing_text("right", scene.right)));
+  return t;
+}
+
+// Title at title_y: the title's lines, then a legend.
+std::string title_svg(const Scene& scene, const TitleText& t, const DrawingOptions& options, const Frame& frame,
                       double title_y) {
   const double font = frame.font, x0 = frame.box.x0;
   std::string title = "<g id=\"title\" fill=\"black\">\n";
-  text(title, {x0, title_y}, font, "start", options.title);
-  text(title, {x0, title_y - 1.4 * font}, 0.85 * font, "start", result_text(solution));
-  const double legend_y = title_y - 2.6 * font;
+  double y = title_y;
+  for (std::size_t k = 0; k < t.lines.size(); ++k, y -= 1.4 * font)
+    text(title, {x0, y}, k + 2 < t.lines.size() ? font : 0.85 * font, "start", t.lines[k]);
+  const double legend_y = y + 0.2 * font;
+  const bool cracking = scene.section == SectionKind::no_tension;
   line(title, {x0, legend_y + 0.3 * font}, {x0 + 2 * font, legend_y + 0.3 * font}, thrust_style(frame.stroke));
-  text(title, {x0 + 2.5 * font, legend_y}, 0.8 * font, "start", "elastic line of thrust");
-  line(title, {x0 + 14 * font, legend_y + 0.3 * font}, {x0 + 16 * font, legend_y + 0.3 * font},
-       axis_style(frame.stroke));
-  text(title, {x0 + 16.5 * font, legend_y}, 0.8 * font, "start",
-       fmt::format("axis; section t = {:g} m; springings {}, {}", scene.thickness,
-                   scene.left.kind == SupportKind::clamped ? "clamped" : "pinned",
-                   scene.right.kind == SupportKind::clamped ? "clamped" : "pinned"));
-  for (std::size_t k = 0; k < options.extra_lines.size(); ++k) {
-    const ExtraThrustLine& extra = options.extra_lines[k];
-    const double y = legend_y - 1.3 * font * static_cast<double>(k + 1);
+  text(title, {x0 + 2.5 * font, legend_y}, 0.8 * font, "start",
+       cracking ? "cracked-section line of thrust (no-tension section; cracks shaded)" : "elastic line of thrust");
+  const double axis_x = x0 + (cracking ? 30 : 14) * font;
+  line(title, {axis_x, legend_y + 0.3 * font}, {axis_x + 2 * font, legend_y + 0.3 * font}, axis_style(frame.stroke));
+  text(title, {axis_x + 2.5 * font, legend_y}, 0.8 * font, "start", fmt::format("axis; section t = {:g} m", scene.thickness));
+  y = legend_y;
+  for (const ExtraThrustLine& extra : options.extra_lines) {
+    y -= 1.3 * font;
     line(title, {x0, y + 0.3 * font}, {x0 + 2 * font, y + 0.3 * font}, extra_line_style(extra, frame.stroke));
     text(title, {x0 + 2.5 * font, y}, 0.8 * font, "start", extra.label);
   }
+  for (const CollapseMechanism& m : options.mechanisms) {
+    y -= 1.3 * font;
+    line(title, {x0, y + 0.3 * font}, {x0 + 2 * font, y + 0.3 * font},
+         fmt::format("stroke=\"{}\" stroke-width=\"{}\"", m.colour, 3 * frame.stroke));
+    text(title, {x0 + 2.5 * font, y}, 0.8 * font, "start", m.label);
+  }
+  if (!t.load_scale.empty()) text(title, {x0, y - 1.3 * font}, 0.8 * font, "start", t.load_scale);
   title += "</g>\n";
   return title;
 }
@@ -448,7 +391,14 @@ std::string document(const std::string& content, const Frame& frame, const Box& 
   svg += fmt::format("<desc>ogive draw: one user unit is {:g} m; the arch's point (x, y) is drawn at (x, -y) / {:g}.</desc>\n",
                      unit, unit);
   svg += "<defs><marker id=\"arrowhead\" viewBox=\"0 0 10 10\" refX=\"8\" refY=\"5\" markerWidth=\"4\" "
-         "markerHeight=\"4\" orient=\"auto\"><path d=\"M 0 0 L 10 5 L 0 10 Z\" fill=\"#1f4e9c\"/></marker></defs>\n";
+         "markerHeight=\"4\" orient=\"auto\"><path d=\"M 0 0 L 10 5 L 0 10 Z\" fill=\"#1f4e9c\"/></marker>";
+  svg += fmt::format("<marker id=\"load-arrowhead\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"5\" "
+                     "markerHeight=\"5\" orient=\"auto\"><path d=\"M 0 0 L 10 5 L 0 10 Z\" fill=\"{}\"/></marker>",
+                     kLoadColour);
+  svg += fmt::format("<pattern id=\"fill-hatch\" patternUnits=\"userSpaceOnUse\" width=\"{0}\" height=\"{0}\" "
+                     "patternTransform=\"rotate(45)\"><rect width=\"{0}\" height=\"{0}\" fill=\"#f3ead8\"/>"
+                     "<line x1=\"0\" y1=\"0\" x2=\"0\" y2=\"{0}\" stroke=\"#a88a5a\" stroke-width=\"{1}\"/></pattern></defs>\n",
+                     font, 0.1 * font);
   svg += "<rect";
   for (const auto& [name, v] : {std::pair{"x", vx}, std::pair{"y", vy}, std::pair{"width", vw}, std::pair{"height", vh}})
     attribute(svg, name, v);
@@ -487,21 +437,26 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
   frame.font = 0.022 * frame.W;
   frame.reach = 0.3 * std::max(frame.t, 0.05 * frame.L);
 
-  // What is drawn grows the view beyond the arch: the supports, the thrust line, the arrows.
+  // What is drawn grows the view beyond the arch: the supports, the thrust line, the loads, the arrows.
   Box drawn = frame.box;
   const std::vector<Springing> ends = springings(scene, frame);
   const std::string supports = supports_svg(ends, frame, drawn);
   const std::vector<std::vector<PlanePoint>> thrust = thrust_runs(solution, frame, drawn);
   std::string body;
+  draw_fills(body, scene, outline, frame, drawn);
   draw_arch(body, outline, frame.stroke);
+  draw_cracks(body, scene, solution, frame);
+  for (const CollapseMechanism& m : options.mechanisms) draw_mechanism(body, scene, m, frame, drawn);
   draw_thrust_line(body, thrust, drawn, frame.stroke);
   draw_extra_lines(body, options.extra_lines, frame);
   body += supports;
   if (scene.crown_hinge) draw_crown_hinge(body, *scene.curve, frame);
+  TitleText title = title_text(scene, solution, options, std::max(drawn.width(), 40 * frame.font) / (0.6 * frame.font));
+  title.load_scale = draw_loads(body, scene, outline, frame, drawn, !thrust.empty());
   double bottom = draw_support_movement(body, scene, ends, frame, drawn, drawn.y0);
   bottom = draw_scale_bar(body, frame, bottom);
-  const double title_y = drawn.y1 + (4.2 + 1.3 * static_cast<double>(options.extra_lines.size())) * frame.font;
-  body += title_svg(scene, solution, options, frame, title_y);
+  const double title_y = drawn.y1 + title.height(options, frame.font) + 1.5 * frame.font;
+  body += title_svg(scene, title, options, frame, title_y);
   return document(body, frame, drawn, title_y, bottom, options.width_px);
 }
 

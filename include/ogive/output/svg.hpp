@@ -23,15 +23,30 @@
 //   #support-movement   when the scene's support displacement d is non-zero: an arrow at each springing
 //               in the direction it moves (outwards for d > 0) with the value of d
 //   #scale-bar  a bar of a round length in metres with its ticks and labels
-//   #title      the caption given in DrawingOptions::title and, below it, H/V, H and V (or the status
-//               and message of an unsolved scene)
+//   #fill       each fill of the scene: the region between the extrados and its level, hatched, with its
+//               level and density written on it
+//   #loads      point loads (N/m) as arrows down onto the top of the fill or the extrados, their length
+//               proportional to the force, and live loads (N/m^2) as rows of arrows over their extent,
+//               their length proportional to the intensity; the legend says both scales. Beside each
+//               point load, when a thrust line is drawn, a note that the line jumps there (the normal
+//               force changes under the load, so M / N does). The group is the place for further load
+//               arrows (a horizontal acceleration's).
+//   #cracks     no-tension section: where the resultant leaves the kern, the cracked depth of the
+//               section (t times one minus the compressed depth) on the face away from it, shaded
+//   #mechanism  DrawingOptions::mechanisms: the collapse mechanism's moving blocks, displaced
+//   #title      the caption given in DrawingOptions::title wrapped to the page, below it H/V, H and V (or
+//               the status and message of an unsolved scene), each springing's support and movement, and
+//               the legend (the line of thrust is "elastic" or "cracked-section" after the scene's
+//               section)
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "ogive/model/scene.hpp"
 #include "ogive/core/solution.hpp"
+#include "ogive/limit/limit.hpp"
 
 namespace ogive {
 
@@ -55,15 +70,37 @@ struct ExtraThrustLine {
   std::vector<PlanePoint> hinges;  // m
 };
 
+// A collapse mechanism (the limit analysis' collapse state): four hinges in order along the arch split it
+// into the blocks that move, each turning about a hinge or about the meeting point of its neighbours'
+// lines of hinges (its instantaneous centre). Drawn as #mechanism: each moving block's outline displaced
+// (exaggerated to a twentieth of the span at the most), with its hinges. Fewer or more than four hinges
+// are not drawn.
+struct CollapseMechanism {
+  std::vector<double> hinge_s;     // m, arc length of each hinge's joint along the whole arch, ascending
+  std::vector<PlanePoint> hinges;  // m, each hinge's point (on a face), in the same order
+  double load_x = 0;               // m: the blocks move so that the arch under x = load_x goes down
+  std::string label;               // legend text
+  std::string colour = "#b9770e";  // SVG colour
+};
+
 struct DrawingOptions {
-  std::string title;      // caption, e.g. the scene's parameters; one line, plain text (escaped here)
+  std::string title;      // caption, e.g. the scene's parameters; plain text (escaped here), wrapped to the page
+                          // at ", "
   std::vector<ExtraThrustLine> extra_lines;  // drawn after the elastic line, each with a legend line
+  std::vector<CollapseMechanism> mechanisms;  // drawn over the arch, each with a legend line
   int samples = 101;      // points of the intrados, extrados and axis over the half arch, in [2, 100000]
   double width_px = 960;  // width of the rendered picture, px, in [16, 100000]; the height follows
 
   // Ceres-style check: false with the reason in *why (naming the field) when an option is unusable.
   bool is_valid(std::string* why) const;
 };
+
+// The limit analysis' minimum and maximum thrust states as lines to draw, with their hinges and a label
+// that gives H/V and the number of hinges; a state that was not found is left out.
+std::vector<ExtraThrustLine> limit_thrust_lines(const LimitResult& result);
+// The collapse mechanism of the limit analysis' collapse state (a live load's), labelled with its load
+// factor; none without a collapse state or unless it has four hinges. `scene` is the analysed one.
+std::optional<CollapseMechanism> collapse_mechanism(const Scene& scene, const LimitResult& result);
 
 // The SVG document (UTF-8 text). The scene must be valid (Scene::validate); the solution is the
 // scene's, with or without a profile (without one, or unsolved, no thrust line is drawn and the title

@@ -1,0 +1,196 @@
+#include "ogive/output/html_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "ogive/limit/limit.hpp"
+#include "ogive/output/csv.hpp"
+#include "ogive/output/svg.hpp"
+#include "ogive/solve/solve.hpp"
+#include "svg_draw.hpp"
+
+namespace ogive {
+namespace {
+
+using svg_draw::escaped;
+
+constexpr const char* kStyle =
+    "body{font-family:sans-serif;max-width:60em;margin:1em auto;padding:0 1em;color:#222}"
+    "h1{font-size:1.3em}h2{font-size:1.05em;margin-top:1.2em;border-bottom:1px solid #ccc}"
+    "table{border-collapse:collapse;margin:.3em 0}td,th{border:1px solid #ccc;padding:.15em .5em;text-align:left}"
+    "td.n{text-align:right;font-variant-numeric:tabular-nums}svg{max-width:100%;height:auto}"
+    ".note{color:#555;font-size:.9em}@media print{section{break-inside:avoid}body{max-width:none}}";
+
+// A number to 4 significant digits in `scale` units, its full SI value in data-value; "-" when NaN.
+std::string cell(double si, double scale = 1, const char* unit = "") {
+  if (!std::isfinite(si)) return "<td class=\"n\">-</td>";
+  std::string full;
+  append_number(full, si);
+  return fmt::format("<td class=\"n\" data-value=\"{}\">{:.4g}{}{}</td>", full, si / scale, *unit ? " " : "", unit);
+}
+
+std::string row(const std::string& name, const std::string& cells) {
+  return "<tr><th>" + name + "</th>" + cells + "</tr>\n";
+}
+
+std::string reactions_section(const Solution& sol) {
+  const Reactions& r = sol.reactions;
+  std::string s = "<section id=\"reactions\"><h2>Reactions (per metre of vault width)</h2>\n<table>\n"
+                  "<tr><th></th><th>H (inwards)</th><th>V (up)</th><th>M (counter-clockwise)</th></tr>\n";
+  s += row("left springing", cell(r.H_left, 1000, "kN/m") + cell(r.V_left, 1000, "kN/m") + cell(r.M_left, 1000, "kN m/m"));
+  s += row("right springing",
+           cell(r.H_right, 1000, "kN/m") + cell(r.V_right, 1000, "kN/m") + cell(r.M_right, 1000, "kN m/m"));
+  s += fmt::format("</table>\n<p class=\"note\">{} method, status <b>{}</b>{}{}</p></section>\n", to_string(sol.method),
+                   to_string(sol.status), sol.message.empty() ? "" : ": ", escaped(sol.message));
+  return s;
+}
+
+std::string thrusts_section(const Scene& scene, const Solution& sol, const LimitResult& lim) {
+  std::string s = "<section id=\"thrusts\"><h2>Thrusts</h2>\n<table>\n<tr><th></th><th>H</th><th>H/V</th></tr>\n";
+  s += row(scene.section == SectionKind::no_tension ? "no-tension section (cracked)" : "elastic",
+           cell(sol.H, 1000, "kN/m") + cell(sol.H_over_V));
+  s += row("minimum (limit analysis)", cell(lim.H_min(), 1000, "kN/m") + cell(lim.H_min() / lim.V));
+  s += row("maximum (limit analysis)", cell(lim.H_max(), 1000, "kN/m") + cell(lim.H_max() / lim.V));
+  s += fmt::format("</table>\n<p class=\"note\">limit analysis (rigid no-tension voussoirs, radial joints): status "
+                   "<b>{}</b>{}{}</p></section>\n",
+                   to_string(lim.status), lim.message.empty() ? "" : ": ", escaped(lim.message));
+  return s;
+}
+
+std::string safety_section(const Scene& scene, const LimitResult& lim) {
+  std::string s = "<section id=\"safety\"><h2>Geometric safety</h2>\n<table>\n";
+  s += row("thickness t", cell(scene.thickness, 1, "m"));
+  s += row("minimum thickness t<sub>min</sub>", cell(lim.thickness_min, 1, "m"));
+  s += row("geometric safety factor t / t<sub>min</sub>", cell(scene.thickness / lim.thickness_min));
+  return s + "</table></section>\n";
+}
+
+std::string collapse_section(const LimitResult& lim) {
+  std::string s = "<section id=\"collapse\"><h2>Collapse</h2>\n";
+  const ThrustState& c = lim.collapse_state;
+  if (!c.found()) return s + "<p>No collapse load factor: the scene has no point or live load to multiply, or the "
+                             "arch does not carry its dead load.</p></section>\n";
+  s += "<table>\n" + row("collapse load factor (point and live loads)", cell(c.load_factor)) + "</table>\n";
+  s += "<table>\n<tr><th>hinge</th><th>x</th><th>y</th><th>face</th></tr>\n";
+  for (std::size_t k = 0; k < c.hinges.size(); ++k) {
+    const Hinge& h = c.hinges[k];
+    s += row(fmt::format("{}", k + 1), cell(h.point.x(), 1, "m") + cell(h.point.y(), 1, "m") +
+                                          fmt::format("<td>{}</td>", to_string(h.face)));
+  }
+  return s + "</table></section>\n";
+}
+
+// The spreading chart: H/V of the no-tension section against d/L, on a log axis with d = 0 at its left.
+std::string spreading_section(const Scene& scene, const ReportOptions& o, const LimitResult& lim) {
+  std::vector<double> ratios{0};
+  for (int k = 0; k + 1 < o.spread_points; ++k) ratios.push_back(std::pow(10.0, -6 + 4.0 * k / (o.spread_points - 2)));
+  struct Point {
+    double ratio, H_over_V;
+  };
+  std::vector<Point> points;
+  std::vector<std::string> failed;
+  for (double r : ratios) {
+    Scene s = scene;
+    s.section = SectionKind::no_tension;
+    s.set_support_displacement(r * scene.span());
+    const Solution sol = solve(s, o.solver);
+    if (sol.ok()) points.push_back({r, sol.H_over_V});
+    else failed.push_back(fmt::format("d/L = {:g}: {}", r, to_string(sol.status)));
+  }
+  const double w = 600, h = 300, left = 60, right = 20, top = 20, bottom = 50;
+  double lo = lim.H_min() / lim.V, hi = lo;
+  for (const Point& p : points) {
+    lo = std::isfinite(lo) ? std::min(lo, p.H_over_V) : p.H_over_V;
+    hi = std::isfinite(hi) ? std::max(hi, p.H_over_V) : p.H_over_V;
+  }
+  if (!std::isfinite(lo)) lo = 0, hi = 1;
+  const double pad = 0.1 * std::max(hi - lo, 0.01 * std::abs(hi) + 1e-12);
+  lo -= pad;
+  hi += pad;
+  auto X = [&](double r) {  // d = 0 at the left, then 1e-6 .. 1e-2 over the rest
+    const double zero = left + 20;
+    return r <= 0 ? left : zero + (w - right - zero) * (std::log10(r) + 6) / 4;
+  };
+  auto Y = [&](double v) { return top + (h - top - bottom) * (hi - v) / (hi - lo); };
+  std::string s = "<section id=\"spreading\"><h2>Support spreading: the cracking arch's H/V</h2>\n";
+  s += fmt::format("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" "
+                   "font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"{0}\" height=\"{1}\" fill=\"white\"/>\n",
+                   w, h);
+  s += fmt::format("<path d=\"M {0} {1} L {0} {2} L {3} {2}\" fill=\"none\" stroke=\"black\"/>\n", left, top, h - bottom,
+                   w - right);
+  for (int e = -6; e <= -2; ++e)
+    s += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">1e{}</text>\n", X(std::pow(10.0, e)), h - bottom + 15, e);
+  s += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">0</text>\n", left, h - bottom + 15);
+  s += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">outward spread of each springing, d/L</text>\n",
+                   0.5 * (left + w - right), h - 12);
+  for (double v : {lo + pad, hi - pad})
+    s += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"end\">{:.4g}</text>\n", left - 4, Y(v) + 4, v);
+  s += fmt::format("<text x=\"12\" y=\"{}\" transform=\"rotate(-90 12 {})\" text-anchor=\"middle\">H/V</text>\n",
+                   0.5 * (top + h - bottom), 0.5 * (top + h - bottom));
+  const double min_ratio = lim.H_min() / lim.V;
+  if (std::isfinite(min_ratio))
+    s += fmt::format("<line id=\"chart-minimum\" x1=\"{0}\" y1=\"{1}\" x2=\"{2}\" y2=\"{1}\" stroke=\"#1e8449\" "
+                     "stroke-dasharray=\"6,3\"/><text x=\"{2}\" y=\"{3}\" text-anchor=\"end\" fill=\"#1e8449\">minimum "
+                     "thrust (limit analysis) {4:.4g}</text>\n",
+                     left, Y(min_ratio), w - right, Y(min_ratio) - 4, min_ratio);
+  std::string d;
+  for (const Point& p : points) d += fmt::format("{}{} {}", d.empty() ? "M " : " L ", X(p.ratio), Y(p.H_over_V));
+  s += "<path id=\"chart-line\" fill=\"none\" stroke=\"#c0392b\" stroke-width=\"2\" d=\"" + d + "\"/>\n";
+  for (const Point& p : points) {
+    std::string full;
+    append_number(full, p.H_over_V);
+    s += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"3\" fill=\"#c0392b\" data-d-over-L=\"{:g}\" data-value=\"{}\"/>\n",
+                     X(p.ratio), Y(p.H_over_V), p.ratio, full);
+  }
+  s += "</svg>\n<p class=\"note\">The scene with the no-tension section, both springings spreading outwards by d "
+       "(other movements as given); solved with the same solver options.</p>\n";
+  if (!failed.empty()) {
+    s += "<p class=\"note\">Not drawn:";
+    for (const std::string& f : failed) s += " " + escaped(f) + ";";
+    s += "</p>\n";
+  }
+  return s + "</section>\n";
+}
+
+}  // namespace
+
+bool ReportOptions::is_valid(std::string* why) const {
+  if (spread_points < 2 || spread_points > 41) {
+    if (why) *why = fmt::format("spread_points: must lie in [2, 41], got {}", spread_points);
+    return false;
+  }
+  return solver.is_valid(why);
+}
+
+std::string html_report(const Scene& scene, const ReportOptions& options) {
+  std::string why;
+  if (!options.is_valid(&why)) throw std::invalid_argument(why);
+  scene.validate();
+  const Solution sol = solve(scene, options.solver);
+  const LimitResult lim = analyse_limit(scene, LimitOptions{});
+  DrawingOptions drawing;
+  drawing.title = options.title;
+  drawing.extra_lines = limit_thrust_lines(lim);
+  if (std::optional<CollapseMechanism> m = collapse_mechanism(scene, lim)) drawing.mechanisms.push_back(std::move(*m));
+  std::string svg = arch_svg(scene, sol, drawing);
+  svg.erase(0, svg.find("<svg"));  // inline: no XML declaration
+
+  std::string page = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
+  page += "<title>ogive report: " + escaped(options.title) + "</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n";
+  page += "<h1>" + escaped(options.title) + "</h1>\n";
+  page += "<section id=\"drawing\"><h2>The arch</h2>\n" + svg + "</section>\n";
+  page += reactions_section(sol) + thrusts_section(scene, sol, lim) + safety_section(scene, lim) + collapse_section(lim);
+  page += spreading_section(scene, options, lim);
+  page += "<section id=\"inputs\"><h2>Inputs as given</h2>\n<table>\n";
+  for (const auto& [name, value] : options.inputs)
+    page += "<tr><th>" + escaped(name) + "</th><td>" + escaped(value) + "</td></tr>\n";
+  page += "</table></section>\n</body>\n</html>\n";
+  return page;
+}
+
+}  // namespace ogive
