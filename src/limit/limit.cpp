@@ -544,6 +544,10 @@ double largest_change(const LimitResult& a, const LimitResult& b) {
 
 LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
   scene.validate();
+  if (scene.horizontal_acceleration != 0)
+    throw std::invalid_argument(fmt::format(
+        "horizontal_acceleration: must be 0 for the limit analysis (vertical loads only), got {}",
+        scene.horizontal_acceleration));
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
   std::vector<double> refined = limit_detail::uniform_fractions(options.joints_count);

@@ -77,7 +77,7 @@ bool mirror_invariant(const std::vector<Load>& loads) {
 }  // namespace
 
 bool Scene::symmetric() const {
-  if (!curve || curve->extent() != CurveExtent::half) return false;
+  if (!curve || curve->extent() != CurveExtent::half || horizontal_acceleration != 0) return false;
   if (left.kind != right.kind || left.spread != right.spread || left.settlement != right.settlement ||
       left.rotation != -right.rotation)
     return false;
@@ -98,6 +98,7 @@ void Scene::validate() const {
   if (!std::isfinite(nu) || !(nu > -1.0 && nu <= 0.5)) refuse("poisson_ratio", "must lie in (-1, 0.5]", nu);
   if (material.plane_strain && nu == 0.5)
     refuse("poisson_ratio", "must be < 0.5 in plane strain (E / (1 - nu^2) stays finite)", nu);
+  require_finite("horizontal_acceleration", horizontal_acceleration);
   validate_support(left, "left_spread", "left_settlement", "left_rotation");
   validate_support(right, "right_spread", "right_settlement", "right_rotation");
   for (const PointLoad& p : loads.points) {

@@ -224,8 +224,9 @@ struct LimitResult {
 // The admissible thrust range, the minimum thickness and, with a live load, the collapse load factor
 // of `scene` (its curve of either extent, thickness, density, gravity, loads, pinned springings and
 // crown hinge; the elastic constants and the supports' movements do not enter: rigid voussoirs).
-// Throws std::invalid_argument for an invalid scene or options, or a scene that loads the ring with
-// nothing (every load zero over the ring).
+// Throws std::invalid_argument for an invalid scene or options, a scene with a horizontal acceleration
+// (the voussoirs carry vertical loads only), or a scene that loads the ring with nothing (every load zero
+// over the ring).
 //
 // Converged in the joints: the analysis runs on make_ring's ring, then again with the voussoirs next to
 // every hinge (of the minimum, maximum and collapse states, and of the thinnest arch) halved, two on
