@@ -12,6 +12,7 @@
 #include "ogive/geometry/curve_families.hpp"
 #include "ogive/solve/solve.hpp"
 #include "support/cli_run.hpp"
+#include "support/reference.hpp"
 #include "support/scenes.hpp"
 #include "support/tolerances.hpp"
 
@@ -84,14 +85,36 @@ TEST_CASE("horizontal acceleration: the three-hinged semicircle's reactions equa
   }
 }
 
+TEST_CASE("horizontal acceleration: the two-hinged semicircle's thrust equals an independent force method") {
+  // Statically indeterminate: Castigliano's theorem with bending, stretching and shear compliance
+  // (tests/support/reference.hpp), against the closed form and both shooting methods.
+  for (double t_over_L : {0.02, 0.08, 0.2})
+    for (double a : {-0.2, 0.1, 0.3}) {
+      Scene s = shaken(0.0, a, SupportKind::pinned);
+      s.thickness = t_over_L * kSpan;
+      const double reference = reference::castigliano_two_hinged_semicircle_H(kSpan, s.thickness, s.material, a);
+      const double W = s.weight_per_length() * s.curve->whole_length();
+      for (Method m : {Method::closed_form, Method::shooting, Method::multiple_shooting}) {
+        const Solution sol = solve(s, with(m));
+        CAPTURE(t_over_L);
+        CAPTURE(a);
+        CAPTURE(std::string(to_string(m)));
+        REQUIRE(sol.ok());
+        CHECK(std::abs(sol.reactions.H_left - reference) <= tolerance(m) * W);
+        CHECK(std::abs(sol.reactions.H_right - (reference + a * W)) <= tolerance(m) * W);
+      }
+    }
+}
+
 TEST_CASE("horizontal acceleration: the reactions balance the self-weight and its horizontal load to 1e-12") {
   // Independent of the model's load sums: the weight of the whole arch is w times its length, and its
   // horizontal load a times that, so H_right - H_left = a W and V_left + V_right = W.
   for (double eps : {0.0, 0.5, 1.0})
-    for (auto [kind, hinge] : {std::pair{SupportKind::clamped, false}, std::pair{SupportKind::pinned, false},
-                               std::pair{SupportKind::pinned, true}, std::pair{SupportKind::clamped, true}}) {
+    for (const std::pair<SupportKind, bool>& held : {std::pair{SupportKind::clamped, false}, std::pair{SupportKind::pinned, false},
+                                                     std::pair{SupportKind::pinned, true}, std::pair{SupportKind::clamped, true}}) {
       const double a = 0.15;
-      const Scene s = shaken(eps, a, kind, hinge);
+      const bool hinge = held.second;
+      const Scene s = shaken(eps, a, held.first, hinge);
       const double W = s.weight_per_length() * s.curve->whole_length();
       const Solution sol = solve(s, with(Method::closed_form));
       CAPTURE(eps);
@@ -212,6 +235,7 @@ TEST_CASE("cli: a horizontal acceleration that is not finite, or with what canno
   using test::check_refused;
   check_refused({"thrust", "--horizontal-acceleration", "nan"});
   check_refused({"thrust", "--horizontal-acceleration", "inf"});
+  check_refused({"thrust", "--horizontal-acceleration", "1e300"});  // a times the weight overflows the scales
   check_refused({"limit", "--horizontal-acceleration", "0.1"});
   check_refused({"draw", "--limit", "--horizontal-acceleration", "0.1", "--output", "never.svg"});
   // A sweep: the acceleration varies, H_left and H_right are printed and differ by a W.

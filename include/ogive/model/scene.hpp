@@ -106,7 +106,8 @@ struct Scene {
   // density 0.
   double weight_per_length() const { return material.density * material.gravity * area(); }
   // The model's force scale w_ref (N/m, > 0 for a valid scene): the self-weight per axis length plus
-  // every other load's total spread over the whole arch's length (scene.cpp says how each counts).
+  // every other load's total spread over the whole arch's length, plus |a| times the masses' (self-weight
+  // and fill) under a horizontal acceleration a (scene.cpp says how each counts).
   double reference_load_per_length() const;
 
   // Throws std::invalid_argument whose message names the field and the rule it breaks, e.g.
