@@ -190,9 +190,6 @@ int run_draw(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
     throw UsageError(to.output.empty() ? "--output: draw needs --output FILE.svg (one scene) or --output-dir DIR "
                                          "(one file per scene)"
                                        : "--output-dir: give --output FILE.svg or --output-dir DIR, not both");
-  if (to.limit && cmd.count("--horizontal-acceleration") > 0)
-    throw UsageError("--horizontal-acceleration: does not combine with --limit (the rigid-block analysis takes "
-                     "vertical loads only)");
   const ScenePlan plan(d.scene, cmd);
   if (!to.output.empty() && plan.size() > 1)
     throw UsageError(fmt::format("--output: the options give {} scenes and one file holds one drawing; use "

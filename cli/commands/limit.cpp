@@ -88,9 +88,6 @@ constexpr std::pair<const char*, const char*> kNotForLimit[] = {
     {"--shear-coefficient", kElasticWhy},
     {"--plane-strain", kElasticWhy},
     {"--section", "the voussoirs carry no tension by construction: --section chooses the elastic analyses' model"},
-    {"--horizontal-acceleration",
-     "the rigid-block analysis takes vertical loads only: the horizontal acceleration belongs to thrust, profile, "
-     "check, bench and draw without --limit"},
 };
 
 // The options as the library's, refused with the option's name when they break a rule.

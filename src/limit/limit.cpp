@@ -186,8 +186,13 @@ ThrustState thrust_state(const Ring& ring, double H, double V_left, double M_lef
   for (std::size_t j = 0; j < ring.joints.size(); ++j) {
     const Joint& joint = ring.joints[j];
     // The force of the part left of the joint on the part right of it, and its moment about the origin.
-    const Eigen::Vector2d F(H, V_left - left.dead[j].force - lambda * left.live[j].force);
-    const double moment = M_left - left.dead[j].moment - lambda * left.live[j].moment;
+    // (A horizontal acceleration a adds a times the dead load left of it, and that load's moment.)
+    const double a = ring.acceleration;
+    const Eigen::Vector2d F(a == 0 ? H : H + a * left.dead[j].force,
+                            V_left - left.dead[j].force - lambda * left.live[j].force);
+    const double moment = a == 0 ? M_left - left.dead[j].moment - lambda * left.live[j].moment
+                                 : M_left - left.dead[j].moment - lambda * left.live[j].moment -
+                                       a * left.dead[j].height_moment;
     // Its line meets the joint I + u (E - I) where (I + u d) x F = moment.
     const Eigen::Vector2d d = joint.extrados - joint.intrados;
     const double u = (moment - cross(joint.intrados, F)) / cross(d, F);
@@ -231,17 +236,21 @@ double one_mechanism(const Ring& ring, const std::vector<Hinge>& h) {
   Eigen::VectorXd mode = lu.kernel();
   if (lu.dimensionOfKernel() != 1) return kNaN;
   // The work of downward forces on a voussoir: minus force times the vertical velocity v + omega x of
-  // its body, summed over the forces: -(v F + omega sum x F).
-  auto work = [&](int voussoir, const VerticalLoad& load) {
+  // its body, summed over the forces: -(v F + omega sum x F); with `push` = a, plus that of the
+  // horizontal forces a F, a F times the horizontal velocity u - omega y: a (u F - omega sum y F).
+  auto work = [&](int voussoir, const VerticalLoad& load, double push) {
     for (int b = 0; b < bodies; ++b)
-      if (voussoir >= h[b].joint && voussoir < h[b + 1].joint)
-        return -(mode(3 * b + 1) * load.force + mode(3 * b + 2) * load.moment / L);
+      if (voussoir >= h[b].joint && voussoir < h[b + 1].joint) {
+        const double vertical = -(mode(3 * b + 1) * load.force + mode(3 * b + 2) * load.moment / L);
+        if (push == 0) return vertical;
+        return vertical + push * (mode(3 * b) * load.force - mode(3 * b + 2) * load.height_moment / L);
+      }
     return 0.0;
   };
   double live_work = 0, dead_work = 0;
   for (std::size_t v = 0; v < ring.voussoirs.size(); ++v) {
-    live_work += work(static_cast<int>(v), ring.voussoirs[v].live);
-    dead_work += work(static_cast<int>(v), ring.voussoirs[v].dead());
+    live_work += work(static_cast<int>(v), ring.voussoirs[v].live, 0.0);
+    dead_work += work(static_cast<int>(v), ring.voussoirs[v].dead(), ring.acceleration);
   }
   if (!(std::abs(live_work) > 1e-12 * std::abs(dead_work))) return kNaN;
   if (live_work < 0) {  // the sense in which the load does positive work
@@ -544,10 +553,6 @@ double largest_change(const LimitResult& a, const LimitResult& b) {
 
 LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
   scene.validate();
-  if (scene.horizontal_acceleration != 0)
-    throw std::invalid_argument(fmt::format(
-        "horizontal_acceleration: must be 0 for the limit analysis (vertical loads only), got {}",
-        scene.horizontal_acceleration));
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
   std::vector<double> refined = limit_detail::uniform_fractions(options.joints_count);

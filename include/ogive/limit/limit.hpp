@@ -93,13 +93,17 @@ struct Joint {
 };
 
 // Vertical forces on one voussoir by their resultant: the total, downward, and its moment about the
-// origin (sum of x F; the resultant acts at x = moment / force).
+// origin (sum of x F; the resultant acts at x = moment / force), and the sum of y F over the same forces
+// (the moment, clockwise, of the horizontal forces a F that a horizontal acceleration a adds at the same
+// points: Ring::acceleration).
 struct VerticalLoad {
-  double force = 0;   // N per metre of width, downward
-  double moment = 0;  // N m per metre of width
+  double force = 0;          // N per metre of width, downward
+  double moment = 0;         // N m per metre of width
+  double height_moment = 0;  // N m per metre of width: sum of y F
   VerticalLoad& operator+=(const VerticalLoad& o) {
     force += o.force;
     moment += o.moment;
+    height_moment += o.height_moment;
     return *this;
   }
 };
@@ -109,8 +113,11 @@ struct Voussoir {
   Eigen::Vector2d centroid;  // m, where the self-weight acts
   VerticalLoad fill;         // the fills' share (dead)
   VerticalLoad live;         // the point and live loads' share at load factor 1
-  // Every dead load: the self-weight at its centroid and the fill.
-  VerticalLoad dead() const { return {weight + fill.force, weight * centroid.x() + fill.moment}; }
+  // Every dead load: the self-weight at its centroid and the fill (the masses a horizontal acceleration
+  // pushes).
+  VerticalLoad dead() const {
+    return {weight + fill.force, weight * centroid.x() + fill.moment, weight * centroid.y() + fill.height_moment};
+  }
 };
 
 // joints.size() == voussoirs.size() + 1; voussoir k lies between joints k and k + 1; as many voussoirs
@@ -121,6 +128,9 @@ struct Ring {
   std::vector<Voussoir> voussoirs;
   std::vector<int> pins;  // joints whose thrust passes through their axis point, ascending
   double span = 0;        // L, m
+  // a (Scene::horizontal_acceleration): each voussoir's dead load also pushes a times itself towards +x,
+  // at the same points (the self-weight at the centroid of its weight model, the fill where it bears).
+  double acceleration = 0;
   // Where each side's interior joints lie, ascending in (0, 1): joint i of a side (1 .. m-1, from its
   // springing; the same on both sides) has its intrados at fraction joint_fractions[i - 1] of the
   // intrados' arc length from the springing to the crown's vertical.
@@ -224,9 +234,8 @@ struct LimitResult {
 // The admissible thrust range, the minimum thickness and, with a live load, the collapse load factor
 // of `scene` (its curve of either extent, thickness, density, gravity, loads, pinned springings and
 // crown hinge; the elastic constants and the supports' movements do not enter: rigid voussoirs).
-// Throws std::invalid_argument for an invalid scene or options, a scene with a horizontal acceleration
-// (the voussoirs carry vertical loads only), or a scene that loads the ring with nothing (every load zero
-// over the ring).
+// Throws std::invalid_argument for an invalid scene or options, or a scene that loads the ring with
+// nothing (every load zero over the ring).
 //
 // Converged in the joints: the analysis runs on make_ring's ring, then again with the voussoirs next to
 // every hinge (of the minimum, maximum and collapse states, and of the thinnest arch) halved, two on
