@@ -127,6 +127,11 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"load_factor", "", "limit: multiplier on the live load (every point and live load) at collapse (static LP)"},
     {"load_factor_mechanism", "", "limit: the same from the mechanism of those hinges by virtual work"},
     {"hinges_collapse", "", "limit: hinges of the collapse mechanism, x/L:face joined by ';'"},
+    {"horizontal_load_factor", "",
+     "limit: the horizontal acceleration a_c / g (to +x) that makes the arch a mechanism, vertical loads at factor 1 "
+     "and --horizontal-acceleration ignored (only when asked for)"},
+    {"horizontal_load_factor_mechanism", "", "limit: the same from the mechanism of its hinges by virtual work"},
+    {"hinges_horizontal", "", "limit: hinges of the mechanism of a_c, x/L:face joined by ';'"},
     {"lp_solves", "", "limit: linear programs solved for the row"},
     {"state", "", "limit --thrust-line: min, max or collapse"},
     {"joint", "", "limit --thrust-line: joint index from the left springing"},
