@@ -51,6 +51,7 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"fill_density", "kg/m^3", "fill density rho_f (load rho_f g max(0, h_f - y_extrados) per horizontal length)"},
     {"fill_height_ratio", "", "the fill's level h_f above the springing line / span"},
     {"loads_file", "", "the --loads-file whose loads the scene carries too"},
+    {"horizontal_acceleration", "", "horizontal acceleration a / g, left to right positive, on the self-weight and fill"},
     {"method", "", "method that produced the numbers (closed-form, shooting, multiple-shooting)"},
     {"integrator", "", "CVODE's method (adams, bdf); empty for the closed form"},
     {"rtol", "", "relative error asked (--rtol); success guarantees it"},
@@ -126,6 +127,11 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"load_factor", "", "limit: multiplier on the live load (every point and live load) at collapse (static LP)"},
     {"load_factor_mechanism", "", "limit: the same from the mechanism of those hinges by virtual work"},
     {"hinges_collapse", "", "limit: hinges of the collapse mechanism, x/L:face joined by ';'"},
+    {"horizontal_load_factor", "",
+     "limit: the horizontal acceleration a_c / g (to +x) that makes the arch a mechanism, vertical loads at factor 1 "
+     "and --horizontal-acceleration ignored (only when asked for)"},
+    {"horizontal_load_factor_mechanism", "", "limit: the same from the mechanism of its hinges by virtual work"},
+    {"hinges_horizontal", "", "limit: hinges of the mechanism of a_c, x/L:face joined by ';'"},
     {"lp_solves", "", "limit: linear programs solved for the row"},
     {"state", "", "limit --thrust-line: min, max or collapse"},
     {"joint", "", "limit --thrust-line: joint index from the left springing"},
@@ -154,7 +160,7 @@ const std::vector<std::string>& scene_columns() {
       "plane_strain", "section", "left_support", "right_support", "crown_hinge", "left_spread_ratio",
       "right_spread_ratio", "left_settlement_ratio", "right_settlement_ratio", "left_rotation", "right_rotation",
       "point_load", "point_load_at", "live_load", "live_load_from", "live_load_to", "fill_density",
-      "fill_height_ratio", "loads_file"};
+      "fill_height_ratio", "loads_file", "horizontal_acceleration"};
   return columns;
 }
 
@@ -259,6 +265,7 @@ void add_scene_columns(CsvRow& row, const SceneParameters& p, const Curve* curve
                    p.live_load_to, p.fill_density, p.fill_height_ratio})
     add_parameter(row, v);
   row.add(p.loads_file);
+  row.add(p.horizontal_acceleration);
 }
 
 std::string sparse_row(const Columns& columns, const SceneParameters& p, const Curve* curve,
