@@ -2,13 +2,20 @@
 // unsolved scene is drawn without a thrust line, saying why.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstring>
 #include <limits>
+#include <optional>
+#include <vector>
 #include <stdexcept>
 #include <string>
 
 #include "ogive/output/svg.hpp"
 #include "ogive/solve/solve.hpp"
 #include "support/scenes.hpp"
+#include "support/tolerances.hpp"
+#include "ogive/limit/limit.hpp"
 
 using namespace ogive;
 
@@ -51,4 +58,45 @@ TEST_CASE("svg: a horizontal acceleration is drawn as an arrow above the arch, p
     const double from = std::stod(svg.substr(x1 + 4)), to = std::stod(svg.substr(x2 + 4));
     CHECK((to - from) * a > 0);
   }
+}
+
+TEST_CASE("svg: point-load arrows are to one scale - twice the load, twice the arrow - landing on the extrados") {
+  Scene scene = paper_scene(0.5);
+  scene.loads.points = {{1e4, 0.25}, {2e4, 0.75}};
+  const std::string svg = arch_svg(scene, solve(scene));
+  const std::size_t group = svg.find("<g id=\"loads\"");
+  REQUIRE(group != std::string::npos);
+  std::vector<double> lengths;
+  for (std::size_t at = svg.find("<line", group); at != std::string::npos && lengths.size() < 2;
+       at = svg.find("<line", at + 1)) {
+    auto attribute = [&](const char* name) {
+      const std::size_t v = svg.find(std::string(" ") + name + "=\"", at);
+      return std::stod(svg.substr(v + std::strlen(name) + 3));
+    };
+    CHECK(attribute("x1") == attribute("x2"));  // vertical
+    lengths.push_back(std::abs(attribute("y2") - attribute("y1")));
+  }
+  REQUIRE(lengths.size() == 2);
+  CHECK(lengths[1] / lengths[0] == doctest::Approx(2.0).epsilon(kExact));
+  CHECK(svg.find("P = 10 kN/m") != std::string::npos);
+  CHECK(svg.find("P = 20 kN/m") != std::string::npos);
+}
+
+TEST_CASE("svg: the collapse mechanism is the limit analysis' collapse state - four hinges in order along the arch") {
+  Scene scene = paper_scene(0.5, 0.1);
+  scene.loads.points = {{5e4, 0.25}};
+  const LimitResult r = analyse_limit(scene, LimitOptions{});
+  const std::optional<CollapseMechanism> m = collapse_mechanism(scene, r);
+  REQUIRE(m.has_value());
+  REQUIRE(m->hinges.size() == 4);
+  CHECK(std::is_sorted(m->hinge_s.begin(), m->hinge_s.end()));
+  for (std::size_t k = 0; k < 4; ++k) CHECK(m->hinges[k].x == r.collapse_state.hinges[k].point.x());
+  CHECK(m->load_x == 0.25 * scene.span());
+  DrawingOptions drawing;
+  drawing.mechanisms = {*m};
+  const std::string svg = arch_svg(scene, solve(scene), drawing);
+  CHECK(svg.find("<g id=\"mechanism\"") != std::string::npos);
+  // Self-weight alone: no collapse state, no mechanism.
+  const Scene bare = paper_scene(0.5, 0.1);
+  CHECK_FALSE(collapse_mechanism(bare, analyse_limit(bare, LimitOptions{})).has_value());
 }
