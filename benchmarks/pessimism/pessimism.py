@@ -25,8 +25,8 @@ References, none of them the method measured:
 
 A row is a false alarm when it says tolerance_not_met with a true error within rtol, a false success
 when it says success with a true error above rtol. The ratio is error_estimate / true error (rows with
-both finite; a true error below the reference's noise counts as that noise: 1e-16 for the decimal and
-closed references, the reference's own error_estimate for the cracked one). Prints the summary per
+both finite; a true error below 1e-16, the decimal reference's noise, counts as 1e-16; one below the
+error_estimate of an ogive reference, closed or cracked, cannot be measured and has no ratio). Prints the summary per
 method (median and worst ratio, false alarms, false successes) as Markdown; exits 1 on any false
 success. Standard library only.
 """
@@ -221,7 +221,9 @@ def main():
             print(f"{label}: {len(rows)} rows", file=sys.stderr)
 
     for r in rows:
-        r["ratio"] = r["error_estimate"] / max(r["true_error"], r["reference_noise"])
+        # Below the reference's own error estimate a true error cannot be measured: no ratio.
+        measurable = r["true_error"] >= r["reference_noise"] or r["reference_noise"] <= NOISE
+        r["ratio"] = r["error_estimate"] / max(r["true_error"], NOISE) if measurable else math.nan
         r["false_alarm"] = r["status"] == "tolerance_not_met" and r["true_error"] <= r["rtol"]
         r["false_success"] = r["status"] == "success" and r["true_error"] > r["rtol"]
     with open(a.csv, "w", newline="") as fh:

@@ -68,29 +68,41 @@ bool verifiable(const Options& options) {
   return cvode_tolerances(verifying_options(options)).rtol * 16 <= cvode_tolerances(options).rtol * (1 + 1e-9);
 }
 
+// How much tighter than `options` a further CVODE solve can run above CVODE's floor, up to 16 times.
+double room_below(const Options& options) { return std::min(16.0, cvode_tolerances(options).rtol / kCvodeRtolFloor); }
+
+// solve_verified's third solve is at least this much tighter than its second, for it to be plausibly
+// twice as accurate.
+constexpr double kThirdSolveRoom = 4;
+
+// Whether solve_verified's three solves fit above CVODE's floor.
+bool three_solves_fit(const Options& options) {
+  return verifiable(options) && room_below(verifying_options(options)) >= kThirdSolveRoom;
+}
+
 // A verified solve never runs looser than CVODE's default atol: a loose --atol would only make the first
 // solve worse and the difference larger, while the returned (tighter) solution stays the same, so the
 // status would change with an option that did not change the numbers.
 //
-// Three solves x1, x2, x3, each 16 times tighter than the one before (x3 where CVODE's floor leaves
-// room), d1 = |x1 - x2|, d2 = |x2 - x3|; x2 is returned. The difference of two solves bounds the tighter
-// one's error only if that one is at least twice as accurate as the looser: then e2 <= d1 (from x1: e2
-// <= e1 / 2 and d1 >= e1 - e2), and, from x3, e2 <= d2 + e3 <= d2 + e2 / 2, so e2 <= 2 d2. CVODE controls
+// Three solves x1, x2, x3, each tighter than the one before: x2 16 times, x3 4 to 16 times, as CVODE's
+// floor allows (without that room the row is unverified); d1 = |x1 - x2|, d2 = |x2 - x3|; x2 is
+// returned. The difference of two solves bounds the tighter one's error only if that one is at least
+// twice as accurate as the looser: then e2 <= d1 (from x1: e2 <= e1 / 2 and d1 >= e1 - e2), and, from
+// x3, e2 <= d2 + e3 <= d2 + e2 / 2, so e2 <= 2 d2. CVODE controls
 // local errors: its global error usually falls with the tolerance but need not (Adams changing order
 // can leave a 16 times tighter solve no better), so neither assumption alone is safe; the estimate is
 // the larger of the two, max(d1, 2 d2), which fails only when neither tighter solve is twice as good.
 // Where that misses rtol but the differences contract (d2 <= d1 / 2: the errors do fall with the
 // tolerance, seen rather than assumed), x3 is returned with d2, which bounds e3 when e3 <= e2 / 2.
-// Without room for x3 the pair's difference d1 stands alone.
 Solution solve_verified(const std::shared_ptr<const ArchModel>& model, const Options& options, Method method,
                         int segments) {
   const Options first = verifying_options(options, 1);
   const Solution coarse = solve_once(model, first, method, segments);
   if (!coarse.field) return coarse;
-  if (!verifiable(first)) {
+  if (!three_solves_fit(first)) {
     Solution sol = coarse;
-    sol.message = fmt::format("rtol {:.3g} is below what a 16 times tighter CVODE solve can verify (CVODE's "
-                              "tolerance floor {:.0e})", options.rtol, kCvodeRtolFloor);
+    sol.message = fmt::format("rtol {:.3g} is below what CVODE solves 16 and {:.0f} times tighter can verify "
+                              "(CVODE's tolerance floor {:.0e})", options.rtol, 16 * kThirdSolveRoom, kCvodeRtolFloor);
     return sol;
   }
   const Options second = verifying_options(first);
@@ -98,14 +110,12 @@ Solution solve_verified(const std::shared_ptr<const ArchModel>& model, const Opt
   add_work(sol.diagnostics, coarse.diagnostics);
   if (!sol.field) return sol;
   const double d1 = solution_difference(coarse, sol);
-  sol.diagnostics.error_estimate = d1;
-  if (!verifiable(second)) return sol;
-  Solution third = solve_once(model, verifying_options(second), method, segments);
+  Solution third = solve_once(model, verifying_options(second, room_below(second)), method, segments);
   add_work(third.diagnostics, sol.diagnostics);  // the work of all three solves, on either returned
   set_work(sol.diagnostics, third.diagnostics);
   if (!third.field) {
     sol.diagnostics.error_estimate = std::numeric_limits<double>::quiet_NaN();
-    sol.message = "not verified: the third, 256 times tighter solve failed (" + third.message + ")";
+    sol.message = "not verified: the third, tightest solve failed (" + third.message + ")";
     return sol;
   }
   const double d2 = solution_difference(sol, third);
@@ -496,7 +506,7 @@ Solution solve(const Scene& scene, const Options& options, const Solution* previ
     Options tighter = solver;
     tighter.rtol = std::max(solver.rtol * std::clamp(options.rtol / estimate / 4, 1e-3, 0.25), 1e-14);
     // Keep the last judged solve rather than one that cannot be verified at CVODE's floor.
-    if (!verifiable(tighter)) break;
+    if (!three_solves_fit(tighter)) break;
     solver = tighter;
   }
   return sol;
