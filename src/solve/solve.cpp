@@ -477,9 +477,10 @@ Solution solve(const Scene& scene, const Options& options, const Solution* previ
     if (quadrature.status != Status::tolerance_not_met && quadrature.status != Status::not_applicable)
       return quadrature;
   }
-  // Otherwise verified shooting with 1, 2, 4, ... 64 segments (breakpoints add more) while each doubling
-  // at least halves the error estimate: more segments shorten the spans over which integration errors
-  // grow and cancel. Where segments stop helping (a thin near-funicular arch, whose eccentricity in kern
+  // Otherwise verified shooting with 1, 2, 4, ... 64 segments (breakpoints add more) until two doublings
+  // in a row fail to halve the error estimate: more segments shorten the spans over which integration
+  // errors grow and cancel (one doubling may not show it: on a thin parabola 2 segments gain little over
+  // 1, 4 a factor 25). Where segments stop helping (a thin near-funicular arch, whose eccentricity in kern
   // units amplifies every error of the forces by about L/t), CVODE is run tighter instead, by what the
   // estimate says is missing. Conditioning is the problem's own (it does not change with segments), so
   // a singular or ill-conditioned system, or rtol below what can be verified, ends the search.
@@ -487,7 +488,7 @@ Solution solve(const Scene& scene, const Options& options, const Solution* previ
   solver.verify = true;
   Solution sol;
   Diagnostics spent;  // the work of the rejected tries counts too
-  int segments = 1;
+  int segments = 1, stalls = 0;  // stalls: the last doublings in a row that did not halve the estimate
   double previous_estimate = std::numeric_limits<double>::infinity();
   for (int attempt = 0; attempt < 16; ++attempt) {
     sol = solve_with(model, solver, segments == 1 ? Method::shooting : Method::multiple_shooting, segments,
@@ -498,15 +499,20 @@ Solution solve(const Scene& scene, const Options& options, const Solution* previ
     const double estimate = sol.diagnostics.error_estimate;
     const bool improving = !(estimate > previous_estimate / 2);  // also true after an integrator failure (NaN)
     previous_estimate = estimate;
-    if (segments < 64 && improving) {
+    stalls = improving ? 0 : stalls + 1;
+    if (segments < 64 && stalls < 2) {
       segments *= 2;
       continue;
     }
     if (solver.rtol < options.rtol && !improving) break;  // tightening no longer helps: round-off's floor
     Options tighter = solver;
     tighter.rtol = std::max(solver.rtol * std::clamp(options.rtol / estimate / 4, 1e-3, 0.25), 1e-14);
-    // Keep the last judged solve rather than one that cannot be verified at CVODE's floor.
-    if (!three_solves_fit(tighter)) break;
+    // No tighter than the three verifying solves fit above CVODE's floor; where the solve already runs
+    // there, keep the last judged solve rather than one that cannot be verified.
+    if (!three_solves_fit(tighter)) {
+      tighter.rtol = solver.rtol * (16 * kThirdSolveRoom * kCvodeRtolFloor / cvode_tolerances(solver).rtol) * (1 + 1e-9);
+      if (!(tighter.rtol < solver.rtol) || !three_solves_fit(tighter)) break;
+    }
     solver = tighter;
   }
   return sol;
