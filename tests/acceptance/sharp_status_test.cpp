@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "ogive/geometry/curve_families.hpp"
@@ -129,8 +130,9 @@ TEST_CASE("sharp status: CVODE rows that say success have estimates at least the
         o.integrator = way.integrator;
         o.rtol = rtol;
         const Solution sol = solve(scene, o);
-        CAPTURE(to_string(way.method));
-        CAPTURE(to_string(way.integrator));
+        const std::string method = to_string(way.method), integrator = to_string(way.integrator);
+        CAPTURE(method);
+        CAPTURE(integrator);
         CAPTURE(rtol);
         REQUIRE(sol.field);
         const double error = reaction_difference(sol.reactions, reference.reactions, scene.thickness);
