@@ -25,8 +25,9 @@ namespace ogive {
 // atol = o.atol if > 0, else 1e-6 of that rtol. Why: CVODE controls each step's local error; the
 // global error of a shooting solve is their accumulation amplified by the boundary-value system's
 // condition (about 10^2), and BDF (order <= 5) takes ~4x more steps than Adams (order <= 12): at
-// 1/100 its verified profiles missed rtol by 1.2-3.6x on the pointed arches. So a verified solve can
-// reach rtol down to 16 f^-1 kCvodeRtolFloor: 1.6e-13 with Adams, 1.6e-11 with BDF.
+// 1/100 its verified profiles missed rtol by 1.2-3.6x on the pointed arches. A verified solve also runs
+// 16 and at least 64 times tighter (solve.cpp), so it reaches rtol down to 64 f^-1 kCvodeRtolFloor:
+// 6.4e-13 with Adams, 6.4e-11 with BDF.
 struct CvodeTolerances {
   double rtol = 0, atol = 0;
 };

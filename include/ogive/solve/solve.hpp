@@ -5,8 +5,9 @@
 // library never prints. It builds the model (the half arch for a symmetric scene unless
 // Options::whole_arch, else the whole), runs the method asked for or, for Method::automatic, the
 // smallest that meets rtol (the closed form where it applies, the quadrature method, then verified
-// shooting with 1, 2, 4 ... 64 segments and tighter CVODE tolerances), verifies CVODE solves by a 16
-// times tighter one, and judges every solution against rtol (within_tolerance). A no-tension scene is
+// shooting with 1, 2, 4 ... 64 segments and tighter CVODE tolerances), verifies CVODE solves by two 16
+// and 256 times tighter (the estimate: the larger of the difference from the looser and twice that
+// from the tighter), and judges every solution against rtol (within_tolerance). A no-tension scene is
 // solved by Newton (no_tension.hpp): for auto its quadrature form first (explicit forces, adaptive
 // Gauss-Kronrod: milliseconds), then single shooting, then multiple shooting with 8 segments (and CVODE
 // 10 times tighter) if that is not verified, each verified by a second solve at rtol / 16; --method
