@@ -69,6 +69,15 @@ std::string parse_error_words(CLI::App& app, CLI::App* where, const std::vector<
     if (what.find("At Most") != std::string::npos)
       return option + ": given more than once (several values are one list a,b,c or a range start:stop:count)";
   }
+  // CLI11: "Could not convert: --plane-strain = maybe" (a flag given a value it cannot read).
+  if (const std::string prefix = "Could not convert: ";
+      dynamic_cast<const CLI::ConversionError*>(&e) != nullptr && what.rfind(prefix, 0) == 0) {
+    const std::string rest = what.substr(prefix.size());
+    const std::size_t eq = rest.find(" = ");
+    if (eq != std::string::npos)
+      return fmt::format("{}: a flag, given alone or as {}=true / {}=false, not '{}'", rest.substr(0, eq),
+                         rest.substr(0, eq), rest.substr(0, eq), rest.substr(eq + 3));
+  }
   if (dynamic_cast<const CLI::RequiredError*>(&e) != nullptr && where == &app) {
     std::string list;
     for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;

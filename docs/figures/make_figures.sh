@@ -109,7 +109,7 @@ plot figure-12 "Figure 12: e along the semicircle, t = 0.08 L, outward support d
 # The influence line of a point load (the README's call): what the load adds to the self-weight's
 # reactions, against where it acts.
 "$ogive" thrust --point-load 1e4 --point-load-at 0:1:101 --all-columns > "$tmp/influence.csv"
-read -r H0 V0 M0 < <("$ogive" thrust --columns H_left,V_left,M_left | awk -F, 'NR == 2 { print $1, $2, $3 }')
+read -r H0 V0 M0 < <("$ogive" thrust --columns H_left,V_left,M_left | awk -F, 'NR == 2 { print $2, $3, $4 }')
 gnuplot <<GP
 set terminal pngcairo size 900,560 font ',11'
 set output '$out/influence-line.png'

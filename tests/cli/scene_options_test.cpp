@@ -115,6 +115,10 @@ TEST_CASE("cli: every numeric option refuses nan - infinities - overflow - text 
            {"bench", "--eccentricity", "0:1:1000", "--thickness-ratio", "0.05:0.1:1000", "--rtols", "1e-2:1e-3:2"},
            {"thrust", "--curve", "points", "--curve-file", "/"}, {"thrust", "--plane-strain=maybe"}})
     check_refused(args);
+  // A flag given a value it cannot read: the flag's words, not the parser's.
+  const Run flag = run_command({"thrust", "--plane-strain=maybe"});
+  CHECK(flag.err == "ogive: --plane-strain: a flag, given alone or as --plane-strain=true / --plane-strain=false, "
+                    "not 'maybe'\n");
 }
 
 TEST_CASE("cli: a bad curve file is one line naming the file and the line - exit 2 - nothing on stdout") {
