@@ -23,7 +23,7 @@ except ImportError:
 OGIVE = sys.argv[1] if len(sys.argv) > 1 else "build/ogive"
 BOOLEAN = {"plane_strain", "crown_hinge", "cracked", "thrust_in_kern", "thrust_in_section", "within_tolerance"}
 TEXT = {"curve", "method", "integrator", "status", "message", "warning", "reference_method", "reference_status",
-        "chosen_method", "file", "joints", "weight", "hinges_min", "hinges_max", "hinges_collapse", "state", "hinge",
+        "chosen_method", "file", "joints", "weight", "hinges_min", "hinges_max", "hinges_collapse", "hinges_horizontal", "state", "hinge",
         "left_support", "right_support", "domain", "loads_file", "section"}
 
 RUNS = [

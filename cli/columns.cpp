@@ -51,6 +51,7 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"fill_density", "kg/m^3", "fill density rho_f (load rho_f g max(0, h_f - y_extrados) per horizontal length)"},
     {"fill_height_ratio", "", "the fill's level h_f above the springing line / span"},
     {"loads_file", "", "the --loads-file whose loads the scene carries too"},
+    {"horizontal_acceleration", "", "horizontal acceleration a / g, left to right positive, on the self-weight and fill"},
     {"method", "", "method that produced the numbers (closed-form, shooting, multiple-shooting)"},
     {"integrator", "", "CVODE's method (adams, bdf); empty for the closed form"},
     {"rtol", "", "relative error asked (--rtol); success guarantees it"},
@@ -126,6 +127,11 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"load_factor", "", "limit: multiplier on the live load (every point and live load) at collapse (static LP)"},
     {"load_factor_mechanism", "", "limit: the same from the mechanism of those hinges by virtual work"},
     {"hinges_collapse", "", "limit: hinges of the collapse mechanism, x/L:face joined by ';'"},
+    {"horizontal_load_factor", "",
+     "limit: the horizontal acceleration a_c / g (to +x) that makes the arch a mechanism, vertical loads at factor 1 "
+     "and --horizontal-acceleration ignored (only when asked for)"},
+    {"horizontal_load_factor_mechanism", "", "limit: the same from the mechanism of its hinges by virtual work"},
+    {"hinges_horizontal", "", "limit: hinges of the mechanism of a_c, x/L:face joined by ';'"},
     {"lp_solves", "", "limit: linear programs solved for the row"},
     {"state", "", "limit --thrust-line: min, max or collapse"},
     {"joint", "", "limit --thrust-line: joint index from the left springing"},
@@ -154,7 +160,7 @@ const std::vector<std::string>& scene_columns() {
       "plane_strain", "section", "left_support", "right_support", "crown_hinge", "left_spread_ratio",
       "right_spread_ratio", "left_settlement_ratio", "right_settlement_ratio", "left_rotation", "right_rotation",
       "point_load", "point_load_at", "live_load", "live_load_from", "live_load_to", "fill_density",
-      "fill_height_ratio", "loads_file"};
+      "fill_height_ratio", "loads_file", "horizontal_acceleration"};
   return columns;
 }
 
@@ -162,7 +168,7 @@ bool ColumnText::given() const { return option && option->count() > 0; }
 
 void add_column_options(CLI::App& cmd, ColumnText& text) {
   text.option = cmd.add_option("--columns", text.columns,
-                               "columns to print, comma-separated, in the output's order; 'help' lists every column "
+                               "columns to print, comma-separated, in the order given after scene; 'help' lists every column "
                                "with its unit (default: scene, the inputs that vary, the results)");
   cmd.add_flag("--all-columns", text.all_columns, "print every column, the inputs that do not vary included");
 }
@@ -175,12 +181,14 @@ Columns::Columns(const std::vector<std::string>& results, std::vector<std::strin
 void Columns::select(const ColumnText& ct, const std::vector<std::string>& varying_inputs,
                      const std::vector<std::string>& varying_solver) {
   if (ct.given() && ct.all_columns) throw UsageError("--columns: give either --columns or --all-columns");
-  keep_.assign(all_.size(), ct.all_columns);
+  std::vector<bool>& keep = selection_.keep;
+  selection_.order.clear();
+  keep.assign(all_.size(), ct.all_columns);
   if (ct.all_columns) return;
-  std::vector<std::string> wanted;
+  // The names to print, in the order printed: the scene's number first (it ties a row to its scene).
+  std::vector<std::string> wanted{"scene"};
   if (!ct.given()) {
-    wanted = defaults_;
-    wanted.push_back("scene");
+    wanted.insert(wanted.end(), defaults_.begin(), defaults_.end());
     wanted.insert(wanted.end(), varying_inputs.begin(), varying_inputs.end());
     wanted.insert(wanted.end(), varying_solver.begin(), varying_solver.end());
   } else {
@@ -188,23 +196,39 @@ void Columns::select(const ColumnText& ct, const std::vector<std::string>& varyi
       if (std::find(all_.begin(), all_.end(), name) == all_.end())
         throw UsageError(fmt::format("--columns: no column '{}' in this command's output{} (--columns help lists them)",
                                      name.substr(0, 60), did_you_mean(name, all_)));
-      wanted.push_back(name);
+      if (std::find(wanted.begin(), wanted.end(), name) == wanted.end()) wanted.push_back(name);
     }
   }
   for (std::size_t i = 0; i < all_.size(); ++i)
-    keep_[i] = std::find(wanted.begin(), wanted.end(), all_[i]) != wanted.end();
+    keep[i] = std::find(wanted.begin(), wanted.end(), all_[i]) != wanted.end();
+  if (!ct.given()) return;  // the defaults print in the full order
+  // Each wanted name's rank among the kept fields in the full order.
+  std::vector<std::string> kept_in_full_order;
+  for (std::size_t i = 0; i < all_.size(); ++i)
+    if (keep[i]) kept_in_full_order.push_back(all_[i]);
+  for (const std::string& name : wanted)
+    selection_.order.push_back(static_cast<std::size_t>(
+        std::find(kept_in_full_order.begin(), kept_in_full_order.end(), name) - kept_in_full_order.begin()));
+  bool identity = true;
+  for (std::size_t k = 0; k < selection_.order.size(); ++k) identity = identity && selection_.order[k] == k;
+  if (identity) selection_.order.clear();
 }
 
 bool Columns::selected(std::string_view name) const {
   for (std::size_t i = 0; i < all_.size(); ++i)
-    if (all_[i] == name) return keep_[i];
+    if (all_[i] == name) return selection_.keep[i];
   return false;
 }
 
 std::string Columns::header() const {
-  std::string out;
+  std::vector<std::string_view> kept;
   for (std::size_t i = 0; i < all_.size(); ++i)
-    if (keep_[i]) out += (out.empty() ? "" : ",") + all_[i];
+    if (selection_.keep[i]) kept.push_back(all_[i]);
+  std::string out;
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    if (k > 0) out += ',';
+    out += kept[selection_.order.empty() ? k : selection_.order[k]];
+  }
   return out + "\n";
 }
 
@@ -241,6 +265,7 @@ void add_scene_columns(CsvRow& row, const SceneParameters& p, const Curve* curve
                    p.live_load_to, p.fill_density, p.fill_height_ratio})
     add_parameter(row, v);
   row.add(p.loads_file);
+  row.add(p.horizontal_acceleration);
 }
 
 std::string sparse_row(const Columns& columns, const SceneParameters& p, const Curve* curve,

@@ -34,7 +34,8 @@ void add_column_options(CLI::App& cmd, ColumnText& text);
 
 // A command's columns in their full order (the scene's, then the results), and which of them are
 // printed: by default the scene number, the inputs that vary in the sweep and the command's default
-// results; `--columns a,b` chooses (in the full order), `--all-columns` prints everything.
+// results, in the full order; `--columns a,b` prints `scene` and then a, b in the order given;
+// `--all-columns` prints everything.
 class Columns {
  public:
   Columns(const std::vector<std::string>& results, std::vector<std::string> defaults);
@@ -43,7 +44,8 @@ class Columns {
   // The user's --columns and --all-columns; UsageError for a column the command does not have.
   void select(const ColumnText& ct, const std::vector<std::string>& varying_inputs,
               const std::vector<std::string>& varying_solver = {});
-  const std::vector<bool>* keep() const { return &keep_; }
+  // What CsvRow prints of the full order, and in which order.
+  const FieldSelection* keep() const { return &selection_; }
   bool selected(std::string_view name) const;
   std::string header() const;
   // --columns help: the command's columns, their units and meanings, as CSV.
@@ -51,7 +53,7 @@ class Columns {
 
  private:
   std::vector<std::string> all_, defaults_;
-  std::vector<bool> keep_;
+  FieldSelection selection_;
 };
 
 // A parameter that does not apply to the scene's curve is an empty field, never "nan".

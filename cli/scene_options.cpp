@@ -53,6 +53,9 @@ const std::map<std::string, std::string>& axis_meanings() {
       {"--fill-density",
        "fill density rho_f, kg/m^3: load rho_f g max(0, h_f - y_extrados(x)) per horizontal length"},
       {"--fill-height-ratio", "the fill's level h_f above the springing line, over the span"},
+      {"--horizontal-acceleration",
+       "horizontal acceleration a, a fraction of g, left to right positive: the self-weight and the fill also "
+       "carry a times their weight horizontally (point and live loads do not)"},
       {"--left-spread-ratio", "left springing's horizontal movement, outwards positive, over the span"},
       {"--right-spread-ratio", "right springing's horizontal movement, outwards positive, over the span"},
       {"--left-settlement-ratio", "left springing's vertical movement, downwards positive, over the span"},
@@ -92,6 +95,7 @@ std::vector<Axis> scene_axes() {
       {"--fill-density", "", &P::fill_density, [](double v) { return v >= 0; }, "must be >= 0"},
       {"--fill-height-ratio", "", &P::fill_height_ratio, [](double v) { return v > 0 && v <= 100; },
        "must lie in (0, 100] (the fill's level above the springing line, over the span)"},
+      {"--horizontal-acceleration", "0", &P::horizontal_acceleration, any_number, "must be a finite number"},
       {"--left-spread-ratio", "", &P::left_spread_ratio, small_movement, kMovementRule},
       {"--right-spread-ratio", "", &P::right_spread_ratio, small_movement, kMovementRule},
       {"--left-settlement-ratio", "0", &P::left_settlement_ratio, small_movement, kMovementRule},

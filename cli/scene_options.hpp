@@ -29,6 +29,7 @@ struct SceneParameters {
   double youngs_modulus, poisson_ratio, density, gravity, shear_coefficient;
   bool plane_strain;
   double point_load, point_load_at, live_load, live_load_from, live_load_to, fill_density, fill_height_ratio;
+  double horizontal_acceleration;
   double left_spread_ratio, right_spread_ratio, left_settlement_ratio, right_settlement_ratio, left_rotation,
       right_rotation;
   const char* left_support = "clamped";

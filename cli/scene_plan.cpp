@@ -184,6 +184,7 @@ ScenePlan::Built ScenePlan::build(const SceneParameters& p) const {
     scene.left = {left_kind_, p.left_spread_ratio * p.span, p.left_settlement_ratio * p.span, p.left_rotation};
     scene.right = {right_kind_, p.right_spread_ratio * p.span, p.right_settlement_ratio * p.span, p.right_rotation};
     scene.crown_hinge = options_.crown_hinge;
+    scene.horizontal_acceleration = p.horizontal_acceleration;
     scene.section = section_;
     scene.loads = options_.file_loads;
     if (!std::isnan(p.point_load)) scene.loads.points.push_back({p.point_load, p.point_load_at});

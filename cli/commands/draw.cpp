@@ -59,9 +59,12 @@ Columns draw_columns() {
 
 // The limit analysis (default options: radial joints, the voussoirs' own weight) drawn: the minimum and
 // maximum thrust states as lines with their hinges (none where the arch cannot stand), and with a live
-// load the collapse mechanism.
+// load the collapse mechanism; under a horizontal acceleration also the collapse state of the
+// acceleration a_c, with its four hinges.
 void add_limit_drawing(const Scene& scene, DrawingOptions& drawing) {
-  const LimitResult r = analyse_limit(scene, LimitOptions{});
+  LimitOptions options;
+  options.horizontal_load_factor = scene.horizontal_acceleration != 0;
+  const LimitResult r = analyse_limit(scene, options);
   drawing.extra_lines = limit_thrust_lines(r);
   if (std::optional<CollapseMechanism> m = collapse_mechanism(scene, r)) drawing.mechanisms.push_back(std::move(*m));
 }

@@ -32,9 +32,15 @@ const std::map<std::string, JointOrientation> kJointOrientations = {{"radial", J
                                                                     {"vertical", JointOrientation::vertical}};
 const std::map<std::string, WeightModel> kWeightModels = {{"voussoir", WeightModel::voussoir},
                                                           {"axis", WeightModel::axis}};
-enum class ThrustLine { min, max, collapse };
-const std::map<std::string, ThrustLine> kThrustLines = {
-    {"min", ThrustLine::min}, {"max", ThrustLine::max}, {"collapse", ThrustLine::collapse}};
+enum class ThrustLine { min, max, collapse, horizontal };
+const std::map<std::string, ThrustLine> kThrustLines = {{"min", ThrustLine::min},
+                                                        {"max", ThrustLine::max},
+                                                        {"collapse", ThrustLine::collapse},
+                                                        {"horizontal", ThrustLine::horizontal}};
+// The columns of the horizontal acceleration of collapse: computed only when one of them is asked for
+// (or --thrust-line horizontal), and not among the defaults.
+const std::vector<std::string> kHorizontalColumns = {"horizontal_load_factor", "horizontal_load_factor_mechanism",
+                                                     "hinges_horizontal"};
 
 // The joints that the loads and the refinement add to a starting ring, for the rows a scene's
 // --thrust-line may print: a generous estimate (a few dozen per refinement round).
@@ -63,7 +69,7 @@ void add_analysis_options(CLI::App& cmd, LimitText& t) {
       ->capture_default_str();
   cmd.add_option("--friction", t.friction, "friction coefficient of the joints (> 0): adds the sliding check")
       ->check(finite_number());
-  cmd.add_option("--thrust-line", t.thrust_line, "instead of the summary, one row per joint of the min, max or collapse state");
+  cmd.add_option("--thrust-line", t.thrust_line, "instead of the summary, one row per joint of the min, max, collapse or horizontal (the acceleration a_c of collapse) state");
   cmd.add_option("--repeats", t.repeats,
                  "solve each scene this many times and add median_seconds (benchmark; the scenes one after another)")
       ->check(whole_count());
@@ -134,14 +140,17 @@ Columns limit_columns(bool lines, bool timed) {
   const std::vector<std::string> summary = {
       "status", "H_min", "H_max", "V", "H_min_over_V", "H_max_over_V", "thickness_min_ratio",
       "geometric_safety_factor", "hinges_min", "hinges_max", "load_factor", "load_factor_mechanism",
-      "hinges_collapse", "lp_solves", "message", "median_seconds"};
+      "hinges_collapse", "horizontal_load_factor", "horizontal_load_factor_mechanism", "hinges_horizontal",
+      "lp_solves", "message", "median_seconds"};
   const std::vector<std::string> joints = {"state",      "status",     "H",          "load_factor", "joint",
                                            "s",          "intrados_x", "intrados_y", "extrados_x",  "extrados_y",
                                            "thrust_x",   "thrust_y",   "hinge"};
   const std::vector<std::string>& own = lines ? joints : summary;
   results.insert(results.end(), own.begin(), own.end());
   for (const std::string& name : own)
-    if (name != "lp_solves" && (name != "median_seconds" || timed)) defaults.push_back(name);
+    if (name != "lp_solves" && (name != "median_seconds" || timed) &&
+        std::find(kHorizontalColumns.begin(), kHorizontalColumns.end(), name) == kHorizontalColumns.end())
+      defaults.push_back(name);
   return Columns(results, defaults);
 }
 
@@ -169,6 +178,8 @@ std::string summary_row(const Columns& columns, const SceneParameters& p, const 
   row.add(r.thickness_min / L).add(scene.thickness / r.thickness_min);
   row.add(hinge_text(r.min_state.hinges, L)).add(hinge_text(r.max_state.hinges, L));
   row.add(r.load_factor()).add(r.load_factor_mechanism).add(hinge_text(r.collapse_state.hinges, L));
+  row.add(r.horizontal_load_factor()).add(r.horizontal_load_factor_mechanism);
+  row.add(hinge_text(r.horizontal_state.hinges, L));
   row.add(r.lp_solves).add(r.message);
   if (timed) row.add(median_seconds);
   else row.add(std::string_view{});
@@ -179,9 +190,10 @@ std::string summary_row(const Columns& columns, const SceneParameters& p, const 
 std::string joint_rows(const Columns& columns, const SceneParameters& p, const Scene& scene, const LimitOptions& o,
                        const LimitResult& r, const std::string& which) {
   const ThrustLine line = kThrustLines.at(which);
-  const ThrustState& st = line == ThrustLine::min   ? r.min_state
-                          : line == ThrustLine::max ? r.max_state
-                                                    : r.collapse_state;
+  const ThrustState& st = line == ThrustLine::min        ? r.min_state
+                          : line == ThrustLine::max      ? r.max_state
+                          : line == ThrustLine::collapse ? r.collapse_state
+                                                         : r.horizontal_state;
   CsvRow row(columns.keep());
   add_scene_columns(row, p, scene.curve.get());
   add_limit_setup(row, o);
@@ -217,7 +229,7 @@ int run_limit(LimitCommandOptions& lo, const CLI::App& cmd, std::ostream& out) {
     write_all(out, columns.help());
     return kExitOk;
   }
-  const LimitOptions o = limit_options(text, cmd);
+  LimitOptions o = limit_options(text, cmd);
   const ScenePlan plan(lo.scene, cmd);
   if (lines && kThrustLines.at(text.thrust_line) == ThrustLine::collapse && cmd.count("--point-load") == 0 &&
       cmd.count("--live-load") == 0 && lo.scene.file_loads.points.empty() && lo.scene.file_loads.live.empty())
@@ -225,6 +237,9 @@ int run_limit(LimitCommandOptions& lo, const CLI::App& cmd, std::ostream& out) {
                      "--loads-file with point or live rows)");
   if (lines) check_rows(plan.size(), o.joints_count);
   columns.select(lo.columns, plan.varying_inputs());
+  o.horizontal_load_factor = (lines && kThrustLines.at(text.thrust_line) == ThrustLine::horizontal) ||
+                             std::any_of(kHorizontalColumns.begin(), kHorizontalColumns.end(),
+                                         [&](const std::string& c) { return columns.selected(c); });
   // Each scene's analysis has its own LP model, so scenes run in parallel; timed scenes (--repeats) one
   // after another, each on a core of its own. A scene's joint rows (--thrust-line) wait in the reorder
   // window while other threads work: write_scenes bounds them by the starting ring's joints and the few

@@ -53,14 +53,15 @@ struct Work {
   limit_detail::RingScratch scratch;
   Ring margin_ring;                        // the ring of the thickness the search tries
   std::unique_ptr<LimitLp> lp, margin_lp;  // the round's programs, the search's
+  std::unique_ptr<LimitLp> horizontal_lp;  // the round's program of the horizontal acceleration a_c
   // The previous round's optimal bases of the margin, the extreme thrusts and the collapse, by row key:
   // the next, finer ring starts from them (most of its joints are the coarser ring's).
-  std::vector<LimitLp::RowKey> margin_basis, min_basis, max_basis, collapse_basis;
+  std::vector<LimitLp::RowKey> margin_basis, min_basis, max_basis, collapse_basis, horizontal_basis;
 
   // Before another scene: nothing of the last one is reused, only the storage.
   void forget() {
     scratch.forget();
-    for (auto* basis : {&margin_basis, &min_basis, &max_basis, &collapse_basis}) basis->clear();
+    for (auto* basis : {&margin_basis, &min_basis, &max_basis, &collapse_basis, &horizontal_basis}) basis->clear();
   }
 };
 
@@ -186,8 +187,13 @@ ThrustState thrust_state(const Ring& ring, double H, double V_left, double M_lef
   for (std::size_t j = 0; j < ring.joints.size(); ++j) {
     const Joint& joint = ring.joints[j];
     // The force of the part left of the joint on the part right of it, and its moment about the origin.
-    const Eigen::Vector2d F(H, V_left - left.dead[j].force - lambda * left.live[j].force);
-    const double moment = M_left - left.dead[j].moment - lambda * left.live[j].moment;
+    // (A horizontal acceleration a adds a times the dead load left of it, and that load's moment.)
+    const double a = ring.acceleration;
+    const Eigen::Vector2d F(a == 0 ? H : H + a * left.dead[j].force,
+                            V_left - left.dead[j].force - lambda * left.live[j].force);
+    const double moment = a == 0 ? M_left - left.dead[j].moment - lambda * left.live[j].moment
+                                 : M_left - left.dead[j].moment - lambda * left.live[j].moment -
+                                       a * left.dead[j].height_moment;
     // Its line meets the joint I + u (E - I) where (I + u d) x F = moment.
     const Eigen::Vector2d d = joint.extrados - joint.intrados;
     const double u = (moment - cross(joint.intrados, F)) / cross(d, F);
@@ -207,8 +213,9 @@ namespace {
 
 // The multiplier of one mechanism with hinges h (sorted by joint, distinct joints): NaN unless it has
 // exactly one degree of freedom, the live load does work in it, and it is kinematically admissible
-// (each face hinge opens on the face opposite to its own; a pin turns either way).
-double one_mechanism(const Ring& ring, const std::vector<Hinge>& h) {
+// (each face hinge opens on the face opposite to its own; a pin turns either way). `live`: what the
+// multiplier multiplies (limit_internal.hpp).
+double one_mechanism(const Ring& ring, const std::vector<Hinge>& h, limit_detail::LiveKind live) {
   // Bodies b = 0 .. k-2 between consecutive hinges, each with a rigid velocity (u, v, omega): a point p
   // moves with (u - omega p_y, v + omega p_x). The parts outside the first and last hinges stay put.
   const int k = static_cast<int>(h.size()), bodies = k - 1;
@@ -231,17 +238,30 @@ double one_mechanism(const Ring& ring, const std::vector<Hinge>& h) {
   Eigen::VectorXd mode = lu.kernel();
   if (lu.dimensionOfKernel() != 1) return kNaN;
   // The work of downward forces on a voussoir: minus force times the vertical velocity v + omega x of
-  // its body, summed over the forces: -(v F + omega sum x F).
-  auto work = [&](int voussoir, const VerticalLoad& load) {
+  // its body, summed over the forces: -(v F + omega sum x F); with `push` = a, plus that of the
+  // horizontal forces a F, a F times the horizontal velocity u - omega y: a (u F - omega sum y F).
+  // `weight` times the vertical work, plus `push` times the horizontal one.
+  auto work = [&](int voussoir, const VerticalLoad& load, double weight, double push) {
     for (int b = 0; b < bodies; ++b)
-      if (voussoir >= h[b].joint && voussoir < h[b + 1].joint)
-        return -(mode(3 * b + 1) * load.force + mode(3 * b + 2) * load.moment / L);
+      if (voussoir >= h[b].joint && voussoir < h[b + 1].joint) {
+        const double vertical = -(mode(3 * b + 1) * load.force + mode(3 * b + 2) * load.moment / L);
+        if (push == 0) return weight * vertical;
+        return weight * vertical + push * (mode(3 * b) * load.force - mode(3 * b + 2) * load.height_moment / L);
+      }
     return 0.0;
   };
+  const bool horizontal = live == limit_detail::LiveKind::horizontal;
   double live_work = 0, dead_work = 0;
   for (std::size_t v = 0; v < ring.voussoirs.size(); ++v) {
-    live_work += work(static_cast<int>(v), ring.voussoirs[v].live);
-    dead_work += work(static_cast<int>(v), ring.voussoirs[v].dead());
+    const int i = static_cast<int>(v);
+    const Voussoir& vs = ring.voussoirs[v];
+    if (horizontal) {
+      live_work += work(i, vs.dead(), 0.0, 1.0);
+      dead_work += work(i, vs.dead(), 1.0, 0.0) + work(i, vs.live, 1.0, 0.0);
+    } else {
+      live_work += work(i, vs.live, 1.0, 0.0);
+      dead_work += work(i, vs.dead(), 1.0, ring.acceleration);
+    }
   }
   if (!(std::abs(live_work) > 1e-12 * std::abs(dead_work))) return kNaN;
   if (live_work < 0) {  // the sense in which the load does positive work
@@ -263,13 +283,15 @@ double one_mechanism(const Ring& ring, const std::vector<Hinge>& h) {
 
 }  // namespace
 
-double mechanism_load_factor(const Ring& ring, const std::vector<Hinge>& hinges) {
-  if (!ring.has_live_load() || hinges.size() < 3) return kNaN;
+namespace {
+
+double least_mechanism(const Ring& ring, const std::vector<Hinge>& hinges, limit_detail::LiveKind live) {
+  if (hinges.size() < 3) return kNaN;
   std::vector<Hinge> sorted = hinges;
   std::sort(sorted.begin(), sorted.end(), [](const Hinge& a, const Hinge& b) { return a.joint < b.joint; });
   for (std::size_t i = 1; i < sorted.size(); ++i)
     if (sorted[i].joint == sorted[i - 1].joint) return kNaN;
-  if (sorted.size() <= 4) return one_mechanism(ring, sorted);
+  if (sorted.size() <= 4) return one_mechanism(ring, sorted, live);
   // A thrust line tangent to a face touches a run of consecutive joints on it (the finer the joints,
   // the longer the run): the first, middle and last of each run stand for it.
   std::vector<Hinge> h;
@@ -291,10 +313,22 @@ double mechanism_load_factor(const Ring& ring, const std::vector<Hinge>& hinges)
     for (std::size_t b = a + 1; b < n; ++b)
       for (std::size_t c = b + 1; c < n; ++c)
         for (std::size_t d = c + 1; d < n; ++d) {
-          const double m = one_mechanism(ring, {h[a], h[b], h[c], h[d]});
+          const double m = one_mechanism(ring, {h[a], h[b], h[c], h[d]}, live);
           if (!std::isnan(m) && !(m >= best)) best = m;
         }
   return best;
+}
+
+}  // namespace
+
+double mechanism_load_factor(const Ring& ring, const std::vector<Hinge>& hinges) {
+  if (!ring.has_live_load()) return kNaN;
+  return least_mechanism(ring, hinges, limit_detail::LiveKind::vertical);
+}
+
+double mechanism_horizontal_load_factor(const Ring& ring, const std::vector<Hinge>& hinges) {
+  if (!(ring.total_dead() != 0.0)) return kNaN;
+  return least_mechanism(ring, hinges, limit_detail::LiveKind::horizontal);
 }
 
 namespace {
@@ -408,6 +442,30 @@ Thinnest search_thinnest(MarginFunction& f, double t, double margin, bool admiss
   return out;
 }
 
+// The horizontal acceleration a_c of collapse into r (horizontal_state, horizontal_load_factor_mechanism):
+// the largest lambda of the program whose lambda pushes the dead loads horizontally, every vertical load
+// at factor 1. False when the program stops without an answer.
+bool horizontal_collapse(const Ring& ring, double friction, Work& work, LimitResult& r) {
+  if (!(ring.total_dead() != 0.0)) return true;
+  if (work.horizontal_lp) work.horizontal_lp->load(ring, friction);
+  else
+    work.horizontal_lp = std::make_unique<LimitLp>(ring, friction, &work.workspace, limit_detail::LpSolver::dense,
+                                                   limit_detail::LiveKind::horizontal);
+  LimitLp& lp = *work.horizontal_lp;
+  const int solves_before = lp.solves();
+  const LimitLp::Answer c = solve_warm(lp, work.horizontal_basis, [&](const std::vector<int>* w) { return lp.collapse(w); });
+  r.lp_solves += lp.solves() - solves_before;
+  if (c.outcome == LimitLp::Outcome::failure) return false;
+  if (c.outcome != LimitLp::Outcome::optimal) return true;  // cannot stand, or no finite a_c
+  // The state: the ring pushed by a_c with its live load at factor 1.
+  Ring shaken = ring;
+  shaken.acceleration = c.load_factor;
+  r.horizontal_state = thrust_state(shaken, c.H, c.V, c.M, 1.0);
+  r.horizontal_state.load_factor = c.load_factor;
+  r.horizontal_load_factor_mechanism = mechanism_horizontal_load_factor(ring, r.horizontal_state.hinges);
+  return true;
+}
+
 // One analysis on the ring whose joints are `refined` and the loads' (fractions_at), and where the next
 // ring should be finer: next to every hinge of its states and of the thinnest arch.
 struct Round {
@@ -473,6 +531,8 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
     // infeasible: the dead loads alone cannot stand; unbounded: the live load cannot make a mechanism.
   }
   r.lp_solves += lp.solves() - solves_before;
+  if (options.horizontal_load_factor && !horizontal_collapse(ring, options.friction, work, r))
+    return fail("the collapse acceleration");
 
   // t_min: bracket the root of the margin, then Illinois.
   MarginFunction f{scene,        options, refined, load_factor, work, 0, false, margin.basis,
@@ -490,7 +550,7 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
     r.message = "the LP of the feasibility margin stopped without an answer while searching t_min";
     return round;
   }
-  for (const ThrustState* st : {&r.min_state, &r.max_state, &r.collapse_state})
+  for (const ThrustState* st : {&r.min_state, &r.max_state, &r.collapse_state, &r.horizontal_state})
     limit_detail::add_refinement(ring, st->hinges, round.refinement);
   if (!std::isnan(r.thickness_min))
     round.refinement.insert(round.refinement.end(), f.feasible_refinement.begin(), f.feasible_refinement.end());
@@ -537,6 +597,13 @@ double largest_change(const LimitResult& a, const LimitResult& b) {
   compare(a.thickness_min, b.thickness_min);
   compare(a.load_factor(), b.load_factor());
   compare(a.load_factor_mechanism, b.load_factor_mechanism);
+  // a_c vanishes at t_min: its changes count relative to 1 % of g at least, as H/V's do to 0.01.
+  for (auto [x, y] : {std::pair{a.horizontal_load_factor(), b.horizontal_load_factor()},
+                      std::pair{a.horizontal_load_factor_mechanism, b.horizontal_load_factor_mechanism}}) {
+    if (std::isnan(x) && std::isnan(y)) continue;
+    if (std::isnan(x) != std::isnan(y)) return std::numeric_limits<double>::infinity();
+    worst = std::max(worst, std::abs(x - y) / std::max({std::abs(x), std::abs(y), 0.01}));
+  }
   return worst;
 }
 

@@ -78,6 +78,11 @@ class LpWorkspace {
 // independent reference the tests compare it with).
 enum class LpSolver { dense, clp };
 
+// What the load factor lambda multiplies: the live load (point and live loads; the dead loads at factor
+// 1, pushed by Ring::acceleration), or the horizontal acceleration of the dead loads (the acceleration
+// a_c of collapse; every vertical load at factor 1, Ring::acceleration ignored).
+enum class LiveKind { vertical, horizontal };
+
 // The linear programs of one ring and its loads. Unknowns: the thrust H, the left support's vertical
 // reaction V and moment M about the origin, the load factor lambda and the margin mu. Joint j carries
 // F_j = (H, V - D_j - lambda P_j) with moment m_j = M - MD_j - lambda MP_j about the origin; the
@@ -87,7 +92,8 @@ enum class LpSolver { dense, clp };
 class LimitLp {
  public:
   // `workspace`: the model to solve in (nullptr: one of its own); it must outlive this.
-  LimitLp(const Ring& ring, double friction, LpWorkspace* workspace = nullptr, LpSolver solver = LpSolver::dense);
+  LimitLp(const Ring& ring, double friction, LpWorkspace* workspace = nullptr, LpSolver solver = LpSolver::dense,
+          LiveKind live = LiveKind::vertical);
   ~LimitLp();
   LimitLp(const LimitLp&) = delete;
   LimitLp& operator=(const LimitLp&) = delete;

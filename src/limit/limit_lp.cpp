@@ -101,6 +101,7 @@ LpWorkspace::~LpWorkspace() = default;
 struct LimitLp::Impl {
   LpWorkspace::Impl* workspace = nullptr;
   LpSolver solver = LpSolver::dense;
+  LiveKind live = LiveKind::vertical;
   std::vector<Inequality> rows;
   double weight = 1, span = 1;  // the scales: forces in W, lengths in L
   mutable int fallbacks = 0;
@@ -121,8 +122,9 @@ struct LimitLp::Impl {
   Answer unscaled(std::array<double, kUnknowns> z, Column target) const;
 };
 
-LimitLp::LimitLp(const Ring& ring, double friction, LpWorkspace* workspace, LpSolver solver)
+LimitLp::LimitLp(const Ring& ring, double friction, LpWorkspace* workspace, LpSolver solver, LiveKind live)
     : impl_(std::make_unique<Impl>()) {
+  impl_->live = live;
   if (!workspace) {
     own_workspace_ = std::make_unique<LpWorkspace>();
     workspace = own_workspace_.get();
@@ -145,36 +147,49 @@ void LimitLp::load(const Ring& ring, double friction) {
   LoadsLeftOfJoints& left = impl_->left;
   loads_left_of_joints(ring, left);
   std::size_t pin = 0;
+  const bool horizontal = impl_->live == LiveKind::horizontal;
+  const double a = horizontal ? 0.0 : ring.acceleration;
   std::vector<RowKey>& keys = impl_->keys;
   keys.clear();
   for (std::size_t j = 0; j < ring.joints.size(); ++j) {
     const std::size_t first = rows.size();
     const Eigen::Vector2d I = ring.joints[j].intrados / L, E = ring.joints[j].extrados / L;
-    const double D = left.dead[j].force / W, MD = left.dead[j].moment / (W * L);
+    double D = left.dead[j].force / W, MD = left.dead[j].moment / (W * L);
     const double P = left.live[j].force / W, MP = left.live[j].moment / (W * L);
+    // The horizontal dead load a G to the left of the joint and its moment a MG (clockwise).
+    const double G = D, MG = left.dead[j].height_moment / (W * L);
+    const double aG = a * G, aMG = a * MG;
+    // lambda's coefficient in the moment about Q: the live load's Qx P - MP, or the horizontal one's
+    // Qy G - MG (then the live load is dead, at factor 1).
+    auto factor = [&](const Eigen::Vector2d& Q) { return horizontal ? Q.y() * G - MG : Q.x() * P - MP; };
+    if (horizontal) D += P, MD += MP;
     const double h = (E - I).norm();
-    // Moment of the joint's force about Q: H Qy - V Qx + M + lambda (Qx P - MP) + (Qx D - MD);
-    // <= -mu h about the intrados point, >= mu h about the extrados point, 0 about a pin's axis point.
-    rows.push_back({{I.y(), -I.x(), 1.0, I.x() * P - MP, h}, -(I.x() * D - MD)});
-    rows.push_back({{-E.y(), E.x(), -1.0, -(E.x() * P - MP), h}, E.x() * D - MD});
+    // Moment of the joint's force about Q: H Qy - V Qx + M + lambda (Qx P - MP) + (Qx D - MD)
+    // + (Qy aG - aMG); <= -mu h about the intrados point, >= mu h about the extrados point, 0 about a
+    // pin's axis point.
+    auto dead = [&](const Eigen::Vector2d& Q) { return a == 0 ? Q.x() * D - MD : Q.x() * D - MD + (Q.y() * aG - aMG); };
+    rows.push_back({{I.y(), -I.x(), 1.0, factor(I), h}, -dead(I)});
+    rows.push_back({{-E.y(), E.x(), -1.0, -factor(E), h}, dead(E)});
     if (pin < ring.pins.size() && ring.pins[pin] == static_cast<int>(j)) {
       const Eigen::Vector2d A = ring.joints[j].axis / L;
-      rows.push_back({{A.y(), -A.x(), 1.0, A.x() * P - MP, 0.0}, -(A.x() * D - MD), true});
+      rows.push_back({{A.y(), -A.x(), 1.0, factor(A), 0.0}, -dead(A), true});
       ++pin;
     }
     if (friction > 0) {
-      // Normal n (towards the right-hand part) and direction d of the joint; F = (H, V - D - lambda P).
+      // Normal n (towards the right-hand part) and direction d of the joint; F = (H + aG, V - D - lambda P).
       const Eigen::Vector2d d = (E - I) / h, n(d.y(), -d.x());
       for (double sign : {1.0, -1.0}) {  // sign * (F . d) - friction * (F . n) <= 0
-        const Eigen::Vector2d a = sign * d - friction * n;
-        rows.push_back({{a.x(), a.y(), 0.0, -a.y() * P, 0.0}, a.y() * D});
+        const Eigen::Vector2d c = sign * d - friction * n;
+        rows.push_back({{c.x(), c.y(), 0.0, horizontal ? c.x() * G : -c.y() * P, 0.0},
+                        a == 0 ? c.y() * D : c.y() * D - c.x() * aG});
       }
     }
     for (std::size_t r = first; r < rows.size(); ++r) keys.push_back({ring.joints[j].s, static_cast<int>(r - first)});
   }
   const std::size_t tail = rows.size();
-  // The sign of H and lambda, and the caps.
-  rows.push_back({{-1, 0, 0, 0, 0}, 0.0});
+  // The sign of H and lambda, and the caps. Under a horizontal acceleration the left springing may pull
+  // (H < 0: the leeward side holds the arch), so H's row bounds it only beyond the caps.
+  rows.push_back({{-1, 0, 0, 0, 0}, a == 0 && !horizontal ? 0.0 : 2 * kCap});
   rows.push_back({{0, 0, 0, -1, 0}, 0.0});
   for (int c = 0; c < kUnknowns; ++c)
     for (double sign : {1.0, -1.0}) {

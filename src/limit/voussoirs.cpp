@@ -198,12 +198,12 @@ VerticalLoad fill_load(const SideView& side, const SideExtrados& extrados, const
   // Each piece between the knots has the sign of its ends (a root inside one is found from them): none
   // positive, the stretch lies above the fill's level and carries nothing.
   if (!submerged) return {};
-  const Eigen::Vector2d load = integral_between_knots<Eigen::Vector2d>(knots, a, b, [&](double s) {
+  const Eigen::Vector3d load = integral_between_knots<Eigen::Vector3d>(knots, a, b, [&](double s) {
     Eigen::Vector2d p;
     const double q = unit_weight * std::max(0.0, excess(s, &p));
-    return Eigen::Vector2d(q, q * p.x());
+    return Eigen::Vector3d(q, q * p.x(), q * p.y());
   });
-  return {load.x(), load.y()};
+  return {load.x(), load.y(), load.z()};
 }
 
 // Whether fill_load along the extrados between joints a and b is zero for a fill up to `level`, known
@@ -635,6 +635,7 @@ void make_ring_at(const Scene& scene, const LimitOptions& options, const std::ve
   build_ring(*scene.curve, scene.thickness, m.density * m.gravity, scene.loads.fills, m.gravity, options, fractions,
              ring, scratch.impl_->sides);
   add_live_loads(ring, scene.loads, options.weight);
+  ring.acceleration = scene.horizontal_acceleration;
   const int last = static_cast<int>(ring.joints.size()) - 1;
   if (scene.left.kind == SupportKind::pinned) ring.pins.push_back(0);
   if (scene.crown_hinge) ring.pins.push_back(ring.crown_joint());

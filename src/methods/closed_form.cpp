@@ -25,15 +25,17 @@ SystemMatrix to_local(double theta) {
 }
 
 // exp(A8 l) for one arc (scaled curvature k), local order (u, v, psi, N, V, M, c, sn); the constant
-// vertical load b = w_self / w has local components (b sn, b c).
+// vertical load b = w_self / w has local components (b sn, b c), and the constant horizontal load a b of a
+// horizontal acceleration a (Fx' = -a b) adds (-a b c, a b sn): both are linear in (c, sn).
 Matrix8 arc_exponential(const ArchModel& model, double k, double l) {
   const double b = model.self_weight();
+  const double h = model.acceleration() * b;
   Matrix8 A = Matrix8::Zero();
   A(kUx, kUy) = k;   A(kUx, kFx) = model.a_N();                      // u'   = k v + a_N N
   A(kUy, kUx) = -k;  A(kUy, kPsi) = 1.0; A(kUy, kFy) = model.a_V();  // v'   = -k u + psi + a_V V
   A(kPsi, kM) = 1.0;                                                 // psi' = M
-  A(kFx, kFy) = k;   A(kFx, kSin) = b;                               // N'   = k V + b sn
-  A(kFy, kFx) = -k;  A(kFy, kCos) = b;                               // V'   = -k N + b c
+  A(kFx, kFy) = k;   A(kFx, kSin) = b;  A(kFx, kCos) = -h;           // N'   = k V + b sn - h c
+  A(kFy, kFx) = -k;  A(kFy, kCos) = b;  A(kFy, kSin) = h;            // V'   = -k N + b c + h sn
   A(kM, kFy) = -1.0;                                                 // M'   = -V
   A(kCos, kSin) = -k;                                                // c'   = -k sn
   A(kSin, kCos) = k;                                                 // sn'  = k c
@@ -101,8 +103,9 @@ Solution solve_closed_form(std::shared_ptr<const ArchModel> model, const Options
   if (arcs.empty() || !model->self_weight_only_distributed()) {
     sol.status = Status::not_applicable;
     sol.message = arcs.empty() ? "closed form needs a piecewise-circular curve; " + model->curve().family() + " is not"
-                               : "closed form treats the self-weight and point loads exactly, not a live load or "
-                                 "fill (their load per axis length is not constant on an arc)";
+                               : "closed form treats the self-weight (with its horizontal acceleration) and point "
+                                 "loads exactly, not a live load or fill (their load per axis length is not constant "
+                                 "on an arc)";
     return sol;
   }
   // Pieces: the arcs, cut at the point loads and the hinge; one exponential each.

@@ -56,7 +56,7 @@ class NoTensionSystem final : public OdeSystem {
     dy[kUx] = ss.eps * c - rot * sn;
     dy[kUy] = ss.eps * sn + rot * c;
     dy[kPsi] = ss.kappa;
-    dy[kFx] = 0;
+    dy[kFx] = 0.0 - model_.horizontal_load(s);  // +0 without a horizontal load
     dy[kFy] = model_.load(s);
     dy[kM] = sn * y[kFx] - c * y[kFy];
     if (Y.cols() > 1) dY.rightCols(Y.cols() - 1).noalias() = jacobian(model_, c, sn, ss) * Y.rightCols(Y.cols() - 1);
@@ -75,31 +75,39 @@ class NoTensionSystem final : public OdeSystem {
   double t_;
 };
 
-// The statics on a grid: with the springing forces (Fx0, Fy0, M0), Fx = Fx0, Fy = Fy0 + B(s),
-// M = M0 + Fx0 y(s) - Fy0 x(s) - C(s), B the load up to s (point loads included), C = int c B ds.
+// The statics on a grid: with the springing forces (Fx0, Fy0, M0), Fx = Fx0 - H(s), Fy = Fy0 + B(s),
+// M = M0 + Fx0 y(s) - Fy0 x(s) - C(s), B the vertical load up to s (point loads included), H the
+// horizontal one (0 without a horizontal acceleration), C = int (c B + sn H) ds.
 struct Statics {
-  std::vector<double> c, sn, x, y, B, C;
+  std::vector<double> c, sn, x, y, B, C, H;
   double t = 0;
   Statics(const ArchModel& model) : t(model.scene().thickness / model.scales().length) {
     const double S = model.length(), L = model.scales().length;
     const auto& jumps = model.jumps();
     std::size_t next_jump = 0;
-    double B_prev = 0, C_prev = 0, s_prev = 0, c_prev = 0;
+    double B_prev = 0, C_prev = 0, s_prev = 0, c_prev = 0, H_prev = 0, sn_prev = 0;
+    const bool horizontal = model.acceleration() != 0;
     for (int i = 0; i < kStations; ++i) {
       const double s = S * i / (kStations - 1);
       const CurvePoint p = model.curve().at(s * L);
       // Trapezoid in s for the distributed load, then the point loads passed.
       double Bi = i == 0 ? 0.0 : B_prev + 0.5 * (model.load(s_prev) + model.load(s)) * (s - s_prev);
       while (next_jump < jumps.size() && jumps[next_jump].s <= s) Bi += jumps[next_jump++].force;
-      const double ci = std::cos(p.theta);
-      const double Ci = i == 0 ? 0.0 : C_prev + 0.5 * (c_prev * B_prev + ci * Bi) * (s - s_prev);
+      const double ci = std::cos(p.theta), sni = std::sin(p.theta);
+      double Ci = i == 0 ? 0.0 : C_prev + 0.5 * (c_prev * B_prev + ci * Bi) * (s - s_prev);
+      double Hi = 0;
+      if (horizontal && i > 0) {
+        Hi = H_prev + 0.5 * (model.horizontal_load(s_prev) + model.horizontal_load(s)) * (s - s_prev);
+        Ci += 0.5 * (sn_prev * H_prev + sni * Hi) * (s - s_prev);
+      }
       c.push_back(ci);
-      sn.push_back(std::sin(p.theta));
+      sn.push_back(sni);
+      H.push_back(Hi);
       x.push_back(p.x / L);
       y.push_back(p.y / L);
       B.push_back(Bi);
       C.push_back(Ci);
-      B_prev = Bi, C_prev = Ci, s_prev = s, c_prev = ci;
+      B_prev = Bi, C_prev = Ci, s_prev = s, c_prev = ci, H_prev = Hi, sn_prev = sni;
     }
   }
   // The margin as a function of M0 alone at fixed (Fx, Fy0), the same number as margin(Fx, Fy0, M0):
@@ -119,7 +127,7 @@ struct Statics {
     out.moment.resize(static_cast<Eigen::Index>(c.size()));
     out.inverse.resize(static_cast<Eigen::Index>(c.size()));
     for (std::size_t i = 0; i < c.size(); ++i) {
-      const double P = -(c[i] * Fx + sn[i] * (Fy0 + B[i]));
+      const double P = -(c[i] * (Fx - H[i]) + sn[i] * (Fy0 + B[i]));
       if (!(P > 0)) {  // under tension the margin does not depend on M0
         out.tension = true;
         out.tension_margin = margin(Fx, Fy0, 0.0);
@@ -137,7 +145,7 @@ struct Statics {
     bool tension = false;
     for (std::size_t i = 0; i < c.size(); ++i) {
       const double Fy = Fy0 + B[i];
-      const double P = -(c[i] * Fx + sn[i] * Fy);
+      const double P = -(c[i] * (Fx - H[i]) + sn[i] * Fy);
       least_P = std::min(least_P, P);
       if (!(P > 0)) {
         tension = true;

@@ -51,14 +51,15 @@ const KronrodRule& kronrod_rule() {
 }
 
 // The known functions of s the forces are made of (scaled): with the springing's forces (Fx0, Fy0, M0),
-//   Fx = Fx0,  Fy = Fy0 + B(s),  M = M0 + Fx0 (y - y0) - Fy0 (x - x0) - C(s),
-// B the load from 0 to s (point loads included, one at s = 0 too), C = int_0^s cos(theta) B ds. On each
-// piece between the model's breakpoints (where b and theta are smooth, and B jumps at point loads) B and
-// C are Chebyshev series, built by the Clenshaw-Curtis cumulative integral and doubled in degree until
+//   Fx = Fx0 - H(s),  Fy = Fy0 + B(s),  M = M0 + Fx0 (y - y0) - Fy0 (x - x0) - C(s),
+// B the vertical load from 0 to s (point loads included, one at s = 0 too), H the horizontal load from 0
+// to s (0 without a horizontal acceleration), C = int_0^s (cos(theta) B + sin(theta) H) ds. On each
+// piece between the model's breakpoints (where b, h and theta are smooth, and B jumps at point loads) B,
+// H and C are Chebyshev series, built by the Clenshaw-Curtis cumulative integral and doubled in degree until
 // their last coefficients fall to round-off: nested integrals of known functions, exact to round-off.
 // The axis point and angle come from the curve itself.
 struct Point {
-  double x = 0, y = 0, c = 1, sn = 0, B = 0, C = 0;
+  double x = 0, y = 0, c = 1, sn = 0, B = 0, C = 0, H = 0;
 };
 
 class Geometry {
@@ -67,12 +68,13 @@ class Geometry {
     knots_ = {0.0};
     for (double b : model.breakpoints()) knots_.push_back(b);
     knots_.push_back(model.length());
-    double B = jumps_at(0.0), C = 0;
+    double B = jumps_at(0.0), C = 0, H = 0;
     for (std::size_t k = 0; k + 1 < knots_.size(); ++k) {
-      pieces_.push_back(build_piece(knots_[k], knots_[k + 1], B, C));
+      pieces_.push_back(build_piece(knots_[k], knots_[k + 1], B, C, H));
       const Piece& p = pieces_.back();
       B = chebyshev_series(p.B.data(), p.degree, 1.0) + jumps_at(knots_[k + 1]);
       C = chebyshev_series(p.C.data(), p.degree, 1.0);
+      if (horizontal()) H = chebyshev_series(p.H.data(), p.degree, 1.0);
     }
     B_end_ = B;  // after a point load at the end (the end state's Fy, as the shooting's yS)
     start_ = at(0.0, 0);
@@ -92,7 +94,8 @@ class Geometry {
     const CurvePoint q = model_.curve().at(s * L);
     const double u = std::clamp((2 * s - p.a - p.b) / (p.b - p.a), -1.0, 1.0);
     const Eigen::Array2d BC = chebyshev_series(p.B.data(), p.C.data(), p.degree, u);
-    return {q.x / L, q.y / L, std::cos(q.theta), std::sin(q.theta), BC[0], BC[1]};
+    const double H = horizontal() ? chebyshev_series(p.H.data(), p.degree, u) : 0.0;
+    return {q.x / L, q.y / L, std::cos(q.theta), std::sin(q.theta), BC[0], BC[1], H};
   }
   const Point& start() const { return start_; }
   const Point& end() const { return end_; }
@@ -103,51 +106,65 @@ class Geometry {
   struct Piece {
     double a = 0, b = 0;
     int degree = 0;
-    Eigen::VectorXd B, C;  // Chebyshev coefficients on [a, b]
+    Eigen::VectorXd B, C, H;  // Chebyshev coefficients on [a, b] (H only with a horizontal load)
   };
+  bool horizontal() const { return model_.acceleration() != 0; }
   double jumps_at(double s) const {
     double f = 0;
     for (const PointJump& j : model_.jumps())
       if (j.s == s) f += j.force;
     return f;
   }
-  Piece build_piece(double a, double b, double B_a, double C_a) {
+  Piece build_piece(double a, double b, double B_a, double C_a, double H_a) {
     Piece p;
     p.a = a;
     p.b = b;
     const double h = 0.5 * (b - a);
     for (int degree = 16;; degree *= 2) {
       const ChebyshevRule& rule = chebyshev_rule(degree);
-      Eigen::VectorXd load(degree + 1), cosine(degree + 1);
+      Eigen::VectorXd load(degree + 1), cosine(degree + 1), push(degree + 1), sine(degree + 1);
       // The ends' values are the one-sided limits from inside the piece (a live load starts or stops at
       // a knot, a pointed crown turns there, and angle() gives the value from the left): extrapolated
       // linearly from 1e-9 and 2e-9 of the piece inside, where b and theta are smooth (error of order
       // 1e-18 of the piece's second derivatives).
       const double inward = 1e-9 * (b - a);
       auto sample = [&](double s, int i) {
+        const double theta = model_.theta(s);
         load[i] = model_.load(s);
-        cosine[i] = std::cos(model_.theta(s));
+        cosine[i] = std::cos(theta);
+        if (!horizontal()) return;
+        push[i] = model_.horizontal_load(s);
+        sine[i] = std::sin(theta);
       };
       for (int i = 1; i < degree; ++i) sample(0.5 * (a + b) + h * rule.node[i], i);
       for (auto [i, end, step] : {std::tuple{0, a, inward}, std::tuple{degree, b, -inward}}) {
         sample(end + 2 * step, i);
-        const double load2 = load[i], cosine2 = cosine[i];
+        const double load2 = load[i], cosine2 = cosine[i], push2 = push[i], sine2 = sine[i];
         sample(end + step, i);
         load[i] = 2 * load[i] - load2;
         cosine[i] = 2 * cosine[i] - cosine2;
+        push[i] = 2 * push[i] - push2;
+        sine[i] = 2 * sine[i] - sine2;
       }
       evaluations_ += degree + 3;
       const Eigen::VectorXd Bv = (B_a + (h * (rule.integration * load)).array()).matrix();
-      const Eigen::VectorXd Cv = (C_a + (h * (rule.integration * cosine.cwiseProduct(Bv))).array()).matrix();
+      Eigen::VectorXd moment = cosine.cwiseProduct(Bv), Hv;
+      if (horizontal()) {
+        Hv = (H_a + (h * (rule.integration * push)).array()).matrix();
+        moment += sine.cwiseProduct(Hv);
+      }
+      const Eigen::VectorXd Cv = (C_a + (h * (rule.integration * moment)).array()).matrix();
       p.degree = degree;
       p.B = rule.to_coefficients * Bv;
       p.C = rule.to_coefficients * Cv;
+      if (horizontal()) p.H = rule.to_coefficients * Hv;
       // Converged when the last two coefficients of both are at round-off of the largest.
       auto resolved = [](const Eigen::VectorXd& a) {
         const Eigen::Index n = a.size();
         return std::max(std::abs(a[n - 1]), std::abs(a[n - 2])) <= 4e-16 * a.cwiseAbs().maxCoeff() * std::sqrt(double(n));
       };
-      if ((resolved(p.B) && resolved(p.C)) || degree == kMaxChebyshevDegree) return p;
+      if ((resolved(p.B) && resolved(p.C) && (!horizontal() || resolved(p.H))) || degree == kMaxChebyshevDegree)
+        return p;
     }
   }
 
@@ -172,9 +189,9 @@ struct Forces {
 };
 Forces forces_at(const Point& g, const Point& origin, const StateVector& y0) {
   Forces f;
-  f.Fx = y0[kFx];
+  f.Fx = y0[kFx] - g.H;
   f.Fy = y0[kFy] + g.B;
-  f.M = y0[kM] + f.Fx * (g.y - origin.y) - y0[kFy] * (g.x - origin.x) - g.C;
+  f.M = y0[kM] + y0[kFx] * (g.y - origin.y) - y0[kFy] * (g.x - origin.x) - g.C;
   f.N = g.c * f.Fx + g.sn * f.Fy;
   f.V = -g.sn * f.Fx + g.c * f.Fy;
   return f;
@@ -189,8 +206,9 @@ bool admissible(const Forces& f, double t) { return f.N < 0 && std::abs(f.M) < -
 void node_noise(const Point& g, const Point& origin, const StateVector& y0, const Forces& F, const SectionStrain& ss,
                 double* noise) {
   constexpr double kUnits = 4 * std::numeric_limits<double>::epsilon();
-  const double dN = kUnits * (std::abs(g.c * F.Fx) + std::abs(g.sn * F.Fy) + std::abs(g.sn * g.B));
-  const double dM = kUnits * (std::abs(y0[kM]) + std::abs(F.Fx * (g.y - origin.y)) +
+  const double dN =
+      kUnits * (std::abs(g.c * F.Fx) + std::abs(g.c * g.H) + std::abs(g.sn * F.Fy) + std::abs(g.sn * g.B));
+  const double dM = kUnits * (std::abs(y0[kM]) + std::abs(y0[kFx] * (g.y - origin.y)) +
                               std::abs(y0[kFy] * (g.x - origin.x)) + std::abs(g.C));
   const double dk = std::abs(ss.kappa_N) * dN + std::abs(ss.kappa_M) * dM;
   const double de = std::abs(ss.eps_N) * dN + std::abs(ss.eps_M) * dM;
@@ -236,7 +254,7 @@ StateVector state_at(const Point& g, double B, const Point& origin, const StateV
   y[kPsi] = y0[kPsi] + I[kKappa];
   y[kUx] = y0[kUx] + I[kGx] - y0[kPsi] * dy - (I[kKappa] * g.y - I[kKappaY]);
   y[kUy] = y0[kUy] + I[kGy] + y0[kPsi] * dx + (I[kKappa] * g.x - I[kKappaX]);
-  y[kFx] = y0[kFx];
+  y[kFx] = y0[kFx] - g.H;
   y[kFy] = y0[kFy] + B;
   y[kM] = y0[kM] + y0[kFx] * dy - y0[kFy] * dx - g.C;
   return y;

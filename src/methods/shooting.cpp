@@ -16,8 +16,8 @@
 namespace ogive {
 namespace {
 
-// ArchModel's problem as the integrator's system: Y' = A(theta(s)) Y + b(s) e_Fy e_last^T (the load
-// rides on the last column: the particular solution, or the one state of a field's integration).
+// ArchModel's problem as the integrator's system: Y' = A(theta(s)) Y + (b(s) e_Fy - h(s) e_Fx) e_last^T
+// (the load rides on the last column: the particular solution, or the one state of a field's integration).
 class ArchSystem final : public OdeSystem {
  public:
   explicit ArchSystem(const ArchModel& model) : model_(model) {}
@@ -25,6 +25,7 @@ class ArchSystem final : public OdeSystem {
     const ArchModel::SystemEntries A = model_.system_entries(model_.theta(s));
     for (Eigen::Index j = 0; j < Y.cols(); ++j) ArchModel::apply_system_matrix(A, Y.col(j).data(), dY.col(j).data());
     dY(kFy, Y.cols() - 1) += model_.load(s);
+    if (model_.acceleration() != 0) dY(kFx, Y.cols() - 1) -= model_.horizontal_load(s);
     return true;
   }
   SystemMatrix jacobian_block(double s, const Eigen::Ref<const OdeMatrix>&) const override {
@@ -61,7 +62,7 @@ class SegmentsSystem final : public OdeSystem {
       const double theta = model_.theta(s), c = std::cos(theta), sn = std::sin(theta);
       const Eigen::Index last = g.column + g.width - 1;
       for (Eigen::Index j = g.column; j < last; ++j) model_.derivative(c, sn, Y.col(j).data(), dY.col(j).data(), 0.0);
-      model_.derivative(c, sn, Y.col(last).data(), dY.col(last).data(), model_.load(s));
+      model_.derivative(c, sn, Y.col(last).data(), dY.col(last).data(), model_.load(s), model_.horizontal_load(s));
       dY.middleCols(g.column, g.width) *= g.length;
     }
     return true;

@@ -208,24 +208,30 @@ void ArchModel::sum_loads() {
     total_load_ += j.force;
     load_moment_ += j.force * curve_->at(j.s * L).x / L;
   }
-  if (!loads.live.empty() || !loads.fills.empty()) {
+  // The horizontal load: the self-weight's total exactly, the fill's and every moment h y by Gauss-Legendre.
+  const double a = acceleration();
+  total_horizontal_load_ = a * self_weight_ * length_;
+  if (!loads.live.empty() || !loads.fills.empty() || a != 0) {
     std::vector<double> knots{0.0};
     knots.insert(knots.end(), breakpoints_.begin(), breakpoints_.end());
     knots.push_back(length_);
     constexpr int kPanels = 8;
     for (std::size_t k = 0; k + 1 < knots.size(); ++k)
       for (int i = 0; i < kPanels; ++i) {
-        const double a = knots[k] + (knots[k + 1] - knots[k]) * i / kPanels;
-        const double b = knots[k] + (knots[k + 1] - knots[k]) * (i + 1) / kPanels;
-        const Eigen::Vector2d part = gauss_legendre_integral<16>(
+        const double lo = knots[k] + (knots[k + 1] - knots[k]) * i / kPanels;
+        const double hi = knots[k] + (knots[k + 1] - knots[k]) * (i + 1) / kPanels;
+        const Eigen::Vector3d part = gauss_legendre_integral<16>(
             [&](double s) {
               const CurvePoint p = curve_->at(s * L);
               const double q = distributed_load(s, p);
-              return Eigen::Vector2d(q, q * p.x / L);
+              const double fill = a != 0 ? a * fill_load(s, p) : 0.0;
+              const double moment = q * p.x / L + (a != 0 ? (a * self_weight_ + fill) * p.y / L : 0.0);
+              return Eigen::Vector3d(q, moment, fill);
             },
-            a, b);
+            lo, hi);
         total_load_ += part(0);
         load_moment_ += part(1);
+        total_horizontal_load_ += part(2);
       }
   }
 }
@@ -241,15 +247,35 @@ double ArchModel::distributed_load(double s, const CurvePoint& p) const {
   if (extrados_) {
     const Extrados::Height e = extrados_->over(p, s * L);
     if (e.over)
-      for (const FillLoad& f : scene_.loads.fills)
-        q += f.density * scene_.material.gravity * std::max(0.0, f.height_ratio * L - e.y) * c;
+      for (const FillLoad& f : scene_.loads.fills) q += fill_weight(f, e.y, c);
   }
   return q / w;
+}
+
+double ArchModel::fill_weight(const FillLoad& f, double extrados_y, double c) const {
+  return f.density * scene_.material.gravity * std::max(0.0, f.height_ratio * scales_.length - extrados_y) * c;
+}
+
+double ArchModel::fill_load(double s, const CurvePoint& p) const {
+  if (!extrados_) return 0.0;
+  const Extrados::Height e = extrados_->over(p, s * scales_.length);
+  if (!e.over) return 0.0;
+  const double c = std::cos(p.theta);
+  double q = 0;
+  for (const FillLoad& f : scene_.loads.fills) q += fill_weight(f, e.y, c);
+  return q / (scales_.force / scales_.length);
 }
 
 double ArchModel::load(double s) const {
   if (uniform_) return self_weight_;
   return self_weight_ + distributed_load(s, curve_->at(s * scales_.length));
+}
+
+double ArchModel::horizontal_load(double s) const {
+  const double a = acceleration();
+  if (a == 0) return 0.0;
+  if (!extrados_) return a * self_weight_;
+  return a * (self_weight_ + fill_load(s, curve_->at(s * scales_.length)));
 }
 
 ArchModel::SystemEntries ArchModel::system_entries(double theta) const {
@@ -357,8 +383,9 @@ double ArchModel::equilibrium_residual(const StateVector& y0, const StateVector&
   const double vertical = yS[kFy] - y0[kFy] - total_load_;
   // Moments about the left springing: the end's force and couple, the springing's couple, the loads.
   const double moment = xS * yS[kFy] - yS_pos * yS[kFx] + yS[kM] - y0[kM] - load_moment_;
-  const double horizontal = yS[kFx] - y0[kFx];
-  const double scale = std::max({std::abs(total_load_) + std::abs(crown_load_), std::abs(y0[kFy]), std::abs(yS[kFy]),
+  const double horizontal = yS[kFx] - y0[kFx] + total_horizontal_load_;
+  const double scale = std::max({std::abs(total_load_) + std::abs(crown_load_) + std::abs(total_horizontal_load_),
+                                 std::abs(y0[kFy]), std::abs(yS[kFy]),
                                  std::abs(y0[kFx]), std::numeric_limits<double>::min()});
   return std::max({std::abs(vertical), std::abs(horizontal), std::abs(moment) / std::max(xS, 1e-300)}) / scale;
 }

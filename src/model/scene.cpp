@@ -33,7 +33,12 @@ double Scene::reference_load_per_length() const {
   for (const PointLoad& p : loads.points) other += std::abs(p.force);
   for (const LiveLoad& q : loads.live) other += std::abs(q.intensity) * (q.to - q.from) * L;
   for (const FillLoad& f : loads.fills) other += f.density * material.gravity * f.height_ratio * L * L;
-  return weight_per_length() + other / curve->whole_length();
+  const double reference = weight_per_length() + other / curve->whole_length();
+  if (horizontal_acceleration == 0) return reference;
+  // The horizontal load of the masses too: a large acceleration keeps the scaled loads of order one.
+  double fill = 0;
+  for (const FillLoad& f : loads.fills) fill += f.density * material.gravity * f.height_ratio * L * L;
+  return reference + std::abs(horizontal_acceleration) * (weight_per_length() + fill / curve->whole_length());
 }
 
 namespace {
@@ -77,7 +82,7 @@ bool mirror_invariant(const std::vector<Load>& loads) {
 }  // namespace
 
 bool Scene::symmetric() const {
-  if (!curve || curve->extent() != CurveExtent::half) return false;
+  if (!curve || curve->extent() != CurveExtent::half || horizontal_acceleration != 0) return false;
   if (left.kind != right.kind || left.spread != right.spread || left.settlement != right.settlement ||
       left.rotation != -right.rotation)
     return false;
@@ -98,6 +103,7 @@ void Scene::validate() const {
   if (!std::isfinite(nu) || !(nu > -1.0 && nu <= 0.5)) refuse("poisson_ratio", "must lie in (-1, 0.5]", nu);
   if (material.plane_strain && nu == 0.5)
     refuse("poisson_ratio", "must be < 0.5 in plane strain (E / (1 - nu^2) stays finite)", nu);
+  require_finite("horizontal_acceleration", horizontal_acceleration);
   validate_support(left, "left_spread", "left_settlement", "left_rotation");
   validate_support(right, "right_spread", "right_settlement", "right_rotation");
   for (const PointLoad& p : loads.points) {
@@ -127,10 +133,11 @@ void Scene::validate() const {
     for (double scale : scales)
       if (!std::isfinite(scale) || !(scale > 0))
         throw std::invalid_argument(fmt::format(
-            "density, gravity, thickness and youngs_modulus: the weight per length w = {} N/m and the bending "
+            "density, gravity, thickness{}: the weight per length w = {} N/m{} and the bending "
             "stiffness EI = {} N m^2 with span {} m give force, moment or displacement scales (w L, w L^2, "
             "w L^4 / EI) beyond the range of a double",
-            w, EI, L));
+            horizontal_acceleration != 0 ? ", youngs_modulus and horizontal_acceleration" : " and youngs_modulus", w,
+            horizontal_acceleration != 0 ? " (with a times the masses)" : "", EI, L));
     for (const auto& [field, value] : {std::pair{"left_spread", left.spread}, {"left_settlement", left.settlement},
                                         {"right_spread", right.spread}, {"right_settlement", right.settlement}})
       if (!std::isfinite(value / displacement)) refuse(field, "must be finite in units of w L^4 / EI", value);

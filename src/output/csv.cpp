@@ -83,21 +83,44 @@ CsvRow& CsvRow::add(std::string_view text) {
   return *this;
 }
 
-std::string CsvRow::take() {
-  std::string out = std::move(line_);
-  line_.clear();
-  fields_ = 0;
-  index_ = 0;
-  mark_ = {};
-  recent_count_ = recent_next_ = 0;
+// The fields are formatted in the full order (so that a caller adds them as it computes them) and
+// moved into the selection's order once the row is whole.
+std::string CsvRow::ordered_line() const {
+  std::string out;
+  out.reserve(line_.size() + 1);
+  for (std::size_t k = 0; k < order_->size(); ++k) {
+    const std::size_t f = (*order_)[k];
+    if (f >= starts_.size()) continue;  // a row built short of the selection (never, for whole rows)
+    const std::size_t begin = starts_[f];
+    const std::size_t end = f + 1 < starts_.size() ? starts_[f + 1] - 1 : line_.size();
+    if (k > 0) out += ',';
+    out.append(line_, begin, end - begin);
+  }
   out += '\n';
   return out;
 }
 
+std::string CsvRow::take() {
+  std::string out;
+  if (order_) {
+    out = ordered_line();
+  } else {
+    out = std::move(line_);
+    out += '\n';
+  }
+  line_.clear();
+  starts_.clear();
+  fields_ = 0;
+  index_ = 0;
+  mark_ = {};
+  recent_count_ = recent_next_ = 0;
+  return out;
+}
+
 std::string CsvRow::take_to_mark() {
-  std::string out = line_;
-  out += '\n';
+  std::string out = order_ ? ordered_line() : line_ + '\n';
   line_.resize(mark_.size);
+  starts_.resize(mark_.starts);
   forget_recent_beyond(mark_.size);
   index_ = mark_.index;
   fields_ = mark_.fields;

@@ -274,6 +274,22 @@ double draw_support_movement(std::string& body, const Scene& scene, const std::v
   return y - 1.6 * font;
 }
 
+// Horizontal acceleration: an arrow above the arch, to the right for a > 0, with its value. Grows
+// `drawn` upwards (the title goes above it).
+void draw_horizontal_acceleration(std::string& body, const Scene& scene, const Frame& frame, Box& drawn) {
+  const double a = scene.horizontal_acceleration;
+  if (a == 0) return;
+  const double font = frame.font, length = 0.12 * frame.W, sign = a > 0 ? 1.0 : -1.0;
+  const double y = drawn.y1 + 1.5 * font, x = 0.5 * (frame.box.x0 + frame.box.x1);
+  body += "<g id=\"horizontal-acceleration\" stroke=\"#1f4e9c\" fill=\"#1f4e9c\">\n";
+  line(body, {x - 0.5 * sign * length, y}, {x + 0.5 * sign * length, y},
+       fmt::format("stroke-width=\"{}\" marker-end=\"url(#arrowhead)\"", 1.5 * frame.stroke));
+  text(body, {x, y + 0.6 * font}, 0.8 * font, "middle",
+       fmt::format("horizontal acceleration a = {:g} g on the self-weight and fill", a));
+  body += "</g>\n";
+  drawn.add({x, y + 1.6 * font});
+}
+
 // Scale bar: a round length near a quarter of the arch's width, ticks at its ends and middle. Returns
 // the new bottom of the drawing.
 double draw_scale_bar(std::string& body, const Frame& frame, double bottom) {
@@ -453,6 +469,7 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
   if (scene.crown_hinge) draw_crown_hinge(body, *scene.curve, frame);
   TitleText title = title_text(scene, solution, options, std::max(drawn.width(), 40 * frame.font) / (0.6 * frame.font));
   title.load_scale = draw_loads(body, scene, outline, frame, drawn, !thrust.empty());
+  draw_horizontal_acceleration(body, scene, frame, drawn);
   double bottom = draw_support_movement(body, scene, ends, frame, drawn, drawn.y0);
   bottom = draw_scale_bar(body, frame, bottom);
   const double title_y = drawn.y1 + title.height(options, frame.font) + 1.5 * frame.font;

@@ -260,13 +260,17 @@ std::vector<ExtraThrustLine> limit_thrust_lines(const LimitResult& r) {
   std::vector<ExtraThrustLine> lines;
   for (const auto& [state, id, name, colour] :
        {std::tuple{&r.min_state, "thrust-line-min", "minimum", "#1e8449"},
-        std::tuple{&r.max_state, "thrust-line-max", "maximum", "#7d3c98"}}) {
+        std::tuple{&r.max_state, "thrust-line-max", "maximum", "#7d3c98"},
+        std::tuple{&r.horizontal_state, "thrust-line-horizontal", "collapse", "#d35400"}}) {
     if (!state->found()) continue;
     ExtraThrustLine line;
     line.id = id;
     line.colour = colour;
-    line.label = fmt::format("{} thrust (limit analysis, rigid voussoirs): H/V = {:.4g}, {} hinges", name,
-                             state->H / r.V, state->hinges.size());
+    line.label = state == &r.horizontal_state
+                     ? fmt::format("collapse at a_c = {:.4g} g (limit analysis, rigid voussoirs): {} hinges",
+                                   state->load_factor, state->hinges.size())
+                     : fmt::format("{} thrust (limit analysis, rigid voussoirs): H/V = {:.4g}, {} hinges", name,
+                                   state->H / r.V, state->hinges.size());
     for (const Eigen::Vector2d& c : state->crossing) line.points.push_back({c.x(), c.y()});
     for (const Hinge& h : state->hinges) line.hinges.push_back({h.point.x(), h.point.y()});
     lines.push_back(std::move(line));

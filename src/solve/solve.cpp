@@ -167,6 +167,7 @@ bool on_one_path(const Scene& a, const Scene& b) {
                            a.curve->rise() == b.curve->rise() && a.curve->max_curvature() == b.curve->max_curvature());
   const Material &m = a.material, &n = b.material;
   return same_curve && a.thickness == b.thickness && a.section == b.section && a.crown_hinge == b.crown_hinge &&
+         a.horizontal_acceleration == b.horizontal_acceleration &&
          m.youngs_modulus == n.youngs_modulus && m.poisson_ratio == n.poisson_ratio && m.density == n.density &&
          m.gravity == n.gravity && m.shear_coefficient == n.shear_coefficient && m.plane_strain == n.plane_strain &&
          same_support(a.left, b.left) && same_support(a.right, b.right) && same_places(a.loads, b.loads) &&

@@ -113,7 +113,7 @@ TEST_CASE("csv: inputs round-trip as typed - decimal ranges - a scene number per
   CHECK(w == std::vector<double>{-1e-3, 0.0, 1e-3, 2e-3});
 }
 
-TEST_CASE("csv: by default the inputs that vary and the results - --columns chooses - --all-columns prints all") {
+TEST_CASE("csv: by default the inputs that vary and the results - --columns chooses, in its order - --all-columns prints all") {
   const Run r = run_command({"thrust", "--eccentricity", "0,1"});
   const auto header = fields(lines(r.out)[0]);
   CHECK(std::find(header.begin(), header.end(), "eccentricity") != header.end());
@@ -122,8 +122,36 @@ TEST_CASE("csv: by default the inputs that vary and the results - --columns choo
     CHECK(std::find(header.begin(), header.end(), name) != header.end());
   CHECK(std::find(header.begin(), header.end(), "max_thrust_eccentricity") == header.end());  // asked by name
   const Run chosen = run_command({"thrust", "--eccentricity", "0,1", "--columns", "H_over_V,eccentricity"});
-  CHECK(lines(chosen.out)[0] == "eccentricity,H_over_V");  // in the output's order
+  CHECK(lines(chosen.out)[0] == "scene,H_over_V,eccentricity");  // scene first, then as given
   CHECK(column(chosen.out, "H_over_V") == column(r.out, "H_over_V"));
+  CHECK(column(chosen.out, "eccentricity") == column(r.out, "eccentricity"));
+  CHECK(lines(run_command({"thrust", "--columns", "H,scene,H"}).out)[0] == "scene,H");  // once each
+  // Every field moves with its name: each row's fields equal those of the full order, by name, in a
+  // command with quoted messages (a failed solve), one with a scene's fields shared by its stations
+  // (profile) and one without a varying input.
+  for (const std::vector<std::string>& command :
+       std::vector<std::vector<std::string>>{{"thrust", "--method", "shooting", "--max-steps", "3"},
+                                             {"profile", "--eccentricity", "0,0.5", "--stations", "5"},
+                                             {"limit", "--joints-count", "101"}}) {
+    auto all = command;
+    all.push_back("--all-columns");
+    const Run full = run_command(all);
+    const auto names = fields(lines(full.out)[0]);
+    std::vector<std::string> reversed(names.rbegin(), names.rend());
+    std::string list;
+    for (const std::string& n : reversed) list += (list.empty() ? "" : ",") + n;
+    auto chosen_all = command;
+    chosen_all.insert(chosen_all.end(), {"--columns", list});
+    const Run backwards = run_command(chosen_all);
+    REQUIRE(backwards.status == full.status);
+    const auto header_back = fields(lines(backwards.out)[0]);
+    REQUIRE(header_back.size() == names.size());
+    CHECK(header_back[0] == "scene");
+    const std::size_t rows = lines(full.out).size();
+    REQUIRE(lines(backwards.out).size() == rows);
+    for (std::size_t row = 1; row < rows; ++row)
+      for (const std::string& n : names) CHECK(column(backwards.out, n, row) == column(full.out, n, row));
+  }
   check_refused({"thrust", "--columns", "H_ovr_V"});
   const Run misspelt = run_command({"thrust", "--columns", "H_ovr_V"});
   CHECK(misspelt.err.find("did you mean 'H_over_V'") != std::string::npos);

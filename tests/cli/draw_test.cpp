@@ -289,3 +289,29 @@ TEST_CASE("draw: a thrust line that runs off keeps the profile's points in order
   CHECK(far >= 1);           // the scene does run off ...
   CHECK(runs.size() == far + 1);  // ... and each dropped station splits the line (none at the ends here)
 }
+
+TEST_CASE("draw --limit: under a horizontal acceleration the collapse line of a_c is ogive limit's, joint by joint") {
+  TempDir dir("ogive_test_draw_horizontal");
+  const std::vector<std::string> scene = {"--eccentricity", "0", "--thickness-ratio", "0.1",
+                                          "--horizontal-acceleration", "0.1"};
+  std::vector<std::string> draw = {"draw", "--limit", "--output", dir / "shaken.svg"};
+  draw.insert(draw.end(), scene.begin(), scene.end());
+  REQUIRE(run_command(draw).status == 0);
+  CHECK(xmllint_accepts(dir / "shaken.svg"));
+  const std::string svg = read_text(dir / "shaken.svg");
+  std::vector<std::string> limit = {"limit", "--thrust-line", "horizontal"};
+  limit.insert(limit.end(), scene.begin(), scene.end());
+  const Run joints = run_command(limit);
+  REQUIRE(joints.status == 0);
+  const auto runs = svg_path_points(svg, "thrust-line-horizontal");
+  REQUIRE(runs.size() == 1);
+  REQUIRE(runs[0].size() + 1 == lines(joints.out).size());
+  for (std::size_t k = 0; k < runs[0].size(); ++k)
+    CHECK(std::abs(runs[0][k].first - std::stod(column(joints.out, "thrust_x", k + 1))) <= ogive::kExact * 10);
+  CHECK(svg.find("collapse at a_c = ") != std::string::npos);
+  // Without an acceleration the drawing has the minimum and maximum lines alone.
+  std::vector<std::string> still = {"draw", "--limit", "--output", dir / "still.svg", "--eccentricity", "0",
+                                    "--thickness-ratio", "0.1"};
+  REQUIRE(run_command(still).status == 0);
+  CHECK(read_text(dir / "still.svg").find("thrust-line-horizontal") == std::string::npos);
+}

@@ -102,6 +102,7 @@ inline const std::vector<CliCase>& cli_cases() {
       {{"thrust", "--method", "closed-form", "--fill-height-ratio", "0.5"}, "--fill-density"},
       {{"thrust", "--method", "closed-form", "--supports", "pinned"}, "--right-settlement-ratio"},
       {{"thrust", "--method", "closed-form", "--eccentricity", "0.5"}, "--left-rotation"},
+      {{"thrust", "--method", "closed-form", "--supports", "pinned"}, "--horizontal-acceleration"},
   };
   return cases;
 }

@@ -486,3 +486,172 @@ TEST_CASE("limit: an analysis does not depend on the analyses its thread made be
   CHECK(after.lp_solves == fresh.lp_solves);
   CHECK(after.ring.joints.size() == fresh.ring.joints.size());
 }
+
+TEST_CASE("limit: under a horizontal acceleration a the three-hinged semicircle is statics: H_left = W/2 (1 - d/R - a)") {
+  // As above, each half ring's weight W/2 acts at its centroid (R -+ d, d) from the left springing's
+  // pin, and a W/2 horizontally at the same points. Moments about the right pin: V_left = W/2 - a W d /
+  // (2R); of the left half about the crown pin (R, R): R H_left = R V_left - (W/2) d - a (W/2) (R - d),
+  // so H_left = (W/2) (1 - d/R - a), whatever the joints.
+  const double R = 5.0, t = 1.5, r_in = R - t / 2, r_out = R + t / 2;
+  const double d = 4.0 * (std::pow(r_out, 3) - std::pow(r_in, 3)) / (3.0 * std::numbers::pi * (r_out * r_out - r_in * r_in));
+  const double half_weight = 0.5 * kGamma * t * std::numbers::pi * R;
+  // (Beyond |a| = 0.1 or so the statically determined thrust line leaves this ring: inadmissible.)
+  for (double a : {-0.1, 0.05, 0.1}) {
+    Scene scene = paper_scene(0.0, t / 10.0);
+    scene.crown_hinge = true;
+    scene.left.kind = scene.right.kind = SupportKind::pinned;
+    scene.horizontal_acceleration = a;
+    const LimitResult r = analyse_limit(scene, {});
+    CAPTURE(a);
+    REQUIRE(r.status == LimitStatus::success);
+    const double H = half_weight * (1.0 - d / R - a);
+    CHECK(std::abs(r.H_min() - H) <= kSameRing * half_weight);
+    CHECK(std::abs(r.H_max() - H) <= kSameRing * half_weight);
+    CHECK(std::abs(r.min_state.V_left - (half_weight - a * 2 * half_weight * d / (2 * R))) <= kSameRing * half_weight);
+  }
+}
+
+TEST_CASE("limit: a horizontal acceleration thickens the thinnest arch, the same either way, and a = 0 is the vertical analysis") {
+  // The semicircle (radial joints): t_min rises with |a| (Alexakis & Makris' tables), -a is the mirror
+  // image of a, and a = 0 gives the analysis without the option, number for number.
+  const LimitResult still = analyse(0.0, 0.15);
+  Scene zero = paper_scene(0.0, 0.15);
+  zero.horizontal_acceleration = 0.0;
+  const LimitResult same = analyse_limit(zero, {});
+  CHECK(same.thickness_min == still.thickness_min);
+  CHECK(same.H_min() == still.H_min());
+  double previous = still.thickness_min;
+  for (double a : {0.05, 0.1, 0.2}) {
+    Scene plus = paper_scene(0.0, 0.15), minus = plus;
+    plus.horizontal_acceleration = a;
+    minus.horizontal_acceleration = -a;
+    const LimitResult p = analyse_limit(plus, {}), m = analyse_limit(minus, {});
+    CAPTURE(a);
+    REQUIRE(p.status == LimitStatus::success);
+    REQUIRE(m.status == LimitStatus::success);
+    CHECK(p.thickness_min > previous);
+    // Each converged in the joints to kConverged, on rings refined next to mirrored hinges.
+    CHECK(close(p.thickness_min, m.thickness_min, kConverged));
+    // The mirror image: a state under -a is the mirror of one under a, whose left thrust is the other's
+    // right thrust, H_left + a W (W the weight): so H_min(-a) = H_min(a) + a W, and the same for H_max.
+    const double W = 2 * p.V;
+    CHECK(std::abs(m.H_min() - (p.H_min() + a * W)) <= kConverged * W);
+    CHECK(std::abs(m.H_max() - (p.H_max() + a * W)) <= kConverged * W);
+    previous = p.thickness_min;
+  }
+}
+
+TEST_CASE("limit: under a horizontal acceleration the collapse load factor is its mechanism's (static = kinematic)") {
+  // The virtual work of the collapse mechanism counts the horizontal dead loads too: without them the
+  // kinematic multiplier would differ from the LP's.
+  for (double a : {-0.05, 0.05}) {
+    Scene scene = paper_scene(0.5, 0.15);
+    scene.loads.points.push_back({2e5, 0.25});
+    scene.horizontal_acceleration = a;
+    const LimitResult r = analyse_limit(scene, {});
+    CAPTURE(a);
+    REQUIRE(r.status == LimitStatus::success);
+    REQUIRE(r.collapse_state.hinges.size() == 4);
+    CHECK(close(r.load_factor(), r.load_factor_mechanism, kVirtualWork));
+  }
+}
+
+namespace {
+
+LimitResult shaken_analysis(double eps, double t_over_L, JointOrientation joints = JointOrientation::radial,
+                            int joints_count = kDefaultJointsCount) {
+  LimitOptions o;
+  o.joints = joints;
+  o.joints_count = joints_count;
+  o.horizontal_load_factor = true;
+  return analyse_limit(paper_scene(eps, t_over_L), o);
+}
+
+// Relative difference of accelerations, against 1 % of g at least (a_c vanishes at t_min).
+double acceleration_gap(double a, double b) { return std::abs(a - b) / std::max({std::abs(a), std::abs(b), 0.01}); }
+
+}  // namespace
+
+TEST_CASE("limit: the collapse acceleration a_c is 0 at t_min, rises about linearly above, and static = kinematic") {
+  // Semicircle, radial joints: t_min / R = 0.1075 (Milankovitch), t/L = t/(2R).
+  const LimitResult at_min = shaken_analysis(0.0, 0.15);
+  REQUIRE(at_min.status == LimitStatus::success);
+  const double t_min = at_min.thickness_min / 10.0;  // t/L
+  CHECK(std::abs(2 * t_min - 0.1075) <= 5e-4);
+  const LimitResult just_above = shaken_analysis(0.0, t_min * (1 + 1e-6));
+  REQUIRE(just_above.status == LimitStatus::success);
+  CHECK(just_above.horizontal_load_factor() >= 0.0);
+  CHECK(just_above.horizontal_load_factor() <= 1e-4);
+  // Above it: increments of a_c over equal steps of t differ by a fifth at most.
+  std::vector<double> a_c;
+  for (double f : {1.2, 1.4, 1.6}) {
+    const LimitResult r = shaken_analysis(0.0, t_min * f);
+    REQUIRE(r.status == LimitStatus::success);
+    a_c.push_back(r.horizontal_load_factor());
+    // The virtual work of the mechanism through the static solution's hinges gives the same a_c.
+    CHECK(close(r.horizontal_load_factor(), r.horizontal_load_factor_mechanism, 1e-9));
+    CHECK(r.horizontal_state.hinges.size() == 4);
+  }
+  CHECK(a_c[0] > 0);
+  CHECK(a_c[1] > a_c[0]);
+  CHECK(std::abs((a_c[2] - a_c[1]) - (a_c[1] - a_c[0])) <= 0.2 * (a_c[1] - a_c[0]));
+  // Below t_min the arch cannot stand its own weight: no a_c.
+  CHECK(std::isnan(shaken_analysis(0.0, t_min * 0.95).horizontal_load_factor()));
+}
+
+TEST_CASE("limit: vertical joints give a lower a_c than radial ones for the semicircle (Alexakis & Makris)") {
+  for (double t_over_L : {0.08, 0.15}) {
+    const LimitResult radial = shaken_analysis(0.0, t_over_L);
+    const LimitResult vertical = shaken_analysis(0.0, t_over_L, JointOrientation::vertical);
+    CAPTURE(t_over_L);
+    REQUIRE(radial.status == LimitStatus::success);
+    REQUIRE(vertical.status == LimitStatus::success);
+    CHECK(vertical.horizontal_load_factor() < radial.horizontal_load_factor());
+  }
+  // The thinnest semicircle with vertical joints: t_min / R = 0.1095 (Makris & Alexakis).
+  CHECK(std::abs(2 * shaken_analysis(0.0, 0.15, JointOrientation::vertical).thickness_min / 10.0 - 0.1095) <= 5e-4);
+}
+
+TEST_CASE("limit: every admissible four-hinge mechanism on a coarse grid gives at least a_c (kinematic theorem)") {
+  for (double eps : {0.0, 0.5}) {
+    const LimitResult r = shaken_analysis(eps, 0.12);
+    REQUIRE(r.status == LimitStatus::success);
+    const double a_c = r.horizontal_load_factor();
+    const Ring& ring = r.ring;
+    // Every 16th joint, and each hinge on either face: the mechanisms a coarse search would try.
+    std::vector<int> grid;
+    for (int j = 0; j < static_cast<int>(ring.joints.size()); j += 16) grid.push_back(j);
+    grid.push_back(static_cast<int>(ring.joints.size()) - 1);
+    auto hinge = [&](int j, int face) {
+      const Joint& joint = ring.joints[static_cast<std::size_t>(j)];
+      return face == 0 ? Hinge{j, Face::intrados, joint.intrados} : Hinge{j, Face::extrados, joint.extrados};
+    };
+    int admissible = 0;
+    for (std::size_t a = 0; a < grid.size(); ++a)
+      for (std::size_t b = a + 1; b < grid.size(); ++b)
+        for (std::size_t c = b + 1; c < grid.size(); ++c)
+          for (std::size_t d = c + 1; d < grid.size(); ++d)
+            for (int faces = 0; faces < 16; ++faces) {
+              const std::vector<Hinge> h = {hinge(grid[a], faces & 1), hinge(grid[b], (faces >> 1) & 1),
+                                            hinge(grid[c], (faces >> 2) & 1), hinge(grid[d], (faces >> 3) & 1)};
+              const double m = mechanism_horizontal_load_factor(ring, h);
+              if (std::isnan(m) || m < 0) continue;  // not admissible, or the acceleration the other way
+              ++admissible;
+              CHECK(m >= a_c * (1 - 1e-9));
+            }
+    CAPTURE(eps);
+    CHECK(admissible > 10);
+  }
+}
+
+TEST_CASE("limit: a_c converges with the starting joints") {
+  // The analysis refines next to the hinges until a_c moves by less than kLimitTolerance: from 41, 101
+  // or 201 starting joints the same a_c to that.
+  const LimitResult fine = shaken_analysis(0.5, 0.1);
+  for (int count : {41, 101}) {
+    const LimitResult coarse = shaken_analysis(0.5, 0.1, JointOrientation::radial, count);
+    CAPTURE(count);
+    REQUIRE(coarse.status == LimitStatus::success);
+    CHECK(acceleration_gap(coarse.horizontal_load_factor(), fine.horizontal_load_factor()) <= 2 * kConverged);
+  }
+}

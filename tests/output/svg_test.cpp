@@ -42,6 +42,24 @@ TEST_CASE("svg: drawing options are checked - misuse throws naming the field") {
   CHECK(bare.find("no solution: integrator_failure: flag -4 at s = 1 m") != std::string::npos);
 }
 
+TEST_CASE("svg: a horizontal acceleration is drawn as an arrow above the arch, pointing its way") {
+  Scene scene = paper_scene(0.5);
+  CHECK(arch_svg(scene, solve(scene)).find("horizontal-acceleration") == std::string::npos);
+  for (double a : {0.15, -0.15}) {
+    scene.horizontal_acceleration = a;
+    const std::string svg = arch_svg(scene, solve(scene));
+    const std::size_t group = svg.find("<g id=\"horizontal-acceleration\"");
+    REQUIRE(group != std::string::npos);
+    CHECK(svg.find(a > 0 ? "a = 0.15 g" : "a = -0.15 g", group) != std::string::npos);
+    // The arrow's head (x2) lies on the side the acceleration points to.
+    const std::size_t x1 = svg.find("x1=\"", group), x2 = svg.find("x2=\"", group);
+    REQUIRE(x1 != std::string::npos);
+    REQUIRE(x2 != std::string::npos);
+    const double from = std::stod(svg.substr(x1 + 4)), to = std::stod(svg.substr(x2 + 4));
+    CHECK((to - from) * a > 0);
+  }
+}
+
 TEST_CASE("svg: point-load arrows are to one scale - twice the load, twice the arrow - landing on the extrados") {
   Scene scene = paper_scene(0.5);
   scene.loads.points = {{1e4, 0.25}, {2e4, 0.75}};

@@ -73,4 +73,37 @@ inline double castigliano_pointed_H(double span, double eccentricity, double thi
   return (a11 * b2 - a12 * b1) / (a11 * a22 - a12 * a12);
 }
 
+// Left horizontal reaction H_left (N/m, pointing into the span) of the two-hinged semicircle (pinned
+// springings that do not move) under its self-weight w per axis length and the horizontal load a w per
+// axis length towards +x, by Castigliano's theorem with H_left the redundant. With phi the angle from
+// the left springing (x = R (1 - cos phi), y = R sin phi, s = R phi, cos theta = sin phi, sin theta =
+// cos phi), statics of the part before s gives Fx = -H_left - a w R phi, Fy = -V_left + w R phi and
+//   M = x V_left - y H_left - w R^2 (sin phi - phi cos phi) - a w R^2 (phi sin phi - 1 + cos phi),
+// V_left = w R (pi/2 - a) from the moments about the right pin. The complementary energy of bending,
+// stretching and shear is stationary in H_left (the springings do not move): M = M0 - y H_left,
+// N = N0 - cos(theta) H_left, V = V0 + sin(theta) H_left.
+inline double castigliano_two_hinged_semicircle_H(double span, double thickness, const Material& m, double a) {
+  const double R = 0.5 * span, pi = std::numbers::pi;
+  const double E = m.effective_modulus();
+  const double EI = E * thickness * thickness * thickness / 12.0, EA = E * thickness;
+  const double kGA = m.shear_coefficient * m.shear_modulus() * thickness;
+  const double w = m.density * m.gravity * thickness;
+  const double V_left = w * R * (pi / 2 - a);
+  std::vector<double> phis, ws;
+  gauss_legendre(128, 0.0, pi, phis, ws);
+  double numerator = 0, denominator = 0;
+  for (std::size_t i = 0; i < phis.size(); ++i) {
+    const double phi = phis[i], q = ws[i] * R;  // ds = R dphi
+    const double x = R * (1 - std::cos(phi)), y = R * std::sin(phi);
+    const double c = std::sin(phi), sn = std::cos(phi);
+    const double Fx0 = -a * w * R * phi, Fy = -V_left + w * R * phi;
+    const double M0 = x * V_left - w * R * R * (std::sin(phi) - phi * std::cos(phi)) -
+                      a * w * R * R * (phi * std::sin(phi) - 1 + std::cos(phi));
+    const double N0 = c * Fx0 + sn * Fy, V0 = -sn * Fx0 + c * Fy;
+    numerator += q * (M0 * y / EI + N0 * c / EA - V0 * sn / kGA);
+    denominator += q * (y * y / EI + c * c / EA + sn * sn / kGA);
+  }
+  return numerator / denominator;
+}
+
 }  // namespace ogive::reference

@@ -78,6 +78,9 @@ struct LimitOptions {
   // Coulomb friction coefficient of the joints; 0: no sliding check (sliding is excluded). When > 0,
   // every joint must also satisfy |shear| <= friction * normal force.
   double friction = 0;
+  // Also the horizontal acceleration of collapse a_c (LimitResult::horizontal_state): one more program
+  // per round, and its hinges refine the ring too.
+  bool horizontal_load_factor = false;
   // Ceres-style check: false with the reason in *why (naming the field) when an option is unusable.
   bool is_valid(std::string* why) const;
 };
@@ -93,13 +96,17 @@ struct Joint {
 };
 
 // Vertical forces on one voussoir by their resultant: the total, downward, and its moment about the
-// origin (sum of x F; the resultant acts at x = moment / force).
+// origin (sum of x F; the resultant acts at x = moment / force), and the sum of y F over the same forces
+// (the moment, clockwise, of the horizontal forces a F that a horizontal acceleration a adds at the same
+// points: Ring::acceleration).
 struct VerticalLoad {
-  double force = 0;   // N per metre of width, downward
-  double moment = 0;  // N m per metre of width
+  double force = 0;          // N per metre of width, downward
+  double moment = 0;         // N m per metre of width
+  double height_moment = 0;  // N m per metre of width: sum of y F
   VerticalLoad& operator+=(const VerticalLoad& o) {
     force += o.force;
     moment += o.moment;
+    height_moment += o.height_moment;
     return *this;
   }
 };
@@ -109,8 +116,11 @@ struct Voussoir {
   Eigen::Vector2d centroid;  // m, where the self-weight acts
   VerticalLoad fill;         // the fills' share (dead)
   VerticalLoad live;         // the point and live loads' share at load factor 1
-  // Every dead load: the self-weight at its centroid and the fill.
-  VerticalLoad dead() const { return {weight + fill.force, weight * centroid.x() + fill.moment}; }
+  // Every dead load: the self-weight at its centroid and the fill (the masses a horizontal acceleration
+  // pushes).
+  VerticalLoad dead() const {
+    return {weight + fill.force, weight * centroid.x() + fill.moment, weight * centroid.y() + fill.height_moment};
+  }
 };
 
 // joints.size() == voussoirs.size() + 1; voussoir k lies between joints k and k + 1; as many voussoirs
@@ -121,6 +131,9 @@ struct Ring {
   std::vector<Voussoir> voussoirs;
   std::vector<int> pins;  // joints whose thrust passes through their axis point, ascending
   double span = 0;        // L, m
+  // a (Scene::horizontal_acceleration): each voussoir's dead load also pushes a times itself towards +x,
+  // at the same points (the self-weight at the centroid of its weight model, the fill where it bears).
+  double acceleration = 0;
   // Where each side's interior joints lie, ascending in (0, 1): joint i of a side (1 .. m-1, from its
   // springing; the same on both sides) has its intrados at fraction joint_fractions[i - 1] of the
   // intrados' arc length from the springing to the crown's vertical.
@@ -211,6 +224,13 @@ struct LimitResult {
   // carry its dead loads alone.
   ThrustState collapse_state;
   double load_factor_mechanism = std::numeric_limits<double>::quiet_NaN();
+  // The horizontal acceleration a_c (towards +x, a fraction of g) that turns the arch into a mechanism,
+  // with every vertical load at factor 1 and the scene's own acceleration ignored: its state (load_factor
+  // = a_c; H the left springing's), and the kinematic a_c of the same hinges
+  // (mechanism_horizontal_load_factor). Absent when the arch cannot carry its vertical loads, or no
+  // finite acceleration makes a mechanism.
+  ThrustState horizontal_state;
+  double horizontal_load_factor_mechanism = std::numeric_limits<double>::quiet_NaN();
   int lp_solves = 0;  // linear programs solved for this result
   // The ring of the states above (their joint indices and crossings): make_ring(scene, options)'s,
   // refined next to the hinges. t_min's rings (other thicknesses) are not kept.
@@ -219,6 +239,7 @@ struct LimitResult {
   double H_min() const { return min_state.H; }
   double H_max() const { return max_state.H; }
   double load_factor() const { return collapse_state.load_factor; }
+  double horizontal_load_factor() const { return horizontal_state.load_factor; }
 };
 
 // The admissible thrust range, the minimum thickness and, with a live load, the collapse load factor
@@ -257,5 +278,9 @@ ThrustState thrust_state(const Ring& ring, double H, double V_left, double M_lef
 // at consecutive joints on one face represented by its first, middle and last; NaN when more than
 // kMaxMechanismHinges remain.
 double mechanism_load_factor(const Ring& ring, const std::vector<Hinge>& hinges);
+// The same for the horizontal acceleration of the dead loads (towards +x, its work the horizontal force
+// a F times the horizontal velocity at each voussoir's load), every vertical load at factor 1 and
+// Ring::acceleration ignored: the kinematic a_c of the mechanism. NaN as above, or without dead loads.
+double mechanism_horizontal_load_factor(const Ring& ring, const std::vector<Hinge>& hinges);
 
 }  // namespace ogive

@@ -25,6 +25,9 @@
 // (the axis offset by t/2 along the normal) over that x, as limit analysis weighs it (zero where no
 // extrados lies over x).
 // A point load P at s_P makes Fy jump by P / (w L): Fy(s_P+) = Fy(s_P-) + P~.
+// A horizontal acceleration a (Scene::horizontal_acceleration, a fraction of g) adds the horizontal load
+// h(s) = a (b_self + b_fill(s)) per axis length, over w, to +x on the axis point: the self-weight's and the
+// fill's (not a point or live load's) times a. Then Fx~' = -h(s) instead of 0; with a = 0 nothing changes.
 #pragma once
 
 #include <limits>
@@ -121,15 +124,19 @@ class ArchModel {
   static void apply_system_matrix(const SystemEntries& A, const double* y, double* dy);
   // b(s): the vertical load per axis length at s, over w.
   double load(double s) const;
+  // h(s): the horizontal load per axis length at s, over w, to +x (0 without a horizontal acceleration).
+  double horizontal_load(double s) const;
+  // The scene's horizontal acceleration a (a fraction of g); 0: no horizontal load anywhere.
+  double acceleration() const { return scene_.horizontal_acceleration; }
   // True when b is the same constant everywhere and there are no point loads (self-weight alone).
   bool uniform_load() const { return uniform_; }
   // The self-weight's part of b (w_self / w), and whether b is that constant alone (no live load or fill;
   // point loads may be present).
   double self_weight() const { return self_weight_; }
   bool self_weight_only_distributed() const { return scene_.loads.live.empty() && scene_.loads.fills.empty(); }
-  // dy = A y + load * e_Fy at the angle whose cosine and sine are c and sn (the one place of this
-  // arithmetic; inline: the quadrature calls it at every node).
-  void derivative(double c, double sn, const double* y, double* dy, double load) const;
+  // dy = A y + load * e_Fy - horizontal * e_Fx at the angle whose cosine and sine are c and sn (the one
+  // place of this arithmetic; inline: the quadrature calls it at every node).
+  void derivative(double c, double sn, const double* y, double* dy, double load, double horizontal = 0.0) const;
   // Interior points where A or b is not smooth (the curve's breakpoints, a live load's ends, where a fill
   // starts to bear, the axis points under the extrados' breaks when there is a fill) and where the state jumps (point loads, a hinge), ascending, scaled: integrators
   // restart there. jumps(): the point loads, ascending, at 0 <= s <= S~ (those at the ends act on the
@@ -155,9 +162,11 @@ class ArchModel {
   // springing) over the domain's total load.
   double boundary_residual(const StateVector& y0, const StateVector& yS, double hinge_moment = 0) const;
   double equilibrium_residual(const StateVector& y0, const StateVector& yS) const;
-  // The total vertical load on the domain and its moment about the left springing (scaled), point loads
-  // at its ends and the crown's half load included.
+  // The total vertical load on the domain, the total horizontal load (to +x) and the moment of all loads
+  // about the left springing, int (b x + h y) ds, clockwise positive (scaled), point loads at the ends and
+  // the crown's half load included.
   double total_load() const { return total_load_; }
+  double total_horizontal_load() const { return total_horizontal_load_; }
   double load_moment() const { return load_moment_; }
 
  private:
@@ -173,7 +182,7 @@ class ArchModel {
   std::vector<PointJump> jumps_;
   std::optional<double> hinge_;
   BoundaryConditions bc_;
-  double total_load_ = 0, load_moment_ = 0;
+  double total_load_ = 0, total_horizontal_load_ = 0, load_moment_ = 0;
   // The constructor's steps, in order: where the loads act and where the system is not smooth (the
   // curve's breakpoints, the point loads, the hinge, the live loads' ends, where the fill meets the
   // extrados and under the extrados' breaks); the six boundary conditions; the domain's total load and its moment.
@@ -182,6 +191,10 @@ class ArchModel {
   void sum_loads();
   // b beyond the self-weight at scaled arc length s, whose axis point is p.
   double distributed_load(double s, const CurvePoint& p) const;
+  // The fills' part of it alone (the mass that a horizontal acceleration moves, with the self-weight).
+  double fill_load(double s, const CurvePoint& p) const;
+  // One fill's weight per axis length (N/m) over an axis point with tangent cosine c, under extrados e.
+  double fill_weight(const FillLoad& f, double extrados_y, double c) const;
   // The true extrados over the domain's axis points (arch_model.cpp; only with fills).
   struct Extrados;
   std::shared_ptr<const Extrados> extrados_;
@@ -203,14 +216,15 @@ inline void ArchModel::apply_system_matrix(const SystemEntries& A, const double*
 }
 
 // The six equations of the header comment.
-inline void ArchModel::derivative(double c, double sn, const double* y, double* dy, double load) const {
+inline void ArchModel::derivative(double c, double sn, const double* y, double* dy, double load,
+                                  double horizontal) const {
   const double N = c * y[kFx] + sn * y[kFy];
   const double V = -sn * y[kFx] + c * y[kFy];
   const double rot = a_V_ * V + y[kPsi];
   dy[kUx] = a_N_ * N * c - rot * sn;
   dy[kUy] = a_N_ * N * sn + rot * c;
   dy[kPsi] = y[kM];
-  dy[kFx] = 0.0;
+  dy[kFx] = 0.0 - horizontal;  // +0, as before horizontal loads, where there is none
   dy[kFy] = load;
   dy[kM] = sn * y[kFx] - c * y[kFy];
 }

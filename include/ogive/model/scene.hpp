@@ -87,14 +87,18 @@ struct Scene {
   // resultant leaves the kern; solved by Newton, no_tension.hpp).
   SectionKind section = SectionKind::elastic;
   bool crown_hinge = false;  // a hinge (M = 0, the rotation free to jump) at the crown (Curve::crown)
+  // Pseudo-static earthquake: every mass of the scene (the arch's self-weight and the fill, not point or
+  // live loads) also carries a horizontal force a times its weight, to +x (left to right) for a > 0; a
+  // fraction of g, finite. A scene with a != 0 is not symmetric: it is solved over the whole arch.
+  double horizontal_acceleration = 0;
 
   // Sets both springings' outward spread to d (m): today's "support displacement" of the paper.
   void set_support_displacement(double d) { left.spread = right.spread = d; }
 
   double span() const { return curve->span(); }
   // Whether the scene is its own mirror image about x = L/2: a half curve, equal supports and movements
-  // (a rotation mirrors to minus itself), and loads that map onto themselves. Such a scene is solved over
-  // the half arch.
+  // (a rotation mirrors to minus itself), loads that map onto themselves and no horizontal acceleration.
+  // Such a scene is solved over the half arch.
   bool symmetric() const;
   double area() const { return thickness; }
   double inertia() const { return thickness * thickness * thickness / 12.0; }
@@ -102,7 +106,8 @@ struct Scene {
   // density 0.
   double weight_per_length() const { return material.density * material.gravity * area(); }
   // The model's force scale w_ref (N/m, > 0 for a valid scene): the self-weight per axis length plus
-  // every other load's total spread over the whole arch's length (scene.cpp says how each counts).
+  // every other load's total spread over the whole arch's length, plus |a| times the masses' (self-weight
+  // and fill) under a horizontal acceleration a (scene.cpp says how each counts).
   double reference_load_per_length() const;
 
   // Throws std::invalid_argument whose message names the field and the rule it breaks, e.g.

@@ -13,13 +13,24 @@ namespace ogive {
 // Shortest decimal that reads back to the same double; "nan", "inf", "-inf" for the non-finite.
 void append_number(std::string& out, double value);
 
+// Which fields of a command's full order a row prints, and in which order.
+struct FieldSelection {
+  std::vector<bool> keep;  // keep[i]: whether field i of the full order is printed
+  // Empty: the kept fields in the full order. Else order[k] is the rank, among the kept fields in the
+  // full order, of the field printed k-th (a permutation of 0 .. kept - 1).
+  std::vector<std::size_t> order;
+};
+
 // A row is built by adding every field of its command in the header's full order; with a selection,
-// the fields not selected are skipped unformatted, so that choosing columns costs nothing.
+// the fields not selected are skipped unformatted, so that choosing columns costs nothing, and the kept
+// ones are printed in the selection's order.
 class CsvRow {
  public:
   CsvRow() = default;
-  // keep[i]: whether field i of the full order is printed (nullptr: every field). Must outlive the row.
-  explicit CsvRow(const std::vector<bool>* keep) : keep_(keep) {}
+  // nullptr: every field, in the full order. Must outlive the row.
+  explicit CsvRow(const FieldSelection* selection)
+      : keep_(selection ? &selection->keep : nullptr),
+        order_(selection && !selection->order.empty() ? &selection->order : nullptr) {}
 
   CsvRow& add(double value);  // shortest round-trip; an empty field when not finite (no number)
   CsvRow& add(std::int64_t value);
@@ -33,7 +44,7 @@ class CsvRow {
   std::string take();
   // Rows that share their first fields (a scene's, on every station of a profile): mark() after
   // adding them, and take_to_mark() returns the row and rewinds to the mark, formatted once.
-  void mark() { mark_ = {line_.size(), index_, fields_}; }
+  void mark() { mark_ = {line_.size(), index_, starts_.size(), fields_}; }
   std::string take_to_mark();
 
  private:
@@ -42,10 +53,13 @@ class CsvRow {
     const bool keep = wants_next();
     ++index_;
     if (keep && fields_++ > 0) line_ += ',';
+    if (keep && order_) starts_.push_back(line_.size());
     return keep;
   }
+  // line_ with its fields in order_'s order (order_ set) and a newline.
+  std::string ordered_line() const;
   struct Mark {
-    std::size_t size = 0, index = 0;
+    std::size_t size = 0, index = 0, starts = 0;
     int fields = 0;
   };
   // The last few numbers formatted into line_ (their magnitude and where its digits are): a row often
@@ -60,6 +74,8 @@ class CsvRow {
   std::size_t recent_count_ = 0, recent_next_ = 0;
   void forget_recent_beyond(std::size_t size);
   const std::vector<bool>* keep_ = nullptr;
+  const std::vector<std::size_t>* order_ = nullptr;
+  std::vector<std::size_t> starts_;  // with order_: where each kept field's text begins in line_
   std::size_t index_ = 0;
   std::string line_;
   int fields_ = 0;

@@ -95,9 +95,11 @@ struct DrawingOptions {
   bool is_valid(std::string* why) const;
 };
 
-// The limit analysis' minimum and maximum thrust states as lines to draw, with their hinges and a label
-// that gives H/V and the number of hinges; a state that was not found is left out.
+// The limit analysis' minimum and maximum thrust states, and the collapse state of a horizontal
+// acceleration where it was computed, as lines to draw, with their hinges and a label that gives H/V
+// (a_c for the collapse state) and the number of hinges; a state that was not found is left out.
 std::vector<ExtraThrustLine> limit_thrust_lines(const LimitResult& result);
+
 // The collapse mechanism of the limit analysis' collapse state (a live load's), labelled with its load
 // factor; none without a collapse state or unless it has four hinges. `scene` is the analysed one.
 std::optional<CollapseMechanism> collapse_mechanism(const Scene& scene, const LimitResult& result);
