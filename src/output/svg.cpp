@@ -469,7 +469,6 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
   if (scene.crown_hinge) draw_crown_hinge(body, *scene.curve, frame);
   TitleText title = title_text(scene, solution, options, std::max(drawn.width(), 40 * frame.font) / (0.6 * frame.font));
   title.load_scale = draw_loads(body, scene, outline, frame, drawn, !thrust.empty());
-  draw_acceleration(body, scene, frame, drawn);
   draw_horizontal_acceleration(body, scene, frame, drawn);
   double bottom = draw_support_movement(body, scene, ends, frame, drawn, drawn.y0);
   bottom = draw_scale_bar(body, frame, bottom);

@@ -127,9 +127,6 @@ void draw_fills(std::string& body, const Scene& scene, const Outline& outline, c
 // Returns the legend line that states the arrows' scales ("" without loads).
 std::string draw_loads(std::string& body, const Scene& scene, const Outline& outline, const Frame& frame, Box& drawn,
                        bool thrust_drawn);
-// A horizontal acceleration (Scene::horizontal_acceleration, a fraction of g): an arrow beside the arch
-// at half its height, pointing the way it pushes the masses, labelled; nothing when it is 0.
-void draw_acceleration(std::string& body, const Scene& scene, const Frame& frame, Box& drawn);
 // The cracked zones of a no-tension solution: at each pair of neighbouring cracked stations, the part of
 // the section beyond the compressed depth, on the face away from the resultant, shaded.
 void draw_cracks(std::string& body, const Scene& scene, const Solution& solution, const Frame& frame);

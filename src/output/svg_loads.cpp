@@ -137,21 +137,6 @@ std::string draw_loads(std::string& body, const Scene& scene, const Outline& out
   return legend;
 }
 
-void draw_acceleration(std::string& body, const Scene& scene, const Frame& frame, Box& drawn) {
-  const double a = scene.horizontal_acceleration;
-  if (a == 0) return;
-  // Beside the arch at half its height, on the side it comes from, pointing the way the masses are pushed.
-  const double y = 0.5 * (frame.box.y0 + frame.box.y1), length = 0.12 * frame.W, gap = 0.03 * frame.W;
-  const double from = a > 0 ? frame.box.x0 - gap - length : frame.box.x1 + gap + length;
-  const double to = a > 0 ? frame.box.x0 - gap : frame.box.x1 + gap;
-  body += fmt::format("<g id=\"acceleration\" stroke=\"{0}\" fill=\"{0}\">\n", kLoadColour);
-  arrow(body, {from, y}, {to, y}, 2 * frame.stroke);
-  text(body, {0.5 * (from + to), y + 0.6 * frame.font}, 0.8 * frame.font, "middle", fmt::format("a = {:.4g} g", a));
-  text(body, {0.5 * (from + to), y - 1.3 * frame.font}, 0.65 * frame.font, "middle", "on arch and fill");
-  body += "</g>\n";
-  drawn.add({from - (a > 0 ? 1 : -1) * 2 * frame.font, y});
-}
-
 void draw_cracks(std::string& body, const Scene& scene, const Solution& solution, const Frame& frame) {
   if (scene.section != SectionKind::no_tension) return;
   // The cracked part of one station's section: from the face away from the resultant, inwards by the

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -122,25 +121,4 @@ TEST_CASE("draw: loads, fill, cracked zones and each springing's movement are dr
   }
   CHECK(longest < 110);
   std::filesystem::remove_all(dir);
-}
-
-TEST_CASE("draw: a horizontal acceleration is an arrow beside the arch, pointing the way it pushes") {
-  const std::string path = "report_test_acceleration.svg";
-  for (const char* a : {"0.1", "-0.1"}) {
-    CAPTURE(a);
-    REQUIRE(run_command({"draw", "--horizontal-acceleration", a, "--output", path}).status == 0);
-    std::ifstream in(path);
-    const std::string svg((std::istreambuf_iterator<char>(in)), {});
-    const std::size_t group = svg.find("<g id=\"acceleration\"");
-    REQUIRE(group != std::string::npos);
-    const std::size_t at = svg.find("<line", group);
-    auto attribute = [&](const char* name) {
-      const std::size_t v = svg.find(std::string(" ") + name + "=\"", at);
-      return std::stod(svg.substr(v + std::strlen(name) + 3));
-    };
-    CHECK(attribute("y1") == attribute("y2"));  // horizontal
-    CHECK((attribute("x2") > attribute("x1")) == (std::string(a) == "0.1"));  // the arrowhead at x2
-    CHECK(svg.find(std::string("a = ") + a + " g") != std::string::npos);
-  }
-  std::filesystem::remove(path);
 }
