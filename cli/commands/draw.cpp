@@ -83,6 +83,7 @@ std::string draw_title(const SceneParameters& p) {
   if (!std::isnan(p.live_load))
     title += fmt::format(", q {:g} kN/m^2 over x/L {:g}..{:g}", p.live_load / 1000, p.live_load_from, p.live_load_to);
   if (!std::isnan(p.fill_density)) title += fmt::format(", fill {:g} kg/m^3 to {:g} L", p.fill_density, p.fill_height_ratio);
+  if (p.horizontal_acceleration != 0) title += fmt::format(", horizontal acceleration {:g} g", p.horizontal_acceleration);
   if (p.crown_hinge) title += ", crown hinge";
   return title;
 }

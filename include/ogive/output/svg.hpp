@@ -29,8 +29,8 @@
 //               proportional to the force, and live loads (N/m^2) as rows of arrows over their extent,
 //               their length proportional to the intensity; the legend says both scales. Beside each
 //               point load, when a thrust line is drawn, a note that the line jumps there (the normal
-//               force changes under the load, so M / N does). The group is the place for further load
-//               arrows (a horizontal acceleration's).
+//               force changes under the load, so M / N does).
+//               (A horizontal acceleration is drawn above the crown, #horizontal-acceleration.)
 //   #cracks     no-tension section: where the resultant leaves the kern, the cracked depth of the
 //               section (t times one minus the compressed depth) on the face away from it, shaded
 //   #mechanism  DrawingOptions::mechanisms: the collapse mechanism's moving blocks, displaced
