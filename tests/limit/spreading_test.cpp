@@ -89,3 +89,19 @@ TEST_CASE("spreading: one-sided movement keeps static and kinematic thrust equal
   for (const SpreadStep& s : r.path) CHECK(close(s.H, s.H_work, kStaticKinematic));
   CHECK(r.d_max > 0);
 }
+
+TEST_CASE("spreading: the capacity converges with the joints count and the steps") {
+  // Three significant digits: the capacity is bisected to kSpreadTolerance L whatever the steps, and the
+  // limit analysis refines its ring next to the hinges whatever the starting joints count.
+  constexpr double kThreeDigits = 5e-4;
+  LimitOptions coarse, fine;
+  coarse.joints_count = 101;
+  fine.joints_count = 401;
+  SpreadOptions few, many;
+  few.steps = 20;
+  many.steps = 400;
+  const Scene scene = paper_scene(0.0, 0.075);
+  const double a = analyse_spreading(scene, coarse, few).d_max;
+  const double b = analyse_spreading(scene, fine, many).d_max;
+  CHECK(close(a, b, kThreeDigits));
+}
