@@ -69,7 +69,7 @@ TEST_CASE("spreading: the capacity grows with the thickness from zero at t_min")
   CHECK(near.d_max < 0.05 * thicker.d_max);
 }
 
-TEST_CASE("spreading: below t_min there is no path; bad options throw") {
+TEST_CASE("spreading: below t_min there is no path, and bad options throw") {
   const SpreadResult r = spread(0.05);
   CHECK(r.status == SpreadStatus::inadmissible);
   CHECK(r.path.empty());
