@@ -169,18 +169,34 @@ Options drawing_solver(const DrawOptions& d) {
   return sweep.combinations.front();
 }
 
+// The solver options of draw and report, checked, and their file names refused when empty.
+Options checked_picture_options(const DrawOptions& d, const CLI::App& cmd, const char* output_rule) {
+  const Options o = drawing_solver(d);
+  check_stations(o.stations);
+  check_options(o);
+  refuse_empty_name(cmd, "--output", d.targets.output, output_rule);
+  refuse_empty_name(cmd, "--output-dir", d.targets.output_dir, "an existing directory, . for the current one");
+  return o;
+}
+
+// The CSV row of one picture (a drawing or a report): the scene, its solve and the file written.
+std::string picture_row(const Columns& columns, const SceneParameters& p, const Scene& scene, const Solution& sol,
+                        const std::string& path) {
+  CsvRow row(columns.keep());
+  add_scene_columns(row, p, scene.curve.get());
+  row.add(to_string(sol.method)).add(to_string(sol.status)).add(sol.H).add(sol.V).add(sol.H_over_V);
+  row.add(sol.message).add(path);
+  return row.take();
+}
+
 int run_draw(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
   Columns columns = draw_columns();
   if (d.columns.columns == "help") {
     write_all(out, columns.help());
     return kExitOk;
   }
-  const Options o = drawing_solver(d);
+  const Options o = checked_picture_options(d, cmd, "a file name ending in .svg");
   const DrawTargets& to = d.targets;
-  check_stations(o.stations);
-  check_options(o);
-  refuse_empty_name(cmd, "--output", to.output, "a file name ending in .svg");
-  refuse_empty_name(cmd, "--output-dir", to.output_dir, "an existing directory, . for the current one");
   // Standard output carries the CSV rows, one per drawing: a picture cannot go there too.
   if (to.output == "-")
     throw UsageError("--output: - (standard output) is refused: standard output carries the CSV row; give a file name");
@@ -205,11 +221,7 @@ int run_draw(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
         if (to.limit) add_limit_drawing(scene, drawing);
         const std::string& path = files[p.scene - 1];
         write_drawing(path, arch_svg(scene, sol, drawing));
-        CsvRow row(columns.keep());
-        add_scene_columns(row, p, scene.curve.get());
-        row.add(to_string(sol.method)).add(to_string(sol.status)).add(sol.H).add(sol.V).add(sol.H_over_V);
-        row.add(sol.message).add(path);
-        emit(row.take());
+        emit(picture_row(columns, p, scene, sol, path));
         return sol.ok();
       });
   return all_ok ? kExitOk : kExitNotConverged;
@@ -233,12 +245,8 @@ int run_report(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
     write_all(out, columns.help());
     return kExitOk;
   }
-  const Options o = drawing_solver(d);
+  const Options o = checked_picture_options(d, cmd, "a file name ending in .html, or - for standard output");
   const DrawTargets& to = d.targets;
-  check_stations(o.stations);
-  check_options(o);
-  refuse_empty_name(cmd, "--output", to.output, "a file name ending in .html, or - for standard output");
-  refuse_empty_name(cmd, "--output-dir", to.output_dir, "an existing directory, . for the current one");
   if (to.output.empty() == to.output_dir.empty())
     throw UsageError(to.output.empty() ? "--output: report needs --output FILE.html (one scene; - for standard output) "
                                          "or --output-dir DIR (one file per scene)"
@@ -267,11 +275,7 @@ int run_report(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
     const std::string& path = files[p.scene - 1];
     write_drawing(path, html_report(scene, report));
     const Solution sol = solve(scene, o);
-    CsvRow row(columns.keep());
-    add_scene_columns(row, p, scene.curve.get());
-    row.add(to_string(sol.method)).add(to_string(sol.status)).add(sol.H).add(sol.V).add(sol.H_over_V);
-    row.add(sol.message).add(path);
-    emit(row.take());
+    emit(picture_row(columns, p, scene, sol, path));
     return sol.ok();
   });
   return all_ok ? kExitOk : kExitNotConverged;
