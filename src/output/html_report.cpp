@@ -70,16 +70,18 @@ std::string safety_section(const Scene& scene, const LimitResult& lim) {
   return s + "</table></section>\n";
 }
 
-std::string collapse_section(const LimitResult& lim) {
+std::string collapse_section(const Scene& scene, const LimitResult& lim) {
   std::string s = "<section id=\"collapse\"><h2>Collapse</h2>\n";
   const ThrustState& c = lim.collapse_state;
   if (!c.found()) return s + "<p>No collapse load factor: the scene has no point or live load to multiply, or the "
                              "arch does not carry its dead load.</p></section>\n";
   s += "<table>\n" + row("collapse load factor (point and live loads)", cell(c.load_factor)) + "</table>\n";
   s += "<table>\n<tr><th>hinge</th><th>x</th><th>y</th><th>face</th></tr>\n";
+  // A coordinate within round-off of zero (a springing's face point, 2e-17 m) is shown as 0.
+  const auto coordinate = [&](double v) { return std::abs(v) < 1e-12 * scene.span() ? 0.0 : v; };
   for (std::size_t k = 0; k < c.hinges.size(); ++k) {
     const Hinge& h = c.hinges[k];
-    s += row(fmt::format("{}", k + 1), cell(h.point.x(), 1, "m") + cell(h.point.y(), 1, "m") +
+    s += row(fmt::format("{}", k + 1), cell(coordinate(h.point.x()), 1, "m") + cell(coordinate(h.point.y()), 1, "m") +
                                           fmt::format("<td>{}</td>", to_string(h.face)));
   }
   return s + "</table></section>\n";
@@ -184,7 +186,7 @@ std::string html_report(const Scene& scene, const ReportOptions& options) {
   page += "<title>ogive report: " + escaped(options.title) + "</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n";
   page += "<h1>" + escaped(options.title) + "</h1>\n";
   page += "<section id=\"drawing\"><h2>The arch</h2>\n" + svg + "</section>\n";
-  page += reactions_section(sol) + thrusts_section(scene, sol, lim) + safety_section(scene, lim) + collapse_section(lim);
+  page += reactions_section(sol) + thrusts_section(scene, sol, lim) + safety_section(scene, lim) + collapse_section(scene, lim);
   page += spreading_section(scene, options, lim);
   page += "<section id=\"inputs\"><h2>Inputs as given</h2>\n<table>\n";
   for (const auto& [name, value] : options.inputs)
