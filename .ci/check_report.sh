@@ -21,8 +21,9 @@ for f in report.png report.pdf; do [[ -s "$out/$f" ]] || { echo "check_report: $
 if grep -qh ":CONSOLE" "$out"/*.log; then echo "check_report: console messages:"; grep -h ":CONSOLE" "$out"/*.log; status=1; fi
 if grep -qE '(src|href)=' "$out/dom.html"; then echo "check_report: the page refers to another file"; status=1; fi
 # The numbers the page shows, as ogive thrust prints them (H and V in kN/m, 4 significant digits).
-H=$("$build/ogive" thrust "${scene[@]}" --columns H | tail -1)
-shown=$(printf '%.4g kN/m' "$(echo "$H / 1000" | bc -l)")
+H=$("$build/ogive" thrust "${scene[@]}" --columns H | tail -1 | cut -d, -f2)  # the row is scene,H
+[[ $H =~ ^[0-9][0-9.e+-]*$ ]] || { echo "check_report: ogive thrust printed no H ('$H')"; exit 1; }
+shown=$(awk -v h="$H" 'BEGIN { printf "%.4g kN/m", h / 1000 }')
 grep -q "$shown" "$out/dom.html" || { echo "check_report: the rendered page does not show H = $shown"; status=1; }
 for id in drawing reactions thrusts safety collapse spreading inputs; do
   grep -q "<section id=\"$id\"" "$out/dom.html" || { echo "check_report: no section $id"; status=1; }
