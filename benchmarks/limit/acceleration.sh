@@ -12,12 +12,12 @@ trap 'rm -rf "$work"' EXIT
 for eps in 0 0.25 0.5; do
   "$ogive" limit --eccentricity "$eps" --thickness-ratio 0.03:0.16:53 \
     --columns eccentricity,thickness_ratio,horizontal_load_factor |
-    awk -F, -v eps="$eps" 'NR > 1 && $3 != "" { print $2 / (0.5 + eps), $3 }' >"$work/ac-$eps.dat"
+    awk -F, -v eps="$eps" 'NR > 1 && $4 != "" { print $3 / (0.5 + eps), $4 }' >"$work/ac-$eps.dat"
 done
 for joints in radial vertical; do
   "$ogive" limit --eccentricity 0 --thickness-ratio 0.15 --joints "$joints" --horizontal-acceleration 0:0.4:41 \
     --columns horizontal_acceleration,thickness_min_ratio |
-    awk -F, 'NR > 1 && $2 != "" { print $1, 2 * $2 }' >"$work/tmin-$joints.dat"
+    awk -F, 'NR > 1 && $3 != "" { print $2, 2 * $3 }' >"$work/tmin-$joints.dat"
 done
 gnuplot <<GNUPLOT
 set terminal pngcairo size 1200,500 font "DejaVu Sans,11"
