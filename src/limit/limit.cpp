@@ -18,7 +18,7 @@ using limit_detail::LimitLp;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+using limit_detail::cross;
 
 // The thinnest arch the search for t_min tries, relative to the span.
 constexpr double kThinnestResolved = 1e-6;

@@ -10,6 +10,9 @@
 
 namespace ogive::limit_detail {
 
+// The plane cross product a x b (its z component): the moment of force b at arm a.
+inline double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
 // What lies to the left of each joint j (voussoirs 0 .. j-1), for the equilibrium of that part: the
 // dead and the live loads (at factor 1), each with its moment about the origin. One entry per joint.
 struct LoadsLeftOfJoints {

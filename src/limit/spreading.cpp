@@ -17,7 +17,7 @@ namespace {
 using limit_detail::LimitLp;
 using Vec = Eigen::Vector2d;
 
-double cross(const Vec& a, const Vec& b) { return a.x() * b.y() - a.y() * b.x(); }
+using limit_detail::cross;
 
 // A rigid motion p -> centre' + R(angle) (p - centre).
 struct Motion {
