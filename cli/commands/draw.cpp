@@ -65,8 +65,7 @@ void add_limit_drawing(const Scene& scene, DrawingOptions& drawing) {
   LimitOptions options;
   options.horizontal_load_factor = scene.horizontal_acceleration != 0;
   const LimitResult r = analyse_limit(scene, options);
-  drawing.extra_lines = limit_thrust_lines(r);
-  if (std::optional<CollapseMechanism> m = collapse_mechanism(scene, r)) drawing.mechanisms.push_back(std::move(*m));
+  add_limit_analysis(drawing, scene, r);
 }
 
 // The drawing's caption: the curve, its shape parameters, span, t/L and d/L, as the options name them.
@@ -273,8 +272,8 @@ int run_report(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
   const bool all_ok = write_scenes(plan, columns, out, 1, [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
     report.title = draw_title(p);
     const std::string& path = files[p.scene - 1];
-    write_drawing(path, html_report(scene, report));
     const Solution sol = solve(scene, o);
+    write_drawing(path, html_report(scene, sol, report));
     emit(picture_row(columns, p, scene, sol, path));
     return sol.ok();
   });

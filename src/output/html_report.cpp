@@ -173,12 +173,17 @@ std::string html_report(const Scene& scene, const ReportOptions& options) {
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
   scene.validate();
-  const Solution sol = solve(scene, options.solver);
+  return html_report(scene, solve(scene, options.solver), options);
+}
+
+std::string html_report(const Scene& scene, const Solution& sol, const ReportOptions& options) {
+  std::string why;
+  if (!options.is_valid(&why)) throw std::invalid_argument(why);
+  scene.validate();
   const LimitResult lim = analyse_limit(scene, LimitOptions{});
   DrawingOptions drawing;
   drawing.title = options.title;
-  drawing.extra_lines = limit_thrust_lines(lim);
-  if (std::optional<CollapseMechanism> m = collapse_mechanism(scene, lim)) drawing.mechanisms.push_back(std::move(*m));
+  add_limit_analysis(drawing, scene, lim);
   std::string svg = arch_svg(scene, sol, drawing);
   svg.erase(0, svg.find("<svg"));  // inline: no XML declaration
 

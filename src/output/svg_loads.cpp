@@ -297,4 +297,9 @@ std::optional<CollapseMechanism> collapse_mechanism(const Scene& scene, const Li
   return m;
 }
 
+void add_limit_analysis(DrawingOptions& drawing, const Scene& scene, const LimitResult& result) {
+  drawing.extra_lines = limit_thrust_lines(result);
+  if (std::optional<CollapseMechanism> m = collapse_mechanism(scene, result)) drawing.mechanisms.push_back(std::move(*m));
+}
+
 }  // namespace ogive

@@ -43,5 +43,8 @@ struct ReportOptions {
 // analysed by the limit analysis (default options) and, for the chart, solved with the no-tension
 // section at each spread. Throws std::invalid_argument naming the field for invalid options.
 std::string html_report(const Scene& scene, const ReportOptions& options);
+// The same page with the scene's solution given: `solution` must be solve(scene, options.solver) (a
+// caller that needs it too solves once).
+std::string html_report(const Scene& scene, const Solution& solution, const ReportOptions& options);
 
 }  // namespace ogive

@@ -103,6 +103,9 @@ std::vector<ExtraThrustLine> limit_thrust_lines(const LimitResult& result);
 // The collapse mechanism of the limit analysis' collapse state (a live load's), labelled with its load
 // factor; none without a collapse state or unless it has four hinges. `scene` is the analysed one.
 std::optional<CollapseMechanism> collapse_mechanism(const Scene& scene, const LimitResult& result);
+// The limit analysis into a drawing: its thrust lines (limit_thrust_lines) and its collapse mechanism
+// (collapse_mechanism), where there is one. `scene` is the analysed one.
+void add_limit_analysis(DrawingOptions& drawing, const Scene& scene, const LimitResult& result);
 
 // The SVG document (UTF-8 text). The scene must be valid (Scene::validate); the solution is the
 // scene's, with or without a profile (without one, or unsolved, no thrust line is drawn and the title
