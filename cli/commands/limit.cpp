@@ -203,7 +203,7 @@ std::string joint_rows(const Columns& columns, const SceneParameters& p, const S
     return row.take();
   }
   row.mark();
-  const Ring& ring = r.ring;  // the ring the state belongs to
+  const Ring& ring = line == ThrustLine::horizontal ? r.horizontal_ring : r.ring;  // the ring the state belongs to
   std::string text;
   for (std::size_t j = 0; j < ring.joints.size(); ++j) {
     const Joint& joint = ring.joints[j];

@@ -5,7 +5,6 @@
 #include <stdexcept>
 #include <string>
 
-#include <Eigen/LU>
 #include <fmt/format.h>
 
 #include "limit/limit_internal.hpp"
@@ -211,128 +210,6 @@ ThrustState thrust_state(const Ring& ring, double H, double V_left, double M_lef
 
 namespace {
 
-// The multiplier of one mechanism with hinges h (sorted by joint, distinct joints): NaN unless it has
-// exactly one degree of freedom, the live load does work in it, and it is kinematically admissible
-// (each face hinge opens on the face opposite to its own; a pin turns either way). `live`: what the
-// multiplier multiplies (limit_internal.hpp).
-double one_mechanism(const Ring& ring, const std::vector<Hinge>& h, limit_detail::LiveKind live) {
-  // Bodies b = 0 .. k-2 between consecutive hinges, each with a rigid velocity (u, v, omega): a point p
-  // moves with (u - omega p_y, v + omega p_x). The parts outside the first and last hinges stay put.
-  const int k = static_cast<int>(h.size()), bodies = k - 1;
-  const double L = ring.span;
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * k, 3 * bodies);
-  for (int i = 0; i < k; ++i) {
-    const Eigen::Vector2d p = h[i].point / L;
-    // Velocity of the body right of hinge i minus that of the body left of it, at the hinge.
-    for (int b : {i - 1, i}) {
-      if (b < 0 || b >= bodies) continue;  // the ground
-      const double sign = b == i ? 1.0 : -1.0;
-      A(2 * i, 3 * b) += sign;
-      A(2 * i, 3 * b + 2) -= sign * p.y();
-      A(2 * i + 1, 3 * b + 1) += sign;
-      A(2 * i + 1, 3 * b + 2) += sign * p.x();
-    }
-  }
-  Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
-  lu.setThreshold(1e-10);
-  Eigen::VectorXd mode = lu.kernel();
-  if (lu.dimensionOfKernel() != 1) return kNaN;
-  // The work of downward forces on a voussoir: minus force times the vertical velocity v + omega x of
-  // its body, summed over the forces: -(v F + omega sum x F); with `push` = a, plus that of the
-  // horizontal forces a F, a F times the horizontal velocity u - omega y: a (u F - omega sum y F).
-  // `weight` times the vertical work, plus `push` times the horizontal one.
-  auto work = [&](int voussoir, const VerticalLoad& load, double weight, double push) {
-    for (int b = 0; b < bodies; ++b)
-      if (voussoir >= h[b].joint && voussoir < h[b + 1].joint) {
-        const double vertical = -(mode(3 * b + 1) * load.force + mode(3 * b + 2) * load.moment / L);
-        if (push == 0) return weight * vertical;
-        return weight * vertical + push * (mode(3 * b) * load.force - mode(3 * b + 2) * load.height_moment / L);
-      }
-    return 0.0;
-  };
-  const bool horizontal = live == limit_detail::LiveKind::horizontal;
-  double live_work = 0, dead_work = 0;
-  for (std::size_t v = 0; v < ring.voussoirs.size(); ++v) {
-    const int i = static_cast<int>(v);
-    const Voussoir& vs = ring.voussoirs[v];
-    if (horizontal) {
-      live_work += work(i, vs.dead(), 0.0, 1.0);
-      dead_work += work(i, vs.dead(), 1.0, 0.0) + work(i, vs.live, 1.0, 0.0);
-    } else {
-      live_work += work(i, vs.live, 1.0, 0.0);
-      dead_work += work(i, vs.dead(), 1.0, ring.acceleration);
-    }
-  }
-  if (!(std::abs(live_work) > 1e-12 * std::abs(dead_work))) return kNaN;
-  if (live_work < 0) {  // the sense in which the load does positive work
-    mode = -mode;
-    live_work = -live_work;
-    dead_work = -dead_work;
-  }
-  // A hinge on the intrados opens the extrados: the right part turns clockwise relative to the left one
-  // (omega_right - omega_left < 0); on the extrados, counter-clockwise.
-  const double scale = mode.tail(1).cwiseAbs().maxCoeff() + mode.cwiseAbs().maxCoeff();
-  for (int i = 0; i < k; ++i) {
-    if (h[i].face == Face::axis) continue;
-    const double right = i < bodies ? mode(3 * i + 2) : 0.0, left = i > 0 ? mode(3 * (i - 1) + 2) : 0.0;
-    const double turn = (right - left) * (h[i].face == Face::intrados ? 1.0 : -1.0);
-    if (turn > 1e-9 * scale) return kNaN;
-  }
-  return -dead_work / live_work;
-}
-
-}  // namespace
-
-namespace {
-
-double least_mechanism(const Ring& ring, const std::vector<Hinge>& hinges, limit_detail::LiveKind live) {
-  if (hinges.size() < 3) return kNaN;
-  std::vector<Hinge> sorted = hinges;
-  std::sort(sorted.begin(), sorted.end(), [](const Hinge& a, const Hinge& b) { return a.joint < b.joint; });
-  for (std::size_t i = 1; i < sorted.size(); ++i)
-    if (sorted[i].joint == sorted[i - 1].joint) return kNaN;
-  if (sorted.size() <= 4) return one_mechanism(ring, sorted, live);
-  // A thrust line tangent to a face touches a run of consecutive joints on it (the finer the joints,
-  // the longer the run): the first, middle and last of each run stand for it.
-  std::vector<Hinge> h;
-  for (std::size_t i = 0; i < sorted.size();) {
-    std::size_t j = i + 1;
-    while (j < sorted.size() && sorted[j].joint == sorted[j - 1].joint + 1 && sorted[j].face == sorted[i].face) ++j;
-    h.push_back(sorted[i]);
-    if (j - i > 2) h.push_back(sorted[i + (j - i) / 2]);
-    if (j - i > 1) h.push_back(sorted[j - 1]);
-    i = j;
-  }
-  if (h.size() > kMaxMechanismHinges) return kNaN;
-  // More hinges than a one-degree mechanism has (a degenerate optimum: e.g. the thrust line along an
-  // intrados chord touches two adjacent joints): every admissible mechanism of four of them is an upper
-  // bound (the kinematic theorem); the least is the multiplier of these hinges.
-  double best = kNaN;
-  const std::size_t n = h.size();
-  for (std::size_t a = 0; a < n; ++a)
-    for (std::size_t b = a + 1; b < n; ++b)
-      for (std::size_t c = b + 1; c < n; ++c)
-        for (std::size_t d = c + 1; d < n; ++d) {
-          const double m = one_mechanism(ring, {h[a], h[b], h[c], h[d]}, live);
-          if (!std::isnan(m) && !(m >= best)) best = m;
-        }
-  return best;
-}
-
-}  // namespace
-
-double mechanism_load_factor(const Ring& ring, const std::vector<Hinge>& hinges) {
-  if (!ring.has_live_load()) return kNaN;
-  return least_mechanism(ring, hinges, limit_detail::LiveKind::vertical);
-}
-
-double mechanism_horizontal_load_factor(const Ring& ring, const std::vector<Hinge>& hinges) {
-  if (!(ring.total_dead() != 0.0)) return kNaN;
-  return least_mechanism(ring, hinges, limit_detail::LiveKind::horizontal);
-}
-
-namespace {
-
 // A bracket of t_min: f(lo) < 0 <= f(hi) when found.
 struct Bracket {
   double lo, f_lo, hi, f_hi;
@@ -445,7 +322,12 @@ Thinnest search_thinnest(MarginFunction& f, double t, double margin, bool admiss
 // The horizontal acceleration a_c of collapse into r (horizontal_state, horizontal_load_factor_mechanism):
 // the largest lambda of the program whose lambda pushes the dead loads horizontally, every vertical load
 // at factor 1. False when the program stops without an answer.
-bool horizontal_collapse(const Ring& ring, double friction, Work& work, LimitResult& r) {
+struct HorizontalCollapse {
+  ThrustState state;
+  double mechanism = kNaN;
+};
+
+bool horizontal_collapse(const Ring& ring, double friction, Work& work, HorizontalCollapse& r, int& lp_solves) {
   if (!(ring.total_dead() != 0.0)) return true;
   if (work.horizontal_lp) work.horizontal_lp->load(ring, friction);
   else
@@ -454,15 +336,15 @@ bool horizontal_collapse(const Ring& ring, double friction, Work& work, LimitRes
   LimitLp& lp = *work.horizontal_lp;
   const int solves_before = lp.solves();
   const LimitLp::Answer c = solve_warm(lp, work.horizontal_basis, [&](const std::vector<int>* w) { return lp.collapse(w); });
-  r.lp_solves += lp.solves() - solves_before;
+  lp_solves += lp.solves() - solves_before;
   if (c.outcome == LimitLp::Outcome::failure) return false;
   if (c.outcome != LimitLp::Outcome::optimal) return true;  // cannot stand, or no finite a_c
   // The state: the ring pushed by a_c with its live load at factor 1.
   Ring shaken = ring;
   shaken.acceleration = c.load_factor;
-  r.horizontal_state = thrust_state(shaken, c.H, c.V, c.M, 1.0);
-  r.horizontal_state.load_factor = c.load_factor;
-  r.horizontal_load_factor_mechanism = mechanism_horizontal_load_factor(ring, r.horizontal_state.hinges);
+  r.state = thrust_state(shaken, c.H, c.V, c.M, 1.0);
+  r.state.load_factor = c.load_factor;
+  r.mechanism = mechanism_horizontal_load_factor(ring, r.state.hinges);
   return true;
 }
 
@@ -531,8 +413,6 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
     // infeasible: the dead loads alone cannot stand; unbounded: the live load cannot make a mechanism.
   }
   r.lp_solves += lp.solves() - solves_before;
-  if (options.horizontal_load_factor && !horizontal_collapse(ring, options.friction, work, r))
-    return fail("the collapse acceleration");
 
   // t_min: bracket the root of the margin, then Illinois.
   MarginFunction f{scene,        options, refined, load_factor, work, 0, false, margin.basis,
@@ -550,7 +430,7 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
     r.message = "the LP of the feasibility margin stopped without an answer while searching t_min";
     return round;
   }
-  for (const ThrustState* st : {&r.min_state, &r.max_state, &r.collapse_state, &r.horizontal_state})
+  for (const ThrustState* st : {&r.min_state, &r.max_state, &r.collapse_state})
     limit_detail::add_refinement(ring, st->hinges, round.refinement);
   if (!std::isnan(r.thickness_min))
     round.refinement.insert(round.refinement.end(), f.feasible_refinement.begin(), f.feasible_refinement.end());
@@ -597,14 +477,63 @@ double largest_change(const LimitResult& a, const LimitResult& b) {
   compare(a.thickness_min, b.thickness_min);
   compare(a.load_factor(), b.load_factor());
   compare(a.load_factor_mechanism, b.load_factor_mechanism);
-  // a_c vanishes at t_min: its changes count relative to 1 % of g at least, as H/V's do to 0.01.
-  for (auto [x, y] : {std::pair{a.horizontal_load_factor(), b.horizontal_load_factor()},
-                      std::pair{a.horizontal_load_factor_mechanism, b.horizontal_load_factor_mechanism}}) {
+  return worst;
+}
+
+// The largest change of a_c and its kinematic value between two rings. a_c vanishes at t_min: its
+// changes count relative to 1 % of g at least, as H/V's do to 0.01.
+double largest_change(const HorizontalCollapse& a, const HorizontalCollapse& b) {
+  double worst = 0;
+  for (auto [x, y] : {std::pair{a.state.load_factor, b.state.load_factor}, std::pair{a.mechanism, b.mechanism}}) {
     if (std::isnan(x) && std::isnan(y)) continue;
     if (std::isnan(x) != std::isnan(y)) return std::numeric_limits<double>::infinity();
     worst = std::max(worst, std::abs(x - y) / std::max({std::abs(x), std::abs(y), 0.01}));
   }
   return worst;
+}
+
+// a_c converged in the joints on rings of its own, refined next to its hinges only: the thrust range,
+// t_min and the load factor keep the rings they converged on, whether or not a_c is asked for.
+// Rounds as analyse_limit's: converged after two quiet refinements in a row.
+struct HorizontalOutcome {
+  HorizontalCollapse collapse;
+  Ring ring;
+  bool failed = false;     // the program stopped without an answer
+  bool converged = false;
+  double change = 0;       // the last refinement's largest_change
+  int lp_solves = 0;
+};
+
+HorizontalOutcome converge_horizontal(const Scene& scene, const LimitOptions& options, Work& work) {
+  HorizontalOutcome out;
+  std::vector<double> refined = limit_detail::uniform_fractions(options.joints_count);
+  auto round = [&](HorizontalCollapse& c) {
+    limit_detail::make_ring_at(scene, options, fractions_at(scene, scene.thickness, options, refined), out.ring,
+                               work.scratch);
+    if (!horizontal_collapse(out.ring, options.friction, work, c, out.lp_solves)) out.failed = true;
+  };
+  round(out.collapse);
+  out.change = std::numeric_limits<double>::infinity();
+  int quiet = 0;
+  for (int k = 0; k < kMaxLimitRefinements && !out.failed; ++k) {
+    std::vector<double> refinement;
+    limit_detail::add_refinement(out.ring, out.collapse.state.hinges, refinement);
+    if (refinement.empty()) {
+      out.change = 0;
+      break;
+    }
+    refined.insert(refined.end(), refinement.begin(), refinement.end());
+    refined = limit_detail::merged_fractions(std::move(refined));
+    HorizontalCollapse next;
+    round(next);
+    if (out.failed) break;
+    out.change = largest_change(out.collapse, next);
+    out.collapse = std::move(next);
+    quiet = out.change <= kLimitTolerance ? quiet + 1 : 0;
+    if (quiet == 2) break;
+  }
+  out.converged = out.change <= kLimitTolerance && (quiet == 2 || out.change == 0);
+  return out;
 }
 
 }  // namespace
@@ -648,6 +577,25 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
                                          "of the joints",
                                          change, kMaxLimitRefinements);
     r.message = r.message.empty() ? text : text + "; " + r.message;
+  }
+  if (options.horizontal_load_factor && r.status != LimitStatus::lp_failure) {
+    HorizontalOutcome h = converge_horizontal(scene, options, work);
+    r.lp_solves += h.lp_solves;
+    if (h.failed) {
+      r.status = LimitStatus::lp_failure;
+      r.message = "the LP of the collapse acceleration stopped without an answer";
+      return r;
+    }
+    r.horizontal_state = std::move(h.collapse.state);
+    r.horizontal_load_factor_mechanism = h.collapse.mechanism;
+    r.horizontal_ring = std::move(h.ring);
+    if (!h.converged) {
+      if (r.status == LimitStatus::success) r.status = LimitStatus::not_converged;
+      const std::string text = fmt::format("the collapse acceleration still moved by {:.3g} (relative) at the last "
+                                           "of {} refinements of its joints",
+                                           h.change, kMaxLimitRefinements);
+      r.message = r.message.empty() ? text : text + "; " + r.message;
+    }
   }
   return r;
 }

@@ -14,6 +14,8 @@
 namespace ogive {
 namespace {
 
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
 // The force method's unknowns are the springing's forces: the state is y(s) = Y(s) [Fx0, Fy0, M0, 1], the
 // last column carrying the load (Fy' = b) and the springing's given movements (Ux0, Uy0, psi0).
 constexpr int kColumns = 4;
@@ -113,12 +115,24 @@ PanelColumns integrate_panel(const ArchModel& model, const Panel& panel, const C
   Eigen::Matrix<double, 3, kColumns> weights;
   const double b = model.self_weight();  // Fy' on the load column (quadrature needs it constant)
   weights << Y.row(kFx), -Y.row(kFy), Eigen::Matrix<double, 1, kColumns>::Unit(kLoad) * -b;
+  // A horizontal acceleration over the whole arch: the load column's Fx falls by h per length
+  // (Fx = Fx(a) - h (s - a)), adding -h sn (s - a) to its M': a fourth function and its two integrals.
+  const double h = model.horizontal_load(panel.a);  // constant: the self-weight's mass alone
+  Eigen::Matrix<double, Eigen::Dynamic, 3> shaken;
+  if (h != 0) {
+    shaken.resize(n, 3);
+    shaken.col(0) = sn.cwiseProduct(ds);
+    Eigen::VectorXd column_scaled(n);
+    cumulative(Q, J, shaken.col(0), column_scaled, shaken.col(1));
+    cumulative(Q, J, shaken.col(1), column_scaled, shaken.col(2));
+  }
   PanelColumns out;
   out.node.resize(n, kStateSize * kColumns);
   // Node by node, column by column: no temporaries; the displacements' derivatives from the model.
   for (int j = 0; j < kColumns; ++j) {
     const double Fx = Y(kFx, j), Fy0 = Y(kFy, j), M0 = Y(kM, j), psi0 = Y(kPsi, j);
     const double load = j == kLoad ? b : 0.0;
+    const double horizontal = j == kLoad ? h : 0.0;
     const double w0 = weights(0, j), w1 = weights(1, j), w2 = weights(2, j);
     for (int i = 0; i < n; ++i) {
       StateVector y, dy;
@@ -127,7 +141,12 @@ PanelColumns integrate_panel(const ArchModel& model, const Panel& panel, const C
       y[kFy] = Fy0 + load * ds[i];
       y[kM] = M0 + work(i, 3) * w0 + work(i, 4) * w1 + work(i, 5) * w2;
       y[kPsi] = psi0 + ds[i] * M0 + work(i, 6) * w0 + work(i, 7) * w1 + work(i, 8) * w2;
-      model.derivative(c[i], sn[i], y.data(), dy.data(), load);
+      if (horizontal != 0) {
+        y[kFx] -= horizontal * ds[i];
+        y[kM] -= horizontal * shaken(i, 1);
+        y[kPsi] -= horizontal * shaken(i, 2);
+      }
+      model.derivative(c[i], sn[i], y.data(), dy.data(), load, horizontal);
       for (int k : {kFx, kFy, kM, kPsi}) out.node(i, k * kColumns + j) = y[k];
       for (int k : {kUx, kUy}) out.node(i, k * kColumns + j) = dy[k];
     }
@@ -166,13 +185,14 @@ Level solve_level(const ArchModel& model, const std::vector<Panel>& panels, int 
   }
   // The whole transfer y(S) = Phi y(0) + p for the boundary-value solve the methods share. The given
   // springing components' columns are exact: a unit Ux0 or Uy0 is a rigid translation, a unit psi0 a
-  // rigid rotation about the springing (Ux = -y, Uy = x at the crown).
+  // rigid rotation about the springing (Ux = -y, Uy = x at the domain's end: the crown, or the right
+  // springing).
   SystemMatrix Phi = SystemMatrix::Identity();
   for (int j = 0; j < 3; ++j) Phi.col(kUnknowns[j]) = Y.col(j);
   const double L = model.scales().length;
-  const CurvePoint crown = model.curve().at(model.curve().length());
-  Phi(kUx, kPsi) = -crown.y / L;
-  Phi(kUy, kPsi) = crown.x / L;
+  const CurvePoint end = model.curve().at(model.curve().length());
+  Phi(kUx, kPsi) = -end.y / L;
+  Phi(kUy, kPsi) = end.x / L;
   // The load column started from the given movements: p is the transfer of a zero start.
   const StateVector p = Y.col(kLoad) - Phi * level.springing.col(kLoad);
   level.bvp = solve_single_segment(model, Phi, p);
@@ -233,7 +253,13 @@ std::int64_t sample_nodes(const ArchModel& model, Panel& panel, int degree) {
       panel.nodes.row(i) << q.cos, q.sin, i == 0 ? 0.0 : i == degree ? panel.b - panel.a : q.s / L - panel.a,
           h * q.speed / L;
     } else {
-      const double theta = model.theta(p);
+      // Over the whole arch the crown may be a kink (the pointed arch): an end node inside the domain
+      // takes the angle of its own panel's side, a few ulps inside it (the curve's angle at the kink is
+      // one side's).
+      double inside = p;
+      if (!model.half() && i == 0 && panel.a > 0) inside = p + 4 * kEps * std::abs(p);
+      if (!model.half() && i == degree && panel.b < model.length()) inside = p - 4 * kEps * std::abs(p);
+      const double theta = model.theta(inside);
       panel.nodes.row(i) << std::cos(theta), std::sin(theta), p - panel.a, h;
     }
     ++evaluations;
@@ -259,13 +285,22 @@ Solution solve_quadrature(std::shared_ptr<const ArchModel> model, const Options&
   // Fx constant and Fy' constant make M, psi and the displacements nested integrals of known functions;
   // with other loads, a pinned springing or a hinge inside, the method would need more columns than it
   // carries: the integrators and the closed form treat those scenes.
-  if (!model->half() || !model->uniform_load() || model->scene().left.kind != SupportKind::clamped) {
+  // A horizontal acceleration makes the symmetric arch's load antisymmetric in part: the same columns
+  // carry it over the whole arch (Fx' = -h, a constant too), without a hinge inside.
+  const bool shaken_symmetric = model->acceleration() != 0 && !model->hinge() && [&] {
+    Scene still = model->scene();
+    still.horizontal_acceleration = 0;
+    return still.symmetric();
+  }();
+  if (!(model->half() || shaken_symmetric) || !model->uniform_load() ||
+      model->scene().left.kind != SupportKind::clamped) {
     Solution sol;
     sol.method = Method::quadrature;
     sol.model = model;
     sol.status = Status::not_applicable;
     sol.message = "the quadrature method treats the symmetric arch with clamped springings under its own weight "
-                  "alone (solved over the half)";
+                  "alone (solved over the half; over the whole arch when a horizontal acceleration shakes it and no "
+                  "crown hinge divides it)";
     return sol;
   }
   std::vector<double> knots{0.0};

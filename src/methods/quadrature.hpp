@@ -2,8 +2,10 @@
 //
 // On the half arch Fx is constant and Fy' = 1 (scaled), so M, psi and the displacements follow from the
 // springing state by nested integrals of known functions of the angle theta(s) (arch_model.hpp): no
-// differential equation is left to step through. The half arch is cut into panels at the curve's
-// breakpoints (the crown, pointed or not, is the last panel's end); on each panel theta is sampled at
+// differential equation is left to step through. A horizontal acceleration a adds Fx' = -a (also a
+// constant) and makes the load antisymmetric in part: that arch is solved over its whole length, springing
+// to springing, by the same integrals. The domain is cut into panels at the curve's breakpoints (the
+// crown, pointed or not, is a panel's end); on each panel theta is sampled at
 // Chebyshev-Lobatto nodes and every integral is a Clenshaw-Curtis cumulative integral, exact for
 // polynomials of the panel's degree and spectrally accurate for the analytic pieces a curve is made of.
 // The six boundary conditions then close the same 6x6 system as the other methods.
@@ -30,7 +32,8 @@ namespace ogive {
 // Status: solve() judges the estimate as every method's (within_tolerance: success when it is at most
 // rtol; tolerance_not_met when even degree 256 does not meet it, a curve that is not smooth between its
 // breakpoints; ill_conditioned when the condition times round-off exceeds rtol); singular_system from
-// finish_solution; not_applicable when
+// finish_solution; not_applicable beyond the symmetric arch with clamped springings under its own weight
+// (with or without a horizontal acceleration; a crown hinge only without one), and when
 // Options::restart_at_breakpoints is off on a curve that has breakpoints (a panel across a jump converges
 // too slowly for the estimate to hold). Diagnostics: segments = panels,
 // rhs_evaluations = angle evaluations theta(s), steps = 0.

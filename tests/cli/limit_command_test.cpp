@@ -209,3 +209,22 @@ TEST_CASE("cli: limit names the elastic options it refuses, and its help lists o
     CHECK(help.out.find(own) != std::string::npos);
   }
 }
+
+TEST_CASE("cli: asking for the collapse acceleration changes no other number of limit") {
+  // a_c converges on rings of its own: H_min, H_max, t_min and the load factor are the same bytes with
+  // --all-columns (which computes it) as without (which does not).
+  const std::vector<std::string> scene = {"--eccentricity", "0,0.5", "--thickness-ratio", "0.1,0.14",
+                                          "--point-load", "2e4", "--point-load-at", "0.3"};
+  std::vector<std::string> plain = scene, all = scene;
+  plain.insert(plain.end(), {"--columns", "H_min,H_max,thickness_min_ratio,load_factor,hinges_min,hinges_collapse"});
+  all.push_back("--all-columns");
+  const Run without = limit_cli(plain), with = limit_cli(all);
+  REQUIRE(without.status == 0);
+  REQUIRE(with.status == 0);
+  for (std::size_t row = 1; row <= 4; ++row) {
+    CAPTURE(row);
+    CHECK_FALSE(field(with.out, "horizontal_load_factor", row).empty());
+    for (const char* name : {"H_min", "H_max", "thickness_min_ratio", "load_factor", "hinges_min", "hinges_collapse"})
+      CHECK(field(with.out, name, row) == field(without.out, name, row));
+  }
+}

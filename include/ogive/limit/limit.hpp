@@ -78,8 +78,8 @@ struct LimitOptions {
   // Coulomb friction coefficient of the joints; 0: no sliding check (sliding is excluded). When > 0,
   // every joint must also satisfy |shear| <= friction * normal force.
   double friction = 0;
-  // Also the horizontal acceleration of collapse a_c (LimitResult::horizontal_state): one more program
-  // per round, and its hinges refine the ring too.
+  // Also the horizontal acceleration of collapse a_c (LimitResult::horizontal_state): one program per
+  // round on rings of its own (LimitResult::horizontal_ring), refined next to its hinges alone.
   bool horizontal_load_factor = false;
   // Ceres-style check: false with the reason in *why (naming the field) when an option is unusable.
   bool is_valid(std::string* why) const;
@@ -228,13 +228,17 @@ struct LimitResult {
   // with every vertical load at factor 1 and the scene's own acceleration ignored: its state (load_factor
   // = a_c; H the left springing's), and the kinematic a_c of the same hinges
   // (mechanism_horizontal_load_factor). Absent when the arch cannot carry its vertical loads, or no
-  // finite acceleration makes a mechanism.
+  // finite acceleration makes a mechanism. Its joints are horizontal_ring's.
   ThrustState horizontal_state;
   double horizontal_load_factor_mechanism = std::numeric_limits<double>::quiet_NaN();
   int lp_solves = 0;  // linear programs solved for this result
-  // The ring of the states above (their joint indices and crossings): make_ring(scene, options)'s,
-  // refined next to the hinges. t_min's rings (other thicknesses) are not kept.
+  // The ring of the states above but horizontal_state (their joint indices and crossings):
+  // make_ring(scene, options)'s, refined next to the hinges. t_min's rings (other thicknesses) are not
+  // kept.
   Ring ring;
+  // horizontal_state's ring (LimitOptions::horizontal_load_factor): make_ring(scene, options)'s refined
+  // next to a_c's hinges alone, so that asking for a_c changes no other number. Empty otherwise.
+  Ring horizontal_ring;
 
   double H_min() const { return min_state.H; }
   double H_max() const { return max_state.H; }
@@ -252,7 +256,9 @@ struct LimitResult {
 // every hinge (of the minimum, maximum and collapse states, and of the thinnest arch) halved, two on
 // each side, until in two refinements in a row no number of the result (H_min, H_max, t_min,
 // load_factor, load_factor_mechanism) moved by more than kLimitTolerance relative (status
-// not_converged after kMaxLimitRefinements).
+// not_converged after kMaxLimitRefinements). a_c and its kinematic value converge in the same way on
+// rings of their own, refined next to a_c's hinges (a change relative to 0.01 g at least, since a_c
+// vanishes at t_min).
 // The result is that of the last, finest ring; lp_solves counts every round's programs.
 //
 // t_min (same axis, stereotomy and loads; the fill follows the extrados) is found by a bracketing
