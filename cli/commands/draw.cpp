@@ -191,7 +191,7 @@ std::string picture_row(const Columns& columns, const SceneParameters& p, const 
 int run_draw(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
   Columns columns = draw_columns();
   if (d.columns.columns == "help") {
-    write_all(out, columns.help());
+    write_all(out, columns.help(d.columns));
     return kExitOk;
   }
   const Options o = checked_picture_options(d, cmd, "a file name ending in .svg");
@@ -241,7 +241,7 @@ std::vector<std::pair<std::string, std::string>> given_inputs(const CLI::App& cm
 int run_report(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
   Columns columns = draw_columns();
   if (d.columns.columns == "help") {
-    write_all(out, columns.help());
+    write_all(out, columns.help(d.columns));
     return kExitOk;
   }
   const Options o = checked_picture_options(d, cmd, "a file name ending in .html, or - for standard output");

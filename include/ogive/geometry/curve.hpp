@@ -153,6 +153,12 @@ struct SectionFaces {
 };
 SectionFaces section_faces(const CurvePoint& p, double thickness);
 
+// The height (m) above the springing line of the extrados (the axis offset by t/2 along the normal) of
+// a ring of thickness t over the crown's vertical: above a pointed crown, where the two sides' extrados
+// meet (higher than the crown + t/2). The level of a fill "to the crown's extrados". A whole curve:
+// the higher of its two sides' there.
+double extrados_crown_height(const Curve& curve, double thickness);
+
 // Position, angle and curvature on one arc, at distance ds (0 <= ds <= arc.length) from its start.
 CurvePoint point_on_arc(const CircularArc& arc, double ds);
 
