@@ -216,6 +216,7 @@ SceneParameters ScenePlan::parameters(std::size_t index) const {
   p.scene = index + 1;
   p.curve = options_.curve;
   p.plane_strain = options_.plane_strain;
+  p.force_unit = force_unit_;
   for (std::size_t i = options_.axes.size(); i-- > 0;) {
     const Axis& a = options_.axes[i];
     p.*(a.field) = a.values[index % a.values.size()];
@@ -301,9 +302,9 @@ ScenePlan::Built ScenePlan::build(const SceneParameters& p) const {
     scene.section = section_;
     scene.loads = options_.file_loads;
     // The force options in the unit of --units (the row echoes them as given).
-    if (!std::isnan(p.point_load)) scene.loads.points.push_back({p.point_load * force_unit_, p.point_load_at});
+    if (!std::isnan(p.point_load)) scene.loads.points.push_back({p.point_load * p.force_unit, p.point_load_at});
     if (!std::isnan(p.live_load))
-      scene.loads.live.push_back({p.live_load * force_unit_, p.live_load_from, p.live_load_to});
+      scene.loads.live.push_back({p.live_load * p.force_unit, p.live_load_from, p.live_load_to});
     if (!std::isnan(p.fill_density)) scene.loads.fills.push_back({p.fill_density, p.fill_height_ratio});
     scene.validate();
     out.scene = std::move(scene);

@@ -199,6 +199,11 @@ TEST_CASE("metres: --units kN divides every force and moment by 1000, --digits r
     CHECK(std::abs(x - r) <= 0.5 * unit * (1 + kExact));
   }
   CHECK(column(three.out, "H") == "57400");
+  // A drawing does not depend on the unit the loads were given in.
+  const Run drawn_kn = ok({"draw", "--point-load", "50", "--units", "kN", "--output", "-"});
+  const Run drawn_n = ok({"draw", "--point-load", "50000", "--output", "-"});
+  CHECK(drawn_kn.out.find("P 50 kN/m") != std::string::npos);
+  CHECK(drawn_kn.out == drawn_n.out);
 }
 
 }  // namespace ogive::test
