@@ -200,10 +200,12 @@ TEST_CASE("metres: --units kN divides every force and moment by 1000, --digits r
   }
   CHECK(column(three.out, "H") == "57400");
   // A drawing does not depend on the unit the loads were given in.
-  const Run drawn_kn = ok({"draw", "--point-load", "50", "--units", "kN", "--output", "-"});
-  const Run drawn_n = ok({"draw", "--point-load", "50000", "--output", "-"});
+  const Run drawn_kn = ok({"report", "--point-load", "50", "--units", "kN", "--output", "-"});
+  const Run drawn_n = ok({"report", "--point-load", "50000", "--output", "-"});
   CHECK(drawn_kn.out.find("P 50 kN/m") != std::string::npos);
-  CHECK(drawn_kn.out == drawn_n.out);
+  // The pages differ only in the inputs as given.
+  const auto body = [](const std::string& page) { return page.substr(0, page.find("id=\"inputs\"")); };
+  CHECK(body(drawn_kn.out) == body(drawn_n.out));
 }
 
 }  // namespace ogive::test
