@@ -250,9 +250,9 @@ void ScenePlan::derive_metres(SceneParameters& p) const {
   else p.thickness = p.thickness_ratio * L;
   if (!std::isnan(p.rise)) p.rise_ratio = p.rise / L;
   if (family_->eccentricity) {
-    if (!std::isnan(p.radius)) p.eccentricity = p.radius / L - 0.5;
-    else if (!std::isnan(p.rise_ratio)) p.eccentricity = p.rise_ratio * p.rise_ratio - 0.25;
-    if (std::isnan(p.radius)) p.radius = (0.5 + p.eccentricity) * L;
+    if (!std::isnan(p.radius)) p.eccentricity = pointed_eccentricity_for_radius(p.radius / L);
+    else if (!std::isnan(p.rise_ratio)) p.eccentricity = pointed_eccentricity_for_rise(p.rise_ratio);
+    if (std::isnan(p.radius)) p.radius = pointed_radius(L, p.eccentricity);
   }
   if (!std::isnan(p.rise_ratio) && std::isnan(p.rise)) p.rise = p.rise_ratio * L;
   if (!std::isnan(p.point_load_x)) p.point_load_at = p.point_load_x / L;

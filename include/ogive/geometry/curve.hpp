@@ -168,4 +168,13 @@ CurvePoint point_on_arc(const CircularArc& arc, double ds);
 // its domain.
 std::shared_ptr<const Curve> make_pointed(double span, double eccentricity);
 
+// The pointed arch's radius, R = (0.5 + eccentricity) span (m), and the eccentricity that gives a rise
+// ratio h / span (the crown over the centre at eccentricity * span beyond mid-span: h^2 = R^2 -
+// (eccentricity span)^2, so eccentricity = (h / span)^2 - 1/4) or a radius ratio R / span (R / span -
+// 1/2). Below the semicircle's (h / span or R / span under 1/2) the eccentricity is negative: no pointed
+// arch (make_pointed refuses it).
+double pointed_radius(double span, double eccentricity);
+double pointed_eccentricity_for_rise(double rise_ratio);
+double pointed_eccentricity_for_radius(double radius_ratio);
+
 }  // namespace ogive
