@@ -34,6 +34,15 @@ void refuse_empty_name(const CLI::App& cmd, const char* flag, const std::string&
     throw UsageError(fmt::format("{}: the name must not be empty (give {})", flag, what));
 }
 
+void hide_inapplicable(CLI::App& cmd, std::span<const Inapplicable> options) {
+  for (const Inapplicable& o : options) cmd.get_option(o.flag)->group("");
+}
+
+void refuse_inapplicable(const CLI::App& cmd, const char* command, std::span<const Inapplicable> options) {
+  for (const Inapplicable& o : options)
+    if (cmd.count(o.flag) > 0) throw UsageError(fmt::format("{}: does not apply to {} ({})", o.flag, command, o.why));
+}
+
 std::string did_you_mean(const std::string& name, const std::vector<std::string>& candidates) {
   if (name.size() > 100) return "";
   std::size_t best = std::string::npos, best_distance = 3;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,16 @@ std::string did_you_mean(const std::string& name, const std::vector<std::string>
 // A file or directory option given as "": UsageError naming it (rather than read as not given);
 // `what` says what the option takes, e.g. "a file, or - for standard input".
 void refuse_empty_name(const CLI::App& cmd, const char* flag, const std::string& value, const char* what);
+
+// Options a command registers with the scene options but cannot use, and why: hide_inapplicable
+// leaves them out of the command's --help, refuse_inapplicable refuses any of them that was given
+// ("FLAG: does not apply to COMMAND (WHY)").
+struct Inapplicable {
+  const char* flag;
+  const char* why;
+};
+void hide_inapplicable(CLI::App& cmd, std::span<const Inapplicable> options);
+void refuse_inapplicable(const CLI::App& cmd, const char* command, std::span<const Inapplicable> options);
 
 // CLI11 would read "" as 0 and saturate huge integers: numeric options must be what parse_number
 // accepts (the whole text, finite), and counts whole numbers within what an int holds.

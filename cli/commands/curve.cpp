@@ -25,6 +25,45 @@ struct CurveOptions {
   int threads = 1;
 };
 
+// The scene options that do not shape the axis, and why: refused when given, left out of --help.
+constexpr const char* kLoadWhy = "it draws the axis alone: loads enter thrust, profile, limit, draw and report";
+constexpr const char* kSupportWhy = "it draws the axis alone: supports and their movements enter the analyses";
+constexpr const char* kMaterialWhy = "it draws the axis alone: the material and section enter the analyses";
+constexpr Inapplicable kNotForCurve[] = {
+    {"--point-load", kLoadWhy},
+    {"--point-load-at", kLoadWhy},
+    {"--point-load-x", kLoadWhy},
+    {"--live-load", kLoadWhy},
+    {"--live-load-from", kLoadWhy},
+    {"--live-load-to", kLoadWhy},
+    {"--live-load-from-x", kLoadWhy},
+    {"--live-load-to-x", kLoadWhy},
+    {"--fill-density", kLoadWhy},
+    {"--fill-height-ratio", kLoadWhy},
+    {"--fill-height", kLoadWhy},
+    {"--loads-file", kLoadWhy},
+    {"--horizontal-acceleration", kLoadWhy},
+    {"--supports", kSupportWhy},
+    {"--left-support", kSupportWhy},
+    {"--right-support", kSupportWhy},
+    {"--crown-hinge", kSupportWhy},
+    {"--support-displacement-ratio", kSupportWhy},
+    {"--left-spread-ratio", kSupportWhy},
+    {"--right-spread-ratio", kSupportWhy},
+    {"--left-settlement-ratio", kSupportWhy},
+    {"--right-settlement-ratio", kSupportWhy},
+    {"--left-rotation", kSupportWhy},
+    {"--right-rotation", kSupportWhy},
+    {"--youngs-modulus", kMaterialWhy},
+    {"--poisson-ratio", kMaterialWhy},
+    {"--density", kMaterialWhy},
+    {"--gravity", kMaterialWhy},
+    {"--shear-coefficient", kMaterialWhy},
+    {"--plane-strain", kMaterialWhy},
+    {"--section", kMaterialWhy},
+    {"--units", "it prints lengths and angles, no force"},
+};
+
 Columns curve_columns() {
   const std::vector<std::string> results = {"status", "message", "s", "x", "y", "theta", "kappa"};
   return Columns(results, results);
@@ -37,6 +76,7 @@ int run_curve(CurveOptions& co, const CLI::App& cmd, std::ostream& out) {
     write_all(out, columns.help(co.columns));
     return kExitOk;
   }
+  refuse_inapplicable(cmd, "curve", kNotForCurve);
   const int stations = co.stations;
   check_stations(stations);
   const ScenePlan plan(co.scene, cmd);
@@ -78,6 +118,7 @@ Run add_curve_options(CLI::App& cmd) {
       ->check(whole_count())
       ->capture_default_str();
   add_column_options(cmd, options->columns);
+  hide_inapplicable(cmd, kNotForCurve);
   add_threads_option(cmd, options->threads);
   return [options, &cmd](std::ostream& out) { return run_curve(*options, cmd, out); };
 }

@@ -81,7 +81,7 @@ constexpr const char* kMovementWhy =
     "rigid voussoirs ignore the supports' movements: a spreading support brings the arch to H_min";
 constexpr const char* kElasticWhy =
     "rigid voussoirs have no stiffness: the material's elastic constants belong to thrust, profile and draw";
-constexpr std::pair<const char*, const char*> kNotForLimit[] = {
+constexpr Inapplicable kNotForLimit[] = {
     {"--support-displacement-ratio", kMovementWhy},
     {"--left-spread-ratio", kMovementWhy},
     {"--right-spread-ratio", kMovementWhy},
@@ -107,8 +107,7 @@ LimitOptions limit_options(const LimitText& t, const CLI::App& cmd) {
   o.friction = t.friction;
   // The loads are the scene's (--point-load, --live-load, --fill-density, --loads-file) and so are the
   // pins (--supports pinned, --crown-hinge); the rest of the scene options does not enter rigid voussoirs.
-  for (const auto& [flag, why] : kNotForLimit)
-    if (cmd.count(flag) > 0) throw UsageError(fmt::format("{}: does not apply to limit ({})", flag, why));
+  refuse_inapplicable(cmd, "limit", kNotForLimit);
   if (!t.thrust_line.empty()) lookup(kThrustLines, t.thrust_line, "--thrust-line");
   if (t.repeats < 0 || t.repeats > 100000)
     throw UsageError(fmt::format("--repeats: must lie in [0, 100000] (0: no timing), got {}", t.repeats));
@@ -264,7 +263,7 @@ int run_limit(LimitCommandOptions& lo, const CLI::App& cmd, std::ostream& out) {
 Run add_limit_options(CLI::App& cmd) {
   auto options = std::make_shared<LimitCommandOptions>();
   add_scene_options(cmd, options->scene);
-  for (const auto& [flag, why] : kNotForLimit) cmd.get_option(flag)->group("");  // hidden from --help
+  hide_inapplicable(cmd, kNotForLimit);
   add_analysis_options(cmd, options->text);
   add_column_options(cmd, options->columns);
   add_threads_option(cmd, options->text.threads);

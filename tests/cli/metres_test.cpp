@@ -164,6 +164,14 @@ TEST_CASE("metres: both options of a pair are refused with one line naming both"
   check_refused({"thrust", "--digits", "0"});
   check_refused({"thrust", "--digits", "18"});
   check_refused({"limit", "--digits", "2.5"});
+  // curve draws the axis alone: loads, supports, material and the force unit do not apply.
+  check_refused({"curve", "--point-load", "1"});
+  check_refused({"curve", "--fill-density", "1", "--fill-height", "crown"});
+  check_refused({"curve", "--units", "kN"});
+  check_refused({"curve", "--youngs-modulus", "1"});
+  CHECK(ok({"curve", "--help"}).out.find("--point-load") == std::string::npos);
+  CHECK(ok({"curve", "--curve", "segmental", "--rise", "2", "--span", "8", "--stations", "3"}).out ==
+        ok({"curve", "--curve", "segmental", "--rise-ratio", "0.25", "--span", "8", "--stations", "3"}).out);
   // A points file sets its own span: --span may repeat it, not change it.
   const std::string file = OGIVE_DATA_DIR "/curves/catenary-survey.csv";
   const Run same = ok({"thrust", "--curve", "points", "--curve-file", file, "--span", "12", "--columns", "H"});
