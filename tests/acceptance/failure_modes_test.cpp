@@ -107,6 +107,11 @@ TEST_CASE("failure mode: steps across jumps of curvature - H/V off by up to 37 r
   CHECK(relative_difference(raw.H_over_V, ref.H_over_V) > 10 * rtol);
   const Solution verified = run(scene, Method::shooting, Integrator::adams, rtol, true, false);
   CHECK(verified.status == Status::tolerance_not_met);
+  // At rtol 1e-8 the three solves' differences happen to agree (estimate 2.0e-9) while the profile is
+  // off by 2.6e-8: across the jumps no estimate holds, and the row is unverified, never a success.
+  const Solution lucky = run(scene, Method::shooting, Integrator::adams, 1e-8, true, false);
+  CHECK(lucky.status == Status::unverified);
+  CHECK(true_error(lucky, ref, scene) > 1e-8);
   // With restarts at the breakpoints (the default) the same solve meets its tolerance.
   const Solution restarted = run(scene, Method::shooting, Integrator::adams, rtol, true);
   REQUIRE(restarted.ok());
@@ -114,6 +119,7 @@ TEST_CASE("failure mode: steps across jumps of curvature - H/V off by up to 37 r
 }
 
 TEST_CASE("failure mode: a rough survey - single shooting's profile at 67 rtol - flagged - auto meets rtol") {
+  // (and across the breakpoints no row says success)
   const Scene scene = scene_of(read_points_curve(kSurvey));
   const Solution ref = reference(scene);
   REQUIRE(ref.field);
@@ -129,13 +135,13 @@ TEST_CASE("failure mode: a rough survey - single shooting's profile at 67 rtol -
   CHECK(chosen.method == Method::quadrature);
   CHECK(within_tolerance(chosen.diagnostics.error_estimate, rtol));
   CHECK(within_tolerance(true_error(chosen, ref, scene), rtol));
-  // Told to ignore the breakpoints, the quadrature does not apply, and auto's CVODE ladder adds
-  // segments until the verified estimate meets rtol.
+  // Told to ignore the breakpoints, the quadrature does not apply, and CVODE steps across the
+  // survey's jumps of curvature, where differences between tolerances bound nothing: auto's answer is
+  // unverified, and says why.
   const Solution ladder = run(scene, Method::automatic, Integrator::adams, rtol, true, false);
-  REQUIRE(ladder.ok());
-  CHECK(ladder.method == Method::multiple_shooting);
-  CHECK(within_tolerance(ladder.diagnostics.error_estimate, rtol));
-  CHECK(within_tolerance(true_error(ladder, ref, scene), rtol));
+  CHECK(ladder.status == Status::unverified);
+  CHECK(ladder.message.find("--ignore-breakpoints") != std::string::npos);
+  CHECK(ladder.method != Method::quadrature);
 }
 
 TEST_CASE("conditioning: flat segmental arches meet rtol 1e-12 - ill_conditioned only where condition x round-off exceeds rtol") {
