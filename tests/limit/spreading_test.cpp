@@ -105,3 +105,11 @@ TEST_CASE("spreading: the capacity converges with the joints count and the steps
   const double b = analyse_spreading(scene, fine, many).d_max;
   CHECK(close(a, b, kThreeDigits));
 }
+
+TEST_CASE("spreading: a pointed arch's two hinges beside the crown are no three-hinge mechanism, not a capacity of 0") {
+  const Scene scene = paper_scene(0.5, 0.08);
+  const SpreadResult r = analyse_spreading(scene, {}, {});
+  CHECK(r.status == SpreadStatus::no_mechanism);
+  REQUIRE(r.path.size() == 1);
+  CHECK(close(r.path.front().H, analyse_limit(scene, {}).H_min(), kSameState));
+}
