@@ -1,6 +1,7 @@
 #include "columns.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 
@@ -24,8 +25,11 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"rise_ratio", "", "rise / span: as asked, or for curves without --rise-ratio their own (12 digits)"},
     {"haunch_angle", "deg", "three- and four-centred arches: angle turned by the haunch arc"},
     {"crown_angle", "deg", "four-centred arch: tangent's angle at the pointed crown"},
+    {"radius", "m", "pointed arch: the arcs' radius R = (0.5 + eccentricity) span"},
+    {"rise", "m", "rise h: the crown's height above the springing line (as asked, or the curve's own, 12 digits)"},
     {"span", "m", "span L between the springings, on the axis"},
     {"thickness_ratio", "", "thickness t / span"},
+    {"thickness", "m", "thickness t"},
     {"support_displacement_ratio", "", "outward movement d of each springing / span"},
     {"youngs_modulus", "Pa", "Young's modulus E"},
     {"poisson_ratio", "", "Poisson's ratio nu"},
@@ -45,11 +49,15 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"right_rotation", "rad", "right springing's given rotation, counter-clockwise positive"},
     {"point_load", "N/m", "vertical point load P on the axis, downwards, per metre of vault width"},
     {"point_load_at", "", "where P acts, x / span from the left springing"},
+    {"point_load_x", "m", "where P acts, x from the left springing"},
     {"live_load", "N/m^2", "uniform load q per horizontal length, downwards, per metre of vault width"},
     {"live_load_from", "", "where the live load starts, x / span"},
     {"live_load_to", "", "where the live load ends, x / span"},
+    {"live_load_from_x", "m", "where the live load starts, x from the left springing"},
+    {"live_load_to_x", "m", "where the live load ends, x from the left springing"},
     {"fill_density", "kg/m^3", "fill density rho_f (load rho_f g max(0, h_f - y_extrados) per horizontal length)"},
     {"fill_height_ratio", "", "the fill's level h_f above the springing line / span"},
+    {"fill_height", "m", "the fill's level h_f above the springing line"},
     {"loads_file", "", "the --loads-file whose loads the scene carries too"},
     {"horizontal_acceleration", "", "horizontal acceleration a / g, left to right positive, on the self-weight and fill"},
     {"method", "", "method that produced the numbers (closed-form, shooting, multiple-shooting)"},
@@ -169,6 +177,26 @@ double rounded(double value) {
   return std::stod(fmt::format("{:.12g}", value));
 }
 
+// A force or moment unit (per metre of vault width) and the same in kN: what --units kN divides by 1000.
+std::string_view in_kilonewtons(std::string_view unit) {
+  if (unit == "N/m") return "kN/m";
+  if (unit == "N m/m") return "kN m/m";
+  if (unit == "N/m^2") return "kN/m^2";
+  return {};
+}
+
+// --digits as a number of significant digits (0: not given, the shortest round-trip decimal).
+int significant_digits(const std::string& text) {
+  if (text.empty()) return 0;
+  int digits = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), digits);
+  if (error != std::errc{} || end != text.data() + text.size() || digits < 1 || digits > 17)
+    throw UsageError(fmt::format("--digits: must be a whole number in [1, 17] (significant digits; 17 reads back "
+                                 "every double exactly), got '{}'",
+                                 text.substr(0, 60)));
+  return digits;
+}
+
 }  // namespace
 
 const std::vector<std::string>& scene_columns() {
@@ -178,8 +206,15 @@ const std::vector<std::string>& scene_columns() {
       "plane_strain", "section", "left_support", "right_support", "crown_hinge", "left_spread_ratio",
       "right_spread_ratio", "left_settlement_ratio", "right_settlement_ratio", "left_rotation", "right_rotation",
       "point_load", "point_load_at", "live_load", "live_load_from", "live_load_to", "fill_density",
-      "fill_height_ratio", "loads_file", "horizontal_acceleration"};
+      "fill_height_ratio", "loads_file", "horizontal_acceleration", "thickness", "rise", "radius", "point_load_x",
+      "live_load_from_x", "live_load_to_x", "fill_height"};
   return columns;
+}
+
+double force_unit(const std::string& units) {
+  if (units == "N") return 1.0;
+  if (units == "kN") return 1000.0;
+  throw UsageError(fmt::format("--units: must be N or kN, got '{}'", units.substr(0, 60)));
 }
 
 bool ColumnText::given() const { return option && option->count() > 0; }
@@ -189,6 +224,14 @@ void add_column_options(CLI::App& cmd, ColumnText& text) {
                                "columns to print, comma-separated, in the order given after scene; 'help' lists every column "
                                "with its unit (default: scene, the inputs that vary, the results)");
   cmd.add_flag("--all-columns", text.all_columns, "print every column, the inputs that do not vary included");
+  cmd.add_option("--units", text.units,
+                 "force unit: N or kN, of the force options (--point-load in N/m or kN/m, --live-load in N/m^2 or "
+                 "kN/m^2) and of every force and moment printed (N/m or kN/m, N m/m or kN m/m per metre of vault "
+                 "width; with kN a first line '# units: kN' says so); loads files stay in N")
+      ->capture_default_str();
+  cmd.add_option("--digits", text.digits,
+                 "significant digits of every number printed, 1 to 17 (default: the shortest decimal that reads back "
+                 "to the same double)");
 }
 
 Columns::Columns(const std::vector<std::string>& results, std::vector<std::string> defaults)
@@ -199,6 +242,17 @@ Columns::Columns(const std::vector<std::string>& results, std::vector<std::strin
 void Columns::select(const ColumnText& ct, const std::vector<std::string>& varying_inputs,
                      const std::vector<std::string>& varying_solver) {
   if (ct.given() && ct.all_columns) throw UsageError("--columns: give either --columns or --all-columns");
+  selection_.digits = significant_digits(ct.digits);
+  selection_.divisor.clear();
+  kilonewtons_ = force_unit(ct.units) != 1.0;
+  if (kilonewtons_) {
+    // The results' forces and moments; the inputs print as given (in the unit they were given in).
+    selection_.divisor.assign(all_.size(), 1.0);
+    for (std::size_t i = scene_columns().size(); i < all_.size(); ++i) {
+      const ColumnDoc* d = find_column_doc(all_[i]);
+      if (d && !in_kilonewtons(d->unit).empty()) selection_.divisor[i] = force_unit(ct.units);
+    }
+  }
   std::vector<bool>& keep = selection_.keep;
   selection_.order.clear();
   keep.assign(all_.size(), ct.all_columns);
@@ -242,7 +296,7 @@ std::string Columns::header() const {
   std::vector<std::string_view> kept;
   for (std::size_t i = 0; i < all_.size(); ++i)
     if (selection_.keep[i]) kept.push_back(all_[i]);
-  std::string out;
+  std::string out = kilonewtons_ ? "# units: kN (forces in kN/m and moments in kN m/m per metre of vault width)\n" : "";
   for (std::size_t k = 0; k < kept.size(); ++k) {
     if (k > 0) out += ',';
     out += kept[selection_.order.empty() ? k : selection_.order[k]];
@@ -250,12 +304,15 @@ std::string Columns::header() const {
   return out + "\n";
 }
 
-std::string Columns::help() const {
+std::string Columns::help(const ColumnText& ct) const {
+  const bool kilonewtons = force_unit(ct.units) != 1.0;
   std::string out = "column,unit,meaning\n";
   CsvRow row;
   for (const std::string& name : all_) {
     const ColumnDoc* d = find_column_doc(name);
-    row.add(name).add(d ? d->unit : "").add(d ? d->meaning : "");
+    const std::string_view unit = d ? d->unit : "";
+    row.add(name).add(kilonewtons && !in_kilonewtons(unit).empty() ? in_kilonewtons(unit) : unit);
+    row.add(d ? d->meaning : "");
     out += row.take();
   }
   return out;
@@ -286,6 +343,12 @@ void add_scene_columns(CsvRow& row, const SceneParameters& p, const Curve* curve
     add_parameter(row, v);
   row.add(p.loads_file);
   row.add(p.horizontal_acceleration);
+  // The metre forms, after the ratios (so that every column before them keeps its place).
+  row.add(p.thickness);
+  if (!std::isnan(p.rise)) row.add(p.rise);
+  else if (curve && row.wants_next()) row.add(rounded(curve->rise()));
+  else row.add(std::string_view{});
+  for (double v : {p.radius, p.point_load_x, p.live_load_from_x, p.live_load_to_x, p.fill_height}) add_parameter(row, v);
 }
 
 std::string sparse_row(const Columns& columns, const SceneParameters& p, const Curve* curve,

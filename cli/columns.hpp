@@ -26,11 +26,17 @@ const std::vector<std::string>& scene_columns();
 struct ColumnText {
   std::string columns;
   bool all_columns = false;
+  std::string units = "N";  // --units: N or kN (force_unit)
+  std::string digits;       // --digits: significant digits, 1 .. 17; empty: the shortest round-trip decimal
   const CLI::Option* option = nullptr;  // --columns, to tell an empty list from none given
   bool given() const;
 };
 
 void add_column_options(CLI::App& cmd, ColumnText& text);
+
+// The force unit in N of --units (N: 1, kN: 1000): of the force options given (--point-load, --live-load)
+// and of the force and moment columns printed. UsageError for another unit.
+double force_unit(const std::string& units);
 
 // A command's columns in their full order (the scene's, then the results), and which of them are
 // printed: by default the scene number, the inputs that vary in the sweep and the command's default
@@ -48,12 +54,13 @@ class Columns {
   const FieldSelection* keep() const { return &selection_; }
   bool selected(std::string_view name) const;
   std::string header() const;
-  // --columns help: the command's columns, their units and meanings, as CSV.
-  std::string help() const;
+  // --columns help: the command's columns, their units (as --units prints them) and meanings, as CSV.
+  std::string help(const ColumnText& ct) const;
 
  private:
   std::vector<std::string> all_, defaults_;
   FieldSelection selection_;
+  bool kilonewtons_ = false;  // --units kN
 };
 
 // A parameter that does not apply to the scene's curve is an empty field, never "nan".

@@ -25,8 +25,10 @@ constexpr CurveFamily kFamilies[] = {
 bool positive(double v) { return v > 0; }
 bool any_number(double) { return true; }
 bool within_span(double v) { return v >= 0 && v <= 1; }
+bool non_negative(double v) { return v >= 0; }
 bool small_movement(double v) { return std::abs(v) <= 0.01; }
 constexpr const char* kSpanRule = "must lie in [0, 1] (x / L within the span)";
+constexpr const char* kInSpanRule = "must lie in [0, L] (m from the left springing, within the span)";
 constexpr const char* kMovementRule = "must lie in [-0.01, 0.01] (beyond, small-displacement theory does not hold)";
 
 // What each scene option is, with its unit, for --help (the rules are scene_axes').
@@ -42,7 +44,8 @@ const std::map<std::string, std::string>& axis_meanings() {
       {"--support-displacement-ratio", "outward movement of each springing over span d/L (0.0003 = 0.03 %)"},
       {"--haunch-angle", "three- and four-centred: angle the haunch arc turns through, degrees"},
       {"--crown-angle", "four-centred: the tangent's angle above the horizontal at the crown, degrees"},
-      {"--rise-ratio", "rise over span h/L (not for pointed, semicircular, points, whole-points)"},
+      {"--rise-ratio", "rise over span h/L (not for semicircular, points, whole-points; pointed: sets the "
+                       "eccentricity, (h/L)^2 - 1/4)"},
       {"--eccentricity",
        "pointed: the centres' offset beyond mid-span over the span (0 semicircle, 0.5 equilateral)"},
       {"--point-load", "vertical point load P on the axis, N per metre of vault width, downwards"},
@@ -53,6 +56,15 @@ const std::map<std::string, std::string>& axis_meanings() {
       {"--fill-density",
        "fill density rho_f, kg/m^3: load rho_f g max(0, h_f - y_extrados(x)) per horizontal length"},
       {"--fill-height-ratio", "the fill's level h_f above the springing line, over the span"},
+      {"--fill-height",
+       "the fill's level h_f above the springing line, m; crown: the height of the extrados over the crown"},
+      {"--thickness", "thickness t, m"},
+      {"--rise", "rise h, m: the crown's height above the springing line (not for semicircular, points, "
+                 "whole-points; pointed: sets the eccentricity)"},
+      {"--radius", "pointed: the arcs' radius R, m (R = (0.5 + eccentricity) L)"},
+      {"--point-load-x", "where the point load acts, m from the left springing"},
+      {"--live-load-from-x", "where the live load starts, m from the left springing"},
+      {"--live-load-to-x", "where the live load ends, m from the left springing"},
       {"--horizontal-acceleration",
        "horizontal acceleration a, a fraction of g, left to right positive: the self-weight and the fill also "
        "carry a times their weight horizontally (point and live loads do not)"},
@@ -71,6 +83,8 @@ std::string absent_default(const std::string& flag) {
   if (flag == "--rise-ratio" || flag == "--haunch-angle" || flag == "--crown-angle") return " (default: the curve's)";
   if (flag == "--left-spread-ratio" || flag == "--right-spread-ratio") return " (default: --support-displacement-ratio)";
   if (flag == "--point-load-at" || flag == "--live-load-from" || flag == "--live-load-to") return "";
+  if (flag == "--thickness") return " (default: --thickness-ratio)";
+  if (flag == "--rise" || flag == "--radius") return " (default: the curve's)";
   return " (default: none)";
 }
 
@@ -89,12 +103,16 @@ std::vector<Axis> scene_axes() {
   return {
       {"--point-load", "", &P::point_load, any_number, "must be a finite number"},
       {"--point-load-at", "", &P::point_load_at, within_span, kSpanRule},
+      {"--point-load-x", "", &P::point_load_x, non_negative, kInSpanRule},
       {"--live-load", "", &P::live_load, any_number, "must be a finite number"},
       {"--live-load-from", "", &P::live_load_from, within_span, kSpanRule},
       {"--live-load-to", "", &P::live_load_to, within_span, kSpanRule},
+      {"--live-load-from-x", "", &P::live_load_from_x, non_negative, kInSpanRule},
+      {"--live-load-to-x", "", &P::live_load_to_x, non_negative, kInSpanRule},
       {"--fill-density", "", &P::fill_density, [](double v) { return v >= 0; }, "must be >= 0"},
       {"--fill-height-ratio", "", &P::fill_height_ratio, [](double v) { return v > 0 && v <= 100; },
        "must lie in (0, 100] (the fill's level above the springing line, over the span)"},
+      {"--fill-height", "", &P::fill_height, positive, "must be > 0, or crown"},
       {"--horizontal-acceleration", "0", &P::horizontal_acceleration, any_number, "must be a finite number"},
       {"--left-spread-ratio", "", &P::left_spread_ratio, small_movement, kMovementRule},
       {"--right-spread-ratio", "", &P::right_spread_ratio, small_movement, kMovementRule},
@@ -113,13 +131,16 @@ std::vector<Axis> scene_axes() {
        "must lie in (0, 2]"},
       {"--thickness-ratio", "0.08", &P::thickness_ratio, [](double v) { return v > 0 && v < 1; },
        "must lie in (0, 1)"},
+      {"--thickness", "", &P::thickness, positive, "must be > 0"},
       {"--support-displacement-ratio", "0", &P::support_displacement_ratio, small_movement,
        "must lie in [-0.01, 0.01] (d/L; beyond, small-displacement theory does not hold)"},
       {"--haunch-angle", "", &P::haunch_angle, [](double v) { return v > 0 && v < 90; }, "must lie in (0, 90)"},
       {"--crown-angle", "", &P::crown_angle, [](double v) { return v > 0 && v < 90; }, "must lie in (0, 90)"},
       {"--rise-ratio", "", &P::rise_ratio, [](double v) { return v > 0 && v <= 2; }, "must lie in (0, 2]"},
+      {"--rise", "", &P::rise, positive, "must be > 0"},
       {"--eccentricity", "0", &P::eccentricity, [](double v) { return v >= 0 && v <= 100; },
        "must lie in [0, 100]"},
+      {"--radius", "", &P::radius, positive, "must be > 0"},
   };
 }
 

@@ -26,6 +26,10 @@ struct SceneParameters {
   std::string curve;
   double eccentricity, rise_ratio, haunch_angle, crown_angle;
   double span, thickness_ratio, support_displacement_ratio;
+  // The metre forms of the ratios above and below (m), as given or derived from the ratio; radius: the
+  // pointed arch's.
+  double thickness, rise, radius, fill_height, point_load_x, live_load_from_x, live_load_to_x;
+  double force_unit = 1;  // N per unit of point_load and live_load, as given (--units: 1 or 1000)
   double youngs_modulus, poisson_ratio, density, gravity, shear_coefficient;
   bool plane_strain;
   double point_load, point_load_at, live_load, live_load_from, live_load_to, fill_density, fill_height_ratio;

@@ -13,6 +13,7 @@
 
 #include "ogive/geometry/curve_families.hpp"
 #include "ogive/model/loads_file.hpp"
+#include "columns.hpp"
 #include "option_text.hpp"
 #include "values.hpp"
 
@@ -36,11 +37,30 @@ void refuse_inapplicable(const CurveFamily& family, const std::string& curve, co
     if (!applies && cmd.count(flag) > 0) throw UsageError(fmt::format("{}: does not apply to --curve {}", flag, curve));
   };
   refuse_unless(family.eccentricity, "--eccentricity");
-  refuse_unless(family.rise, "--rise-ratio");
+  refuse_unless(family.rise || family.eccentricity, "--rise-ratio");  // pointed: sets the eccentricity
+  refuse_unless(family.rise || family.eccentricity, "--rise");
+  refuse_unless(family.eccentricity, "--radius");
   refuse_unless(family.haunch, "--haunch-angle");
   refuse_unless(family.crown, "--crown-angle");
   refuse_unless(family.file, "--curve-file");
-  refuse_unless(!family.file, "--span");  // a points file sets its own span
+}
+
+// The options that give one quantity in two ways (over the span and in metres; the pointed arch's
+// shape four ways): at most one of each group.
+constexpr std::initializer_list<const char*> kSameQuantity[] = {
+    {"--thickness-ratio", "--thickness"},
+    {"--eccentricity", "--rise-ratio", "--rise", "--radius"},
+    {"--fill-height-ratio", "--fill-height"},
+    {"--point-load-at", "--point-load-x"},
+    {"--live-load-from", "--live-load-from-x"},
+    {"--live-load-to", "--live-load-to-x"},
+};
+
+// The flag of `group` that was given, or nullptr.
+const char* given_of(const CLI::App& cmd, std::initializer_list<const char*> group) {
+  for (const char* flag : group)
+    if (cmd.count(flag) > 0) return flag;
+  return nullptr;
 }
 
 // The axis points of --curve points or whole-points; "-": they come on standard input (a survey piped
@@ -63,11 +83,26 @@ void check_option_pairs(const CLI::App& cmd) {
   auto needs = [&](const char* flag, const char* other) {
     if (cmd.count(flag) > 0 && cmd.count(other) == 0) throw UsageError(fmt::format("{}: needs {}", flag, other));
   };
+  for (std::initializer_list<const char*> group : kSameQuantity) {
+    const char* first = nullptr;
+    for (const char* flag : group) {
+      if (cmd.count(flag) == 0) continue;
+      if (first)
+        throw UsageError(fmt::format("{}: cannot be combined with {} (both give the same quantity): give one", flag,
+                                     first));
+      first = flag;
+    }
+  }
   needs("--point-load-at", "--point-load");
+  needs("--point-load-x", "--point-load");
   needs("--live-load-from", "--live-load");
   needs("--live-load-to", "--live-load");
+  needs("--live-load-from-x", "--live-load");
+  needs("--live-load-to-x", "--live-load");
   needs("--fill-height-ratio", "--fill-density");
-  needs("--fill-density", "--fill-height-ratio");
+  needs("--fill-height", "--fill-density");
+  if (cmd.count("--fill-density") > 0 && !given_of(cmd, {"--fill-height-ratio", "--fill-height"}))
+    throw UsageError("--fill-density: needs --fill-height-ratio or --fill-height");
   for (const char* side : {"--left-spread-ratio", "--right-spread-ratio"})
     if (cmd.count(side) > 0 && cmd.count("--support-displacement-ratio") > 0)
       throw UsageError(fmt::format("{}: cannot be combined with --support-displacement-ratio (both springings "
@@ -117,6 +152,12 @@ void ScenePlan::choose_supports(const SceneOptions& o, const CLI::App& cmd) {
 
 // Each axis' values: as given, else the curve family's default; a points file sets the span.
 void ScenePlan::plan_axes(SceneOptions& o, const CLI::App& cmd) {
+  // --units (columns.hpp): the unit of the force options.
+  if (const CLI::Option* units = cmd.get_option_no_throw("--units"); units && units->count() > 0)
+    force_unit_ = force_unit(units->as<std::string>());
+  thickness_flag_ = given_of(cmd, {"--thickness"}) ? "--thickness" : "--thickness-ratio";
+  const char* shape = given_of(cmd, {"--rise-ratio", "--rise", "--radius"});
+  shape_flag_ = shape ? shape : "--eccentricity";
   for (Axis& a : o.axes) {
     std::string text = a.text;
     const bool given = cmd.count(a.flag) > 0;  // given text is parsed as it stands, even if empty
@@ -125,10 +166,32 @@ void ScenePlan::plan_axes(SceneOptions& o, const CLI::App& cmd) {
       if (a.flag == "--haunch-angle") text = family_->default_haunch;
       if (a.flag == "--crown-angle") text = family_->default_crown;
     }
-    if (family_->file && a.flag == "--span") text = fmt::format("{}", o.points->span());
+    // A quantity given in its other form: this one's default does not apply.
+    if (!given && a.flag == "--thickness-ratio" && thickness_flag_ == "--thickness") text.clear();
+    if (!given && a.flag == "--eccentricity" && shape) text.clear();
+    if (given && a.flag == "--fill-height" && text == "crown") {
+      fill_to_crown_ = true;
+      text.clear();
+    }
+    if (family_->file && a.flag == "--span") {
+      // A points file sets the span: --span may only repeat it.
+      const double own = o.points->span();
+      if (given)
+        for (double v : parse_values(text, a.flag))
+          if (!(std::abs(v - own) <= 1e-9 * own))
+            throw UsageError(fmt::format("--span: the points file sets the span ({} m in {}), got {}: omit --span, "
+                                         "or give the file's points at the span wanted",
+                                         own, o.curve_file == "-" ? "<stdin>" : o.curve_file, v));
+      text = fmt::format("{}", own);
+    }
     // Not a parameter of this curve: one NaN, printed as an empty field.
-    const bool absent = !given && text.empty();
-    a.values = absent ? std::vector<double>{std::numeric_limits<double>::quiet_NaN()} : parse_values(text, a.flag);
+    const bool absent = (!given || (a.flag == "--fill-height" && fill_to_crown_)) && text.empty();
+    try {
+      a.values = absent ? std::vector<double>{std::numeric_limits<double>::quiet_NaN()} : parse_values(text, a.flag);
+    } catch (const UsageError& e) {
+      if (a.flag != "--fill-height") throw;
+      throw UsageError(std::string(e.what()) + " (give metres, or crown for the height of the extrados over the crown)");
+    }
     for (double v : a.values)
       if (!std::isnan(v) && !a.allowed(v)) throw UsageError(fmt::format("{}: {}, got {}", a.flag, a.rule, v));
     size_ *= a.values.size();
@@ -153,16 +216,21 @@ SceneParameters ScenePlan::parameters(std::size_t index) const {
   p.scene = index + 1;
   p.curve = options_.curve;
   p.plane_strain = options_.plane_strain;
+  p.force_unit = force_unit_;
   for (std::size_t i = options_.axes.size(); i-- > 0;) {
     const Axis& a = options_.axes[i];
     p.*(a.field) = a.values[index % a.values.size()];
     index /= a.values.size();
   }
   if (!family_->eccentricity) p.eccentricity = std::numeric_limits<double>::quiet_NaN();
+  derive_metres(p);
   // The defaults of the load and movement options, as the row prints them.
   if (!std::isnan(p.point_load) && std::isnan(p.point_load_at)) p.point_load_at = 0.5;
   if (!std::isnan(p.live_load) && std::isnan(p.live_load_from)) p.live_load_from = 0;
   if (!std::isnan(p.live_load) && std::isnan(p.live_load_to)) p.live_load_to = 1;
+  for (auto [x, ratio] : {std::pair{&p.point_load_x, p.point_load_at}, {&p.live_load_from_x, p.live_load_from},
+                          {&p.live_load_to_x, p.live_load_to}})
+    if (std::isnan(*x) && !std::isnan(ratio)) *x = ratio * p.span;
   if (std::isnan(p.left_spread_ratio)) p.left_spread_ratio = p.support_displacement_ratio;
   if (std::isnan(p.right_spread_ratio)) p.right_spread_ratio = p.support_displacement_ratio;
   p.left_support = left_kind_ == SupportKind::clamped ? "clamped" : "pinned";
@@ -173,13 +241,59 @@ SceneParameters ScenePlan::parameters(std::size_t index) const {
   return p;
 }
 
+// Each ratio from its metre form where that was given, else the metre form from the ratio (the row
+// prints both); the pointed arch's eccentricity from its rise or radius; a fill to the crown's extrados.
+// Values that make no scene stay as they are: build() refuses them.
+void ScenePlan::derive_metres(SceneParameters& p) const {
+  const double L = p.span;
+  if (!std::isnan(p.thickness)) p.thickness_ratio = p.thickness / L;
+  else p.thickness = p.thickness_ratio * L;
+  if (!std::isnan(p.rise)) p.rise_ratio = p.rise / L;
+  if (family_->eccentricity) {
+    if (!std::isnan(p.radius)) p.eccentricity = pointed_eccentricity_for_radius(p.radius / L);
+    else if (!std::isnan(p.rise_ratio)) p.eccentricity = pointed_eccentricity_for_rise(p.rise_ratio);
+    if (std::isnan(p.radius)) p.radius = pointed_radius(L, p.eccentricity);
+  }
+  if (!std::isnan(p.rise_ratio) && std::isnan(p.rise)) p.rise = p.rise_ratio * L;
+  if (!std::isnan(p.point_load_x)) p.point_load_at = p.point_load_x / L;
+  if (!std::isnan(p.live_load_from_x)) p.live_load_from = p.live_load_from_x / L;
+  if (!std::isnan(p.live_load_to_x)) p.live_load_to = p.live_load_to_x / L;
+  if (fill_to_crown_) {
+    try {
+      p.fill_height = extrados_crown_height(*make_curve(p), p.thickness);
+    } catch (const std::invalid_argument&) {
+      // No curve: build() says why.
+    }
+  }
+  if (!std::isnan(p.fill_height)) p.fill_height_ratio = p.fill_height / L;
+  else if (!std::isnan(p.fill_height_ratio)) p.fill_height = p.fill_height_ratio * L;
+}
+
+// The rules of the metre forms that depend on the span or the curve (one line naming the option).
+void ScenePlan::check_metres(const SceneParameters& p) const {
+  const double L = p.span;
+  if (family_->eccentricity && p.eccentricity < 0) {
+    if (shape_flag_ == "--radius")
+      throw std::invalid_argument(fmt::format(
+          "--radius: a pointed arch's radius is at least half its span (the semicircle), got {} m for span {} m",
+          p.radius, L));
+    throw std::invalid_argument(fmt::format(
+        "{}: a pointed arch rises at least half its span (the semicircle), got rise {} m for span {} m", shape_flag_,
+        p.rise, L));
+  }
+  for (auto [flag, x] : {std::pair{"--point-load-x", p.point_load_x}, {"--live-load-from-x", p.live_load_from_x},
+                         {"--live-load-to-x", p.live_load_to_x}})
+    if (x > L) throw std::invalid_argument(fmt::format("{}: must lie in [0, L] (within the span, {} m), got {}", flag, L, x));
+}
+
 ScenePlan::Built ScenePlan::build(const SceneParameters& p) const {
   Built out;
   try {
+    check_metres(p);
     out.curve = make_curve(p);
     Scene scene;
     scene.curve = out.curve;
-    scene.thickness = p.thickness_ratio * p.span;
+    scene.thickness = p.thickness;
     scene.material = {p.youngs_modulus, p.poisson_ratio, p.density, p.gravity, p.shear_coefficient, p.plane_strain};
     scene.left = {left_kind_, p.left_spread_ratio * p.span, p.left_settlement_ratio * p.span, p.left_rotation};
     scene.right = {right_kind_, p.right_spread_ratio * p.span, p.right_settlement_ratio * p.span, p.right_rotation};
@@ -187,13 +301,18 @@ ScenePlan::Built ScenePlan::build(const SceneParameters& p) const {
     scene.horizontal_acceleration = p.horizontal_acceleration;
     scene.section = section_;
     scene.loads = options_.file_loads;
-    if (!std::isnan(p.point_load)) scene.loads.points.push_back({p.point_load, p.point_load_at});
-    if (!std::isnan(p.live_load)) scene.loads.live.push_back({p.live_load, p.live_load_from, p.live_load_to});
+    // The force options in the unit of --units (the row echoes them as given).
+    if (!std::isnan(p.point_load)) scene.loads.points.push_back({p.point_load * p.force_unit, p.point_load_at});
+    if (!std::isnan(p.live_load))
+      scene.loads.live.push_back({p.live_load * p.force_unit, p.live_load_from, p.live_load_to});
     if (!std::isnan(p.fill_density)) scene.loads.fills.push_back({p.fill_density, p.fill_height_ratio});
     scene.validate();
     out.scene = std::move(scene);
   } catch (const std::invalid_argument& e) {
     out.problem = as_option_message(e.what());
+    // The thickness as the user gave it.
+    if (thickness_flag_ == "--thickness" && out.problem.starts_with("--thickness-ratio:"))
+      out.problem = "--thickness:" + out.problem.substr(std::string_view("--thickness-ratio:").size());
   }
   return out;
 }

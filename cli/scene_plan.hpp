@@ -46,12 +46,18 @@ class ScenePlan {
   void plan_axes(SceneOptions& o, const CLI::App& cmd);
   void require_some_scene() const;
   std::shared_ptr<const Curve> make_curve(const SceneParameters& p) const;
+  void derive_metres(SceneParameters& p) const;
+  void check_metres(const SceneParameters& p) const;
 
   const SceneOptions& options_;
   const CurveFamily* family_ = nullptr;
   SupportKind left_kind_ = SupportKind::clamped, right_kind_ = SupportKind::clamped;
   SectionKind section_ = SectionKind::elastic;
   std::size_t size_ = 1;
+  std::string thickness_flag_;   // --thickness-ratio or --thickness: the one the user's thickness came by
+  std::string shape_flag_;       // what set the pointed arch's shape: --eccentricity, --rise-ratio, --rise, --radius
+  bool fill_to_crown_ = false;   // --fill-height crown
+  double force_unit_ = 1.0;      // N per unit of the force options (--units)
 };
 
 }  // namespace ogive::cli

@@ -88,7 +88,7 @@ BenchRow bench_row(const Columns& columns, const SceneParameters& p, const Scene
 int run_bench(BenchOptions& bo, const CLI::App& cmd, std::ostream& out) {
   Columns columns = bench_columns();
   if (bo.columns.columns == "help") {
-    write_all(out, columns.help());
+    write_all(out, columns.help(bo.columns));
     return kExitOk;
   }
   const SolverSweep sweep = solver_sweep(bo.solver, bo.solver_text);

@@ -74,7 +74,7 @@ int run_check(CheckOptions& co, const CLI::App& cmd, std::ostream& out) {
   check_threads(co.threads);
   Columns columns = check_columns();
   if (co.columns.columns == "help") {
-    write_all(out, columns.help());
+    write_all(out, columns.help(co.columns));
     return kExitOk;
   }
   const SolverSweep sweep = solver_sweep(co.solver, co.solver_text, false);

@@ -34,7 +34,7 @@ int run_curve(CurveOptions& co, const CLI::App& cmd, std::ostream& out) {
   check_threads(co.threads);
   Columns columns = curve_columns();
   if (co.columns.columns == "help") {
-    write_all(out, columns.help());
+    write_all(out, columns.help(co.columns));
     return kExitOk;
   }
   const int stations = co.stations;

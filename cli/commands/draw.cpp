@@ -78,9 +78,12 @@ std::string draw_title(const SceneParameters& p) {
   if (p.support_displacement_ratio != 0) title += fmt::format(", d/L {}", p.support_displacement_ratio);
   if (p.plane_strain) title += ", plane strain";
   if (std::string(p.section) != "elastic") title += fmt::format(", {} section", p.section);
-  if (!std::isnan(p.point_load)) title += fmt::format(", P {:g} kN/m at x/L {:g}", p.point_load / 1000, p.point_load_at);
+  const double kilonewtons = p.force_unit / 1000;  // the force options' unit in kN
+  if (!std::isnan(p.point_load))
+    title += fmt::format(", P {:g} kN/m at x/L {:g}", p.point_load * kilonewtons, p.point_load_at);
   if (!std::isnan(p.live_load))
-    title += fmt::format(", q {:g} kN/m^2 over x/L {:g}..{:g}", p.live_load / 1000, p.live_load_from, p.live_load_to);
+    title += fmt::format(", q {:g} kN/m^2 over x/L {:g}..{:g}", p.live_load * kilonewtons, p.live_load_from,
+                         p.live_load_to);
   if (!std::isnan(p.fill_density)) title += fmt::format(", fill {:g} kg/m^3 to {:g} L", p.fill_density, p.fill_height_ratio);
   if (p.horizontal_acceleration != 0) title += fmt::format(", horizontal acceleration {:g} g", p.horizontal_acceleration);
   if (p.crown_hinge) title += ", crown hinge";
@@ -191,7 +194,7 @@ std::string picture_row(const Columns& columns, const SceneParameters& p, const 
 int run_draw(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
   Columns columns = draw_columns();
   if (d.columns.columns == "help") {
-    write_all(out, columns.help());
+    write_all(out, columns.help(d.columns));
     return kExitOk;
   }
   const Options o = checked_picture_options(d, cmd, "a file name ending in .svg");
@@ -241,7 +244,7 @@ std::vector<std::pair<std::string, std::string>> given_inputs(const CLI::App& cm
 int run_report(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
   Columns columns = draw_columns();
   if (d.columns.columns == "help") {
-    write_all(out, columns.help());
+    write_all(out, columns.help(d.columns));
     return kExitOk;
   }
   const Options o = checked_picture_options(d, cmd, "a file name ending in .html, or - for standard output");

@@ -214,7 +214,7 @@ int run_limit(LimitCommandOptions& lo, const CLI::App& cmd, std::ostream& out) {
   const bool lines = !text.thrust_line.empty(), timed = text.repeats > 0;
   Columns columns = limit_columns(lines, timed);
   if (lo.columns.columns == "help") {
-    write_all(out, columns.help());
+    write_all(out, columns.help(lo.columns));
     return kExitOk;
   }
   LimitOptions o = limit_options(text, cmd);

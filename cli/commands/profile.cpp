@@ -106,7 +106,7 @@ int run_profile(ProfileOptions& po, const CLI::App& cmd, std::ostream& out) {
   check_threads(po.threads);
   Columns columns = profile_columns();
   if (po.columns.columns == "help") {
-    write_all(out, columns.help());
+    write_all(out, columns.help(po.columns));
     return kExitOk;
   }
   SolverSweep sweep = solver_sweep(po.solver, po.solver_text);

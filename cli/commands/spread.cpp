@@ -237,7 +237,7 @@ int run_spread(SpreadCommandOptions& so, const CLI::App& cmd, std::ostream& out)
   check_threads(text.threads);
   Columns columns = spread_columns(text.path);
   if (so.columns.columns == "help") {
-    write_all(out, columns.help());
+    write_all(out, columns.help(so.columns));
     return kExitOk;
   }
   const SpreadSetup setup = spread_setup(text, cmd);

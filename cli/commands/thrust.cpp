@@ -74,7 +74,7 @@ int run_thrust(ThrustOptions& to, const CLI::App& cmd, std::ostream& out) {
   check_threads(to.threads);
   Columns columns = thrust_columns();
   if (to.columns.columns == "help") {
-    write_all(out, columns.help());
+    write_all(out, columns.help(to.columns));
     return kExitOk;
   }
   SolverSweep sweep = solver_sweep(to.solver, to.solver_text);

@@ -217,7 +217,7 @@ std::shared_ptr<const Curve> make_pointed(double span, double eccentricity) {
     throw std::invalid_argument(fmt::format("span: must lie in [{}, {}] m, got {}", kMinSpan, kMaxSpan, span));
   if (!(eccentricity >= 0) || !std::isfinite(eccentricity))
     throw std::invalid_argument("eccentricity: must be finite and >= 0");
-  const double radius = (0.5 + eccentricity) * span;
+  const double radius = pointed_radius(span, eccentricity);
   // Half-arch angle: cos(alpha_c) = eccentricity / (0.5 + eccentricity).
   const double alpha_c = std::acos(eccentricity / (0.5 + eccentricity));
   const std::string family = eccentricity == 0 ? "semicircular" : "pointed";
@@ -225,5 +225,9 @@ std::shared_ptr<const Curve> make_pointed(double span, double eccentricity) {
       family, span,
       std::vector<CircularArc>{{0.0, radius * alpha_c, 0.0, 0.0, std::numbers::pi / 2, -1.0 / radius}});
 }
+
+double pointed_radius(double span, double eccentricity) { return (0.5 + eccentricity) * span; }
+double pointed_eccentricity_for_rise(double rise_ratio) { return rise_ratio * rise_ratio - 0.25; }
+double pointed_eccentricity_for_radius(double radius_ratio) { return radius_ratio - 0.5; }
 
 }  // namespace ogive

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ogive {
 
@@ -70,6 +71,17 @@ SideExtrados::SideExtrados(const SideView& side, double thickness, double span)
   x_begin_ = face_at(side, half_t_, 0.0).p.x();
   for (double b : side.breaks())
     if (b < s_crown_) break_x_.push_back(face_at(side, half_t_, b).p.x());
+}
+
+double extrados_crown_height(const Curve& curve, double thickness) {
+  double height = -std::numeric_limits<double>::infinity();
+  for (bool right : {false, true}) {
+    if (right && curve.extent() != CurveExtent::whole) break;
+    const SideView side(curve, right);
+    const SideExtrados extrados(side, thickness, curve.span());
+    height = std::max(height, face_at(side, 0.5 * thickness, extrados.s_crown()).p.y());
+  }
+  return height;
 }
 
 double SideExtrados::s_at(double x, double guess) const {

@@ -6,7 +6,7 @@
 
 namespace ogive {
 
-void append_number(std::string& out, double value) {
+void append_number(std::string& out, double value, int digits) {
   if (std::isnan(value)) {
     out += "nan";
     return;
@@ -17,6 +17,12 @@ void append_number(std::string& out, double value) {
   }
   if (value == 0.0) value = 0.0;  // no "-0" in the output
   char buf[32];
+  if (digits > 0) {
+    // Rounded to that many significant digits, then written as the shortest text of the rounded number:
+    // 57387.5 at 3 digits prints 57400 (not %g's 5.74e+04), 1.23e-7 stays in scientific notation.
+    const auto rounded = std::to_chars(buf, buf + sizeof buf, value, std::chars_format::scientific, digits - 1);
+    std::from_chars(buf, rounded.ptr, value);
+  }
   // std::to_chars without a format gives the shortest representation that round-trips.
   const auto result = std::to_chars(buf, buf + sizeof buf, value);
   out.append(buf, result.ptr);
@@ -27,6 +33,7 @@ CsvRow& CsvRow::add(double value) {
   // No number, no digits: an empty field reads as missing in gnuplot, pandas and spreadsheets, and a
   // row can never carry "nan" or "inf" that a script might take for a result.
   if (!std::isfinite(value)) return *this;
+  if (divisor_ && index_ <= divisor_->size()) value /= (*divisor_)[index_ - 1];
   // The shortest round-trip text of -x is "-" followed by that of x: a repeated magnitude is copied.
   const double magnitude = std::abs(value);
   if (magnitude != 0)
@@ -40,7 +47,7 @@ CsvRow& CsvRow::add(double value) {
       return *this;
     }
   const std::size_t start = line_.size();
-  append_number(line_, value);
+  append_number(line_, value, digits_);
   if (magnitude == 0 || line_.size() - start > 32) return *this;
   const std::size_t digits = start + (value < 0 ? 1 : 0);
   recent_[recent_next_] = {magnitude, static_cast<std::uint32_t>(digits), static_cast<std::uint32_t>(line_.size() - digits)};

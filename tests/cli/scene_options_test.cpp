@@ -173,7 +173,9 @@ TEST_CASE("help that teaches: a misspelt option or subcommand gets a suggestion 
   const Run short_name = run_command({"thrust", "--thicknes", "0.1"});
   CHECK(short_name.status == 2);
   CHECK(short_name.out.empty());
-  CHECK(short_name.err.find("did you mean '--thickness-ratio'?") != std::string::npos);
+  CHECK(short_name.err.find("did you mean '--thickness'?") != std::string::npos);
+  CHECK(run_command({"thrust", "--thickness-rati", "0.1"}).err.find("did you mean '--thickness-ratio'?") !=
+        std::string::npos);
   CHECK(run_command({"thrust", "--left-spread", "0"}).err.find("did you mean '--left-spread-ratio'?") !=
         std::string::npos);
   // The parser's errors in the user's words: one line that names the option and what it wants.

@@ -144,3 +144,24 @@ TEST_CASE("curves: the largest curvature they know agrees with sampling the curv
     CHECK(curve->max_curvature() <= sampled * (1 + 1e-3));
   }
 }
+
+TEST_CASE("extrados over the crown: the semicircle's R + t/2, a pointed arch's where both sides' offset arcs meet") {
+  // The semicircle of span L: the crown's extrados at L/2 + t/2 above the springing line, its half and
+  // its whole arch alike.
+  const double L = 10, t = 0.8;
+  const auto semicircle = ogive::make_pointed(L, 0.0);
+  CHECK(ogive::close(ogive::extrados_crown_height(*semicircle, t), L / 2 + t / 2, ogive::kExact));
+  CHECK(ogive::close(ogive::extrados_crown_height(*ogive::whole_arch(semicircle), t), L / 2 + t / 2, ogive::kExact));
+  // The pointed arch: the left arc's centre at R from the left springing on the springing line, its
+  // extrados the circle of radius R + t/2, over x = L/2 at sqrt((R + t/2)^2 - (R - L/2)^2).
+  for (double rise_ratio : {0.6, std::sqrt(0.75), 1.2}) {
+    const double e = ogive::pointed_eccentricity_for_rise(rise_ratio), R = ogive::pointed_radius(L, e);
+    const auto pointed = ogive::make_pointed(L, e);
+    CAPTURE(rise_ratio);
+    CHECK(ogive::close(pointed->rise() / L, rise_ratio, ogive::kExact));
+    const double expected = std::sqrt((R + t / 2) * (R + t / 2) - (R - L / 2) * (R - L / 2));
+    CHECK(ogive::close(ogive::extrados_crown_height(*pointed, t), expected, ogive::kExact));
+    CHECK(ogive::extrados_crown_height(*pointed, t) > pointed->rise() + t / 2);  // above a kink: higher
+    CHECK(ogive::close(ogive::pointed_eccentricity_for_radius(R / L), e, ogive::kExact));
+  }
+}

@@ -153,6 +153,12 @@ struct SectionFaces {
 };
 SectionFaces section_faces(const CurvePoint& p, double thickness);
 
+// The height (m) above the springing line of the extrados (the axis offset by t/2 along the normal) of
+// a ring of thickness t over the crown's vertical: above a pointed crown, where the two sides' extrados
+// meet (higher than the crown + t/2). The level of a fill "to the crown's extrados". A whole curve:
+// the higher of its two sides' there.
+double extrados_crown_height(const Curve& curve, double thickness);
+
 // Position, angle and curvature on one arc, at distance ds (0 <= ds <= arc.length) from its start.
 CurvePoint point_on_arc(const CircularArc& arc, double ds);
 
@@ -161,5 +167,14 @@ CurvePoint point_on_arc(const CircularArc& arc, double ds);
 // Throws std::invalid_argument naming `span` (in [kMinSpan, kMaxSpan]) or `eccentricity` for a value outside
 // its domain.
 std::shared_ptr<const Curve> make_pointed(double span, double eccentricity);
+
+// The pointed arch's radius, R = (0.5 + eccentricity) span (m), and the eccentricity that gives a rise
+// ratio h / span (the crown over the centre at eccentricity * span beyond mid-span: h^2 = R^2 -
+// (eccentricity span)^2, so eccentricity = (h / span)^2 - 1/4) or a radius ratio R / span (R / span -
+// 1/2). Below the semicircle's (h / span or R / span under 1/2) the eccentricity is negative: no pointed
+// arch (make_pointed refuses it).
+double pointed_radius(double span, double eccentricity);
+double pointed_eccentricity_for_rise(double rise_ratio);
+double pointed_eccentricity_for_radius(double radius_ratio);
 
 }  // namespace ogive

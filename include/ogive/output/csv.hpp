@@ -10,8 +10,9 @@
 
 namespace ogive {
 
-// Shortest decimal that reads back to the same double; "nan", "inf", "-inf" for the non-finite.
-void append_number(std::string& out, double value);
+// Shortest decimal that reads back to the same double; "nan", "inf", "-inf" for the non-finite. With
+// digits 1 .. 17: that many significant digits (trailing zeros dropped).
+void append_number(std::string& out, double value, int digits = 0);
 
 // Which fields of a command's full order a row prints, and in which order.
 struct FieldSelection {
@@ -19,6 +20,12 @@ struct FieldSelection {
   // Empty: the kept fields in the full order. Else order[k] is the rank, among the kept fields in the
   // full order, of the field printed k-th (a permutation of 0 .. kept - 1).
   std::vector<std::size_t> order;
+  // Empty: numbers as they are. Else field i's numbers are divided by divisor[i] before printing (a
+  // change of unit: 1000 prints N as kN).
+  std::vector<double> divisor;
+  // Significant digits of every number printed, 1 .. 17; 0: the shortest decimal that reads back to
+  // the same double.
+  int digits = 0;
 };
 
 // A row is built by adding every field of its command in the header's full order; with a selection,
@@ -30,7 +37,9 @@ class CsvRow {
   // nullptr: every field, in the full order. Must outlive the row.
   explicit CsvRow(const FieldSelection* selection)
       : keep_(selection ? &selection->keep : nullptr),
-        order_(selection && !selection->order.empty() ? &selection->order : nullptr) {}
+        order_(selection && !selection->order.empty() ? &selection->order : nullptr),
+        divisor_(selection && !selection->divisor.empty() ? &selection->divisor : nullptr),
+        digits_(selection ? selection->digits : 0) {}
 
   CsvRow& add(double value);  // shortest round-trip; an empty field when not finite (no number)
   CsvRow& add(std::int64_t value);
@@ -75,6 +84,8 @@ class CsvRow {
   void forget_recent_beyond(std::size_t size);
   const std::vector<bool>* keep_ = nullptr;
   const std::vector<std::size_t>* order_ = nullptr;
+  const std::vector<double>* divisor_ = nullptr;
+  int digits_ = 0;
   std::vector<std::size_t> starts_;  // with order_: where each kept field's text begins in line_
   std::size_t index_ = 0;
   std::string line_;
