@@ -94,11 +94,12 @@ TEST_CASE("cli: spread --path: the mechanism starts at limit's H_min and the sem
   REQUIRE(rows_of_part(t, "elastic").size() == 1);
   const auto mechanism = rows_of_part(t, "mechanism");
   REQUIRE(mechanism.size() == 41);
-  const Run lim = run({"limit", "--weight", "axis", "--thickness-ratio", "0.075", "--columns", "H_min"});
+  const Run lim = run({"limit", "--weight", "axis", "--thickness-ratio", "0.075", "--columns", "H_min,hinges_min"});
   REQUIRE(lim.status == 0);
   const double H_min = table(lim.out).number(0, "H_min");
   CHECK(t.number(mechanism.front(), "spread_ratio") == 0);
   CHECK(close(t.number(mechanism.front(), "H"), H_min, kSameState));
+  CHECK(t.at(mechanism.front(), "hinges") == table(lim.out).at(0, "hinges_min"));  // the semicircle's three
   for (std::size_t k = 1; k < mechanism.size(); ++k) {
     CAPTURE(k);
     CHECK(t.number(mechanism[k], "H") > t.number(mechanism[k - 1], "H"));
@@ -207,6 +208,13 @@ TEST_CASE("cli: spread --columns help gives every column its unit, and threads c
   REQUIRE(help.status == 0);
   CHECK(help.out.find("spread_capacity_ratio,,") != std::string::npos);
   CHECK(help.out.find("H_plateau,N/m,") != std::string::npos);
+  // --units kN divides the forces by 1000 and leaves the ratios alone.
+  const Table newtons = table(run({"spread", "--thickness-ratio", "0.075", "--steps", "20"}).out);
+  const Run kn = run({"spread", "--thickness-ratio", "0.075", "--steps", "20", "--units", "kN"});
+  REQUIRE(kn.out.rfind("# units: kN", 0) == 0);
+  const Table kilonewtons = table(kn.out.substr(kn.out.find('\n') + 1));  // after the units line
+  CHECK(close(kilonewtons.number(0, "H_plateau") * 1000, newtons.number(0, "H_plateau"), kExact));
+  CHECK(kilonewtons.at(0, "spread_capacity_ratio") == newtons.at(0, "spread_capacity_ratio"));
   const Run one = run({"spread", "--thickness-ratio", "0.06:0.09:4", "--span", "8,10", "--threads", "1"});
   const Run two = run({"spread", "--thickness-ratio", "0.06:0.09:4", "--span", "8,10", "--threads", "2"});
   REQUIRE(one.status == 0);
