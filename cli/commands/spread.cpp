@@ -114,13 +114,14 @@ SpreadSetup spread_setup(const SpreadText& t, const CLI::App& cmd) {
 
 Columns spread_columns(bool path) {
   std::vector<std::string> results = {"moving", "weight", "joints_count", "path_steps"};
+  // The summary: the elastic arch at d = 0, the plateau, the capacity and the state at collapse.
   const std::vector<std::string> summary = {
-      "status",      "H_elastic",   "V_elastic",         "H_over_V_elastic", "H_plateau", "V_plateau",
-      "H_over_V_plateau", "spread_capacity_ratio", "collapse", "H_collapse", "V_collapse", "H_over_V_collapse",
-      "crown_drop_ratio", "hinges", "hinges_at_collapse", "message"};
-  const std::vector<std::string> points = {"part",    "spread_ratio",     "status", "H",        "V",
-                                           "V_right", "H_over_V",         "crown_drop_ratio", "hinges",
-                                           "collapse", "message"};
+      "status", "H_elastic", "V_elastic", "H_over_V_elastic", "H_plateau", "V_plateau", "H_over_V_plateau",
+      "spread_capacity_ratio", "collapse", "H_collapse", "V_collapse", "H_over_V_collapse", "crown_drop_ratio",
+      "hinges", "hinges_at_collapse", "message"};
+  // --path: one row per point of the curve.
+  const std::vector<std::string> points = {"part", "spread_ratio", "status", "H", "V", "V_right", "H_over_V",
+                                           "crown_drop_ratio", "hinges", "collapse", "message"};
   const std::vector<std::string>& own = path ? points : summary;
   results.insert(results.end(), own.begin(), own.end());
   return Columns(results, own);
