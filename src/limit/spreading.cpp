@@ -110,8 +110,13 @@ bool hinges_open(const Ring& ring0, const Mechanism& m, const Configuration& c, 
     const Vec gap = c.body[h + 1](q) - c.body[h](q);
     const Vec e = j.extrados - j.intrados;
     const Vec towards_right(e.y(), -e.x());  // the joint's normal pointing to the next voussoir
-    const int next = std::min<int>(m.joint[h], static_cast<int>(ring0.voussoirs.size()) - 1);
-    const double sign = towards_right.dot(ring0.voussoirs[next].centroid - j.axis) >= 0 ? 1.0 : -1.0;
+    // Which way the joint's normal points: towards the voussoir on its right, or (the right springing's
+    // joint, with none there) away from the one on its left.
+    const int voussoirs = static_cast<int>(ring0.voussoirs.size());
+    const bool right_springing = m.joint[h] >= voussoirs;
+    const Vec centroid = ring0.voussoirs[right_springing ? voussoirs - 1 : m.joint[h]].centroid;
+    const double side = towards_right.dot(centroid - j.axis) >= 0 ? 1.0 : -1.0;
+    const double sign = right_springing ? -side : side;
     if (sign * towards_right.normalized().dot(gap) < -gap_floor) return false;
   }
   return true;
@@ -298,7 +303,7 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
   if (lo == 0 && last_bad.snap) {  // the hinges do not move this way at all: no mechanism, not a capacity of 0
     r.status = SpreadStatus::no_mechanism;
     r.message = "the minimum-thrust state's three hinges nearest the crown do not open under this movement (a "
-                "pointed arch's two hinges beside its crown need a four-hinge mechanism)";
+                "pointed arch turns about two hinges beside its crown: four hinges)";
     r.path.push_back(first.step);
     return r;
   }
