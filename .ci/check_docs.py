@@ -45,7 +45,7 @@ REPO = pathlib.Path(__file__).resolve().parent.parent
 CLI_DOC = REPO / "docs" / "cli.md"
 BEGIN, END = "<!-- columns:begin -->", "<!-- columns:end -->"
 # Command lines that print columns beyond their subcommand's default (a variant with other rows).
-VARIANTS = [(["limit", "--thrust-line", "min"], "limit --thrust-line")]
+VARIANTS = [(["limit", "--thrust-line", "min"], "limit --thrust-line"), (["spread", "--path"], "spread --path")]
 # The README's two commands, as .ci/run runs them.
 README_COMMANDS = [
     "bash .ci/install_deps.sh && cmake --preset release && cmake --build --preset release && "

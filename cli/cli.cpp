@@ -39,6 +39,8 @@ constexpr Subcommand kSubcommands[] = {
      add_limit_options},
     {"report", "one HTML page per scene: drawing, reactions, thrust range, safety, collapse, spreading",
      add_report_options},
+    {"spread", "the arch on spreading walls to collapse: elastic thrust, plateau, spreading capacity; one row per scene",
+     add_spread_options},
 };
 
 // The parse error in the user's words rather than the parser's: an unknown option or a stray value,

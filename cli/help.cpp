@@ -40,6 +40,9 @@ void add_help_texts(CLI::App& app) {
       {"report",
        "  ogive report --eccentricity 0.5 --thickness-ratio 0.1 --output equilateral.html\n"
        "  ogive report --section no-tension --support-displacement-ratio 0.0001 --output -"},
+      {"spread",
+       "  ogive spread --curve semicircular --thickness-ratio 0.06:0.1:5   # spreading capacity against t\n"
+       "  ogive spread --curve semicircular --thickness-ratio 0.075 --path --moving left"},
   };
   for (CLI::App* sub : app.get_subcommands({})) {
     const auto it = examples.find(sub->get_name());

@@ -23,5 +23,6 @@ Run add_bench_options(CLI::App& cmd);    // time and true error per method and r
 Run add_draw_options(CLI::App& cmd);     // an SVG file per scene
 Run add_limit_options(CLI::App& cmd);    // limit analysis of rigid voussoirs
 Run add_report_options(CLI::App& cmd);   // an HTML page per scene
+Run add_spread_options(CLI::App& cmd);   // the arch on spreading supports to collapse
 
 }  // namespace ogive::cli

@@ -17,6 +17,7 @@
 #include "cli.hpp"
 #include "columns.hpp"
 #include "commands.hpp"
+#include "limit_text.hpp"
 #include "ogive/limit/limit.hpp"
 #include "option_text.hpp"
 #include "row_writer.hpp"
@@ -30,8 +31,6 @@ namespace {
 
 const std::map<std::string, JointOrientation> kJointOrientations = {{"radial", JointOrientation::radial},
                                                                     {"vertical", JointOrientation::vertical}};
-const std::map<std::string, WeightModel> kWeightModels = {{"voussoir", WeightModel::voussoir},
-                                                          {"axis", WeightModel::axis}};
 enum class ThrustLine { min, max, collapse, horizontal };
 const std::map<std::string, ThrustLine> kThrustLines = {{"min", ThrustLine::min},
                                                         {"max", ThrustLine::max},
@@ -100,7 +99,7 @@ constexpr Inapplicable kNotForLimit[] = {
 LimitOptions limit_options(const LimitText& t, const CLI::App& cmd) {
   LimitOptions o;
   o.joints = lookup(kJointOrientations, t.joints, "--joints");
-  o.weight = lookup(kWeightModels, t.weight, "--weight");
+  o.weight = lookup(weight_models(), t.weight, "--weight");
   o.joints_count = t.joints_count;
   if (cmd.count("--friction") > 0 && !(t.friction > 0))
     throw UsageError(fmt::format("--friction: must be > 0 (omit it for no sliding check), got {}", t.friction));
@@ -114,17 +113,6 @@ LimitOptions limit_options(const LimitText& t, const CLI::App& cmd) {
   std::string why;
   if (!o.is_valid(&why)) throw UsageError(as_option_message(why));
   return o;
-}
-
-// Hinges as "x/L:face" joined by ';' (x of the hinge point, on the intrados or extrados), e.g.
-// "0.1129:intrados;0.5:extrados": no commas inside the CSV field.
-std::string hinge_text(const std::vector<Hinge>& hinges, double span) {
-  std::string text;
-  for (const Hinge& h : hinges) {
-    if (!text.empty()) text += ';';
-    text += fmt::format("{:.6g}:{}", h.point.x() / span, to_string(h.face));
-  }
-  return text;
 }
 
 void add_limit_setup(CsvRow& row, const LimitOptions& o) {

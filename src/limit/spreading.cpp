@@ -110,8 +110,13 @@ bool hinges_open(const Ring& ring0, const Mechanism& m, const Configuration& c, 
     const Vec gap = c.body[h + 1](q) - c.body[h](q);
     const Vec e = j.extrados - j.intrados;
     const Vec towards_right(e.y(), -e.x());  // the joint's normal pointing to the next voussoir
-    const int next = std::min<int>(m.joint[h], static_cast<int>(ring0.voussoirs.size()) - 1);
-    const double sign = towards_right.dot(ring0.voussoirs[next].centroid - j.axis) >= 0 ? 1.0 : -1.0;
+    // Which way the joint's normal points: towards the voussoir on its right, or (the right springing's
+    // joint, with none there) away from the one on its left.
+    const int voussoirs = static_cast<int>(ring0.voussoirs.size());
+    const bool right_springing = m.joint[h] >= voussoirs;
+    const Vec centroid = ring0.voussoirs[right_springing ? voussoirs - 1 : m.joint[h]].centroid;
+    const double side = towards_right.dot(centroid - j.axis) >= 0 ? 1.0 : -1.0;
+    const double sign = right_springing ? -side : side;
     if (sign * towards_right.normalized().dot(gap) < -gap_floor) return false;
   }
   return true;
@@ -150,6 +155,23 @@ double thrust_by_work(const Ring& moved, const Mechanism& m, const Configuration
     if (v.live.force != 0) work -= v.live.force * vy(load_point(v.live));
   }
   return work / (m.left_share + m.right_share);
+}
+
+// The mechanism's hinges among `hinges` (indices; -1 when missing): the one nearest the crown joint cj
+// and the nearest one on each side of it.
+struct MechanismHinges {
+  int left = -1, crown = -1, right = -1;
+};
+MechanismHinges mechanism_hinges(const std::vector<Hinge>& hinges, int cj) {
+  MechanismHinges m;
+  for (std::size_t i = 0; i < hinges.size(); ++i)
+    if (m.crown < 0 || std::abs(hinges[i].joint - cj) < std::abs(hinges[m.crown].joint - cj)) m.crown = static_cast<int>(i);
+  for (std::size_t i = 0; m.crown >= 0 && i < hinges.size(); ++i) {
+    const int j = hinges[i].joint, c = hinges[m.crown].joint;
+    if (j < c && (m.left < 0 || j > hinges[m.left].joint)) m.left = static_cast<int>(i);
+    if (j > c && (m.right < 0 || j < hinges[m.right].joint)) m.right = static_cast<int>(i);
+  }
+  return m;
 }
 
 struct Evaluation {
@@ -198,15 +220,7 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
   }
   const Ring& ring0 = base.ring;
   const std::vector<Hinge>& hinges = base.min_state.hinges;
-  const int cj = ring0.crown_joint();
-  int crown = -1;
-  for (std::size_t i = 0; i < hinges.size(); ++i)
-    if (crown < 0 || std::abs(hinges[i].joint - cj) < std::abs(hinges[crown].joint - cj)) crown = static_cast<int>(i);
-  int left = -1, right = -1;
-  for (std::size_t i = 0; crown >= 0 && i < hinges.size(); ++i) {
-    if (hinges[i].joint < hinges[crown].joint && (left < 0 || hinges[i].joint > hinges[left].joint)) left = static_cast<int>(i);
-    if (hinges[i].joint > hinges[crown].joint && (right < 0 || hinges[i].joint < hinges[right].joint)) right = static_cast<int>(i);
-  }
+  const auto [left, crown, right] = mechanism_hinges(hinges, ring0.crown_joint());
   if (left < 0 || right < 0) {
     r.status = SpreadStatus::no_mechanism;
     r.message = "the minimum-thrust state has no hinge on each side of its crown hinge";
@@ -286,6 +300,13 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
   }
   r.collapse = last_bad.snap ? SpreadCollapse::snap_through : SpreadCollapse::inadmissible;
   r.d_max = lo;
+  if (lo == 0 && last_bad.snap) {  // the hinges do not move this way at all: no mechanism, not a capacity of 0
+    r.status = SpreadStatus::no_mechanism;
+    r.message = "the minimum-thrust state's three hinges nearest the crown do not open under this movement (a "
+                "pointed arch turns about two hinges beside its crown: four hinges)";
+    r.path.push_back(first.step);
+    return r;
+  }
   r.path.reserve(spread.steps + 1);
   r.path.push_back(first.step);
   for (int i = 1; i <= spread.steps; ++i) {

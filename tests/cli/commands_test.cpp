@@ -224,7 +224,7 @@ class RefusingBuffer : public std::streambuf {
 
 TEST_CASE("cli: help and version that cannot be written exit 4 with one line - extra arguments are refused") {
   std::vector<std::vector<std::string>> asks = {{"--version"}, {"--help"}};
-  for (const char* sub : {"thrust", "profile", "check", "curve", "bench", "draw", "limit"})
+  for (const char* sub : {"thrust", "profile", "check", "curve", "bench", "draw", "limit", "spread"})
     asks.push_back({sub, "--help"});
   for (const auto& args : asks) {
     CAPTURE(args.back());

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "ogive/geometry/curve_families.hpp"
 #include "ogive/limit/limit.hpp"
 #include "ogive/limit/spreading.hpp"
 #include "support/scenes.hpp"
@@ -104,4 +105,23 @@ TEST_CASE("spreading: the capacity converges with the joints count and the steps
   const double a = analyse_spreading(scene, coarse, few).d_max;
   const double b = analyse_spreading(scene, fine, many).d_max;
   CHECK(close(a, b, kThreeDigits));
+}
+
+TEST_CASE("spreading: a pointed arch's two hinges beside the crown are no three-hinge mechanism, not a capacity of 0") {
+  const Scene scene = paper_scene(0.5, 0.08);
+  const SpreadResult r = analyse_spreading(scene, {}, {});
+  CHECK(r.status == SpreadStatus::no_mechanism);
+  REQUIRE(r.path.size() == 1);
+  CHECK(close(r.path.front().H, analyse_limit(scene, {}).H_min(), kSameState));
+}
+
+TEST_CASE("spreading: hinges on the springings' joints open (a tall catenary's), static and kinematic thrust equal") {
+  Scene scene = paper_scene(0.0, 0.08);
+  scene.curve = make_catenary(10.0, 0.4);
+  const SpreadResult r = analyse_spreading(scene, {}, {});
+  REQUIRE(r.status == SpreadStatus::success);
+  REQUIRE(r.hinge_joints.size() == 3);
+  CHECK(r.hinge_joints.back() == static_cast<int>(r.ring.joints.size()) - 1);  // the right springing's joint
+  CHECK(r.d_max > 0);
+  for (const SpreadStep& s : r.path) CHECK(close(s.H, s.H_work, kStaticKinematic));
 }

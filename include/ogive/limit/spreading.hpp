@@ -57,7 +57,10 @@ struct SpreadStep {
 enum class SpreadStatus {
   success,        // a path to collapse: every step's H is the program's and agrees with its virtual work
   inadmissible,   // no thrust line fits the arch at d = 0 (t < t_min): no path
-  no_mechanism,   // the minimum-thrust state has no hinge on each side of a crown hinge
+  no_mechanism,   // the minimum-thrust state has no hinge on each side of a crown hinge, or its three
+                  // hinges do not open under the movement (snap-through at once: a pointed arch's
+                  // minimum-thrust state turns about two hinges beside its crown, which three do not
+                  // describe); path holds the state at d = 0 in the second case
   lp_failure,     // the LP library stopped without an answer
 };
 const char* to_string(SpreadStatus s);

@@ -1,0 +1,22 @@
+#include "limit_text.hpp"
+
+#include <fmt/format.h>
+
+namespace ogive::cli {
+
+const std::map<std::string, WeightModel>& weight_models() {
+  static const std::map<std::string, WeightModel> names = {{"voussoir", WeightModel::voussoir},
+                                                           {"axis", WeightModel::axis}};
+  return names;
+}
+
+std::string hinge_text(const std::vector<Hinge>& hinges, double span) {
+  std::string text;
+  for (const Hinge& h : hinges) {
+    if (!text.empty()) text += ';';
+    text += fmt::format("{:.6g}:{}", h.point.x() / span, to_string(h.face));
+  }
+  return text;
+}
+
+}  // namespace ogive::cli

@@ -1,0 +1,19 @@
+// What limit and spread share of rigid voussoirs' text: the --weight names, and hinges as "x/L:face".
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "ogive/limit/limit.hpp"
+
+namespace ogive::cli {
+
+// --weight's names: voussoir (the ring's true weight at each centroid) or axis (rho g t per axis length).
+const std::map<std::string, WeightModel>& weight_models();
+
+// Hinges as "x/L:face" joined by ';' (x of the hinge point over the span, on the intrados, extrados or
+// axis), e.g. "0.1129:intrados;0.5:extrados": no commas inside the CSV field.
+std::string hinge_text(const std::vector<Hinge>& hinges, double span);
+
+}  // namespace ogive::cli

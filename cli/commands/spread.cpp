@@ -1,0 +1,288 @@
+// ogive spread: the arch on spreading walls, to collapse. One row per scene: the elastic thrust at
+// d = 0, the plateau (the limit analysis' minimum thrust, which the cracking arch falls to), the rigid
+// voussoirs' spreading capacity and their state at collapse; or (--path) the whole curve: the elastic
+// arch at d = 0, the cracking arch (no-tension section) at small spreads, the three-hinge mechanism of
+// rigid voussoirs (analyse_spreading) from d = 0 to collapse. docs/spreading.md tells how they join.
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <map>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "cli.hpp"
+#include "columns.hpp"
+#include "commands.hpp"
+#include "limit_text.hpp"
+#include "ogive/limit/limit.hpp"
+#include "ogive/limit/spreading.hpp"
+#include "ogive/solve/solve.hpp"
+#include "option_text.hpp"
+#include "row_writer.hpp"
+#include "scene_options.hpp"
+#include "scene_plan.hpp"
+#include "sweep.hpp"
+#include "values.hpp"
+
+namespace ogive::cli {
+namespace {
+
+enum class MovingSprings { left, right, both };
+const std::map<std::string, MovingSprings> kMovingSprings = {
+    {"left", MovingSprings::left}, {"right", MovingSprings::right}, {"both", MovingSprings::both}};
+
+// Each moving springing's movement over the span along the cracking part: d = 0, then two a decade up
+// to 1e-2, the largest movement the small-displacement theory of the elastic arch takes (the rule of
+// --support-displacement-ratio), where the cracking arch's H/V lies within about 1 % of the plateau.
+constexpr double kCrackingMoves[] = {0, 1e-6, 3e-6, 1e-5, 3e-5, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2};
+
+struct SpreadText {
+  std::string weight = "axis", moving = "both";
+  int joints_count = kDefaultJointsCount;
+  int steps = SpreadOptions{}.steps;
+  bool path = false;
+  int threads = 1;
+};
+
+struct SpreadCommandOptions {
+  SceneOptions scene;
+  SpreadText text;
+  ColumnText columns;
+};
+
+// The scene options whose values spread sets itself: refused when given, and left out of its --help.
+constexpr const char* kSpreadMovesWhy = "spread moves the springings itself: --moving chooses which";
+constexpr std::pair<const char*, const char*> kNotForSpread[] = {
+    {"--support-displacement-ratio", kSpreadMovesWhy},
+    {"--left-spread-ratio", kSpreadMovesWhy},
+    {"--right-spread-ratio", kSpreadMovesWhy},
+    {"--left-settlement-ratio", kSpreadMovesWhy},
+    {"--right-settlement-ratio", kSpreadMovesWhy},
+    {"--left-rotation", kSpreadMovesWhy},
+    {"--right-rotation", kSpreadMovesWhy},
+    {"--section", "spread solves the elastic section at d = 0 and the no-tension section along the spread"},
+    {"--horizontal-acceleration", "the mechanism of rigid voussoirs carries vertical loads only"},
+};
+
+void add_spread_analysis_options(CLI::App& cmd, SpreadText& t) {
+  cmd.add_option("--moving", t.moving, "the springings that move outwards: left, right or both")->capture_default_str();
+  cmd.add_option("--weight", t.weight,
+                 "rigid voussoirs' weight: axis (rho g t per axis length, the elastic arch's, so that the cracking "
+                 "arch's plateau is the mechanism's start) or voussoir (the true weight at each centroid)")
+      ->capture_default_str();
+  cmd.add_option("--joints-count", t.joints_count, "rigid voussoirs' joints springing to springing, both included; odd, >= 5")
+      ->check(whole_count())
+      ->capture_default_str();
+  cmd.add_option("--steps", t.steps, "steps of the mechanism's path from d = 0 to collapse, in [1, 100000]")
+      ->check(whole_count())
+      ->capture_default_str();
+  cmd.add_flag("--path", t.path,
+               "instead of the summary, the whole curve: the elastic arch at d = 0, the cracking arch, the mechanism "
+               "to collapse, one row per point");
+}
+
+struct SpreadSetup {
+  LimitOptions limit;
+  SpreadOptions spread;
+  bool left_moves = true, right_moves = true;
+};
+
+SpreadSetup spread_setup(const SpreadText& t, const CLI::App& cmd) {
+  for (const auto& [flag, why] : kNotForSpread)
+    if (cmd.count(flag) > 0) throw UsageError(fmt::format("{}: does not apply to spread ({})", flag, why));
+  SpreadSetup s;
+  s.limit.weight = lookup(weight_models(), t.weight, "--weight");
+  s.limit.joints_count = t.joints_count;
+  const MovingSprings moving = lookup(kMovingSprings, t.moving, "--moving");
+  s.left_moves = moving != MovingSprings::right;
+  s.right_moves = moving != MovingSprings::left;
+  s.spread.left_share = s.left_moves ? 1 : 0;
+  s.spread.right_share = s.right_moves ? 1 : 0;
+  if (t.steps < 1 || t.steps > 100000)
+    throw UsageError(fmt::format("--steps: must lie in [1, 100000], got {}", t.steps));
+  s.spread.steps = t.steps;
+  std::string why;
+  if (!s.limit.is_valid(&why)) throw UsageError(as_option_message(why));
+  return s;
+}
+
+Columns spread_columns(bool path) {
+  std::vector<std::string> results = {"moving", "weight", "joints_count", "path_steps"};
+  // The summary: the elastic arch at d = 0, the plateau, the capacity and the state at collapse.
+  const std::vector<std::string> summary = {
+      "status", "H_elastic", "V_elastic", "H_over_V_elastic", "H_plateau", "V_plateau", "H_over_V_plateau",
+      "spread_capacity_ratio", "collapse", "H_collapse", "V_collapse", "H_over_V_collapse", "crown_drop_ratio",
+      "hinges", "hinges_at_collapse", "message"};
+  // --path: one row per point of the curve.
+  const std::vector<std::string> points = {"part", "spread_ratio", "status", "H", "V", "V_right", "H_over_V",
+                                           "crown_drop_ratio", "hinges", "collapse", "message"};
+  const std::vector<std::string>& own = path ? points : summary;
+  results.insert(results.end(), own.begin(), own.end());
+  return Columns(results, own);
+}
+
+void add_setup(CsvRow& row, const SpreadText& t, const SpreadSetup& s) {
+  row.add(t.moving).add(to_string(s.limit.weight)).add(s.limit.joints_count).add(s.spread.steps);
+}
+
+// The mechanism's three hinges at `step`, each with the face it turns on at d = 0 (the nearest of the
+// joint's intrados, extrados and axis points).
+std::vector<Hinge> mechanism_hinges(const SpreadResult& r, const SpreadStep& step) {
+  std::vector<Hinge> hinges;
+  for (std::size_t k = 0; k < r.hinge_joints.size() && k < step.hinges.size(); ++k) {
+    const int joint = r.hinge_joints[k];
+    const Joint& j = r.ring.joints[static_cast<std::size_t>(joint)];
+    const Eigen::Vector2d& p0 = r.path.front().hinges[k];
+    Face face = (p0 - j.intrados).norm() <= (p0 - j.extrados).norm() ? Face::intrados : Face::extrados;
+    if ((p0 - j.axis).norm() < std::min((p0 - j.intrados).norm(), (p0 - j.extrados).norm())) face = Face::axis;
+    hinges.push_back({joint, face, step.hinges[k]});
+  }
+  return hinges;
+}
+
+// The crown's drop (m, downwards positive) of a solved elastic or cracking arch; NaN without a field.
+double crown_drop(const Scene& scene, const Solution& sol) {
+  if (!sol.field || !(sol.status == Status::success || sol.status == Status::ill_conditioned))
+    return std::numeric_limits<double>::quiet_NaN();
+  return -sol.at(scene.curve->crown()).Uy;
+}
+
+// A solve's answer: success, or an arch that cannot stand as a no-tension arch.
+bool answered(const Solution& sol) { return sol.ok() || sol.status == Status::inadmissible; }
+
+std::string summary_row(const Columns& columns, const SceneParameters& p, const Scene& scene, const SpreadText& t,
+                        const SpreadSetup& s, const Solution& elastic, const SpreadResult& r) {
+  const double L = scene.span();
+  CsvRow row(columns.keep());
+  add_scene_columns(row, p, scene.curve.get());
+  add_setup(row, t, s);
+  row.add(to_string(r.status)).add(elastic.H).add(elastic.V).add(elastic.H_over_V);
+  if (r.path.empty()) {
+    for (int k = 0; k < 11; ++k) row.add(std::string_view{});
+    row.add(r.message);
+    return row.take();
+  }
+  const SpreadStep& first = r.path.front();
+  const SpreadStep& last = r.path.back();
+  row.add(first.H).add(first.V_left).add(first.H / first.V_left);  // the plateau, whenever d = 0 stands
+  if (r.status != SpreadStatus::success) {
+    for (int k = 0; k < 8; ++k) row.add(std::string_view{});
+    row.add(r.message);
+    return row.take();
+  }
+  row.add((s.spread.left_share + s.spread.right_share) * r.d_max / L).add(to_string(r.collapse));
+  row.add(last.H).add(last.V_left).add(last.H / last.V_left).add(last.crown_drop / L);
+  row.add(hinge_text(mechanism_hinges(r, first), L)).add(hinge_text(mechanism_hinges(r, last), L));
+  row.add(r.message);
+  return row.take();
+}
+
+// One row of the elastic or cracking part: a solve of the continuous arch.
+std::string solve_row(const Columns& columns, const SceneParameters& p, const Scene& scene, const SpreadText& t,
+                      const SpreadSetup& s, std::string_view part, double spread_ratio, const Solution& sol) {
+  CsvRow row(columns.keep());
+  add_scene_columns(row, p, scene.curve.get());
+  add_setup(row, t, s);
+  row.add(part).add(spread_ratio).add(to_string(sol.status)).add(sol.H).add(sol.V);
+  row.add(sol.field ? sol.reactions.V_right : std::numeric_limits<double>::quiet_NaN()).add(sol.H_over_V);
+  row.add(crown_drop(scene, sol) / scene.span()).add(std::string_view{}).add(std::string_view{}).add(sol.message);
+  return row.take();
+}
+
+// The whole curve of one scene: the elastic arch at d = 0, the cracking arch (each solve continuing
+// from the previous one, as a sweep of thrust --section no-tension does), the mechanism to collapse.
+std::string path_rows(const Columns& columns, const SceneParameters& p, const Scene& scene, const SpreadText& t,
+                      const SpreadSetup& s, const Solution& elastic, const SpreadResult& r, bool* ok) {
+  const double L = scene.span();
+  const double sides = (s.left_moves ? 1 : 0) + (s.right_moves ? 1 : 0);
+  std::string text = solve_row(columns, p, scene, t, s, "elastic", 0, elastic);
+  *ok = answered(elastic);
+  Solution previous;
+  for (const double move : kCrackingMoves) {
+    Scene cracking = scene;
+    cracking.section = SectionKind::no_tension;
+    cracking.left.spread = s.left_moves ? move * p.span : 0;
+    cracking.right.spread = s.right_moves ? move * p.span : 0;
+    const Solution sol = solve(cracking, Options{}, &previous);
+    if (sol.field) previous = sol;
+    text += solve_row(columns, p, scene, t, s, "cracking", sides * move, sol);
+    *ok = *ok && answered(sol);
+  }
+  CsvRow row(columns.keep());
+  add_scene_columns(row, p, scene.curve.get());
+  add_setup(row, t, s);
+  row.add(std::string_view("mechanism"));
+  row.mark();
+  for (std::size_t i = 0; i < r.path.size(); ++i) {
+    const SpreadStep& step = r.path[i];
+    row.add((s.spread.left_share + s.spread.right_share) * step.d / L).add(to_string(r.status)).add(step.H);
+    row.add(step.V_left).add(step.V_right).add(step.H / step.V_left).add(step.crown_drop / L);
+    row.add(hinge_text(mechanism_hinges(r, step), L));
+    row.add(i + 1 == r.path.size() ? std::string_view(to_string(r.collapse)) : std::string_view{});
+    row.add(std::string_view{});
+    text += row.take_to_mark();
+  }
+  return text;
+}
+
+// Exit 0 when every scene has an answer (an arch too thin to stand at d = 0 is one: a row of status
+// inadmissible, without a curve), 3 when a program or a solve stopped without one.
+int run_spread(SpreadCommandOptions& so, const CLI::App& cmd, std::ostream& out) {
+  const SpreadText& text = so.text;
+  check_threads(text.threads);
+  Columns columns = spread_columns(text.path);
+  if (so.columns.columns == "help") {
+    write_all(out, columns.help(so.columns));
+    return kExitOk;
+  }
+  const SpreadSetup setup = spread_setup(text, cmd);
+  const ScenePlan plan(so.scene, cmd);
+  columns.select(so.columns, plan.varying_inputs());
+  const std::size_t rows_per_scene = text.path ? 2 + std::size(kCrackingMoves) + static_cast<std::size_t>(text.steps) : 1;
+  const bool all_answered = write_scenes(
+      plan, columns, out, text.threads,
+      [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
+        const SpreadResult r = analyse_spreading(scene, setup.limit, setup.spread);
+        const bool spread_answered = r.status == SpreadStatus::success || r.status == SpreadStatus::inadmissible;
+        const Solution elastic = solve(scene);
+        if (!text.path) {
+          emit(summary_row(columns, p, scene, text, setup, elastic, r));
+          return spread_answered && answered(elastic);
+        }
+        if (r.status != SpreadStatus::success) {
+          emit(sparse_row(columns, p, scene.curve.get(),
+                          {{"moving", text.moving},
+                           {"weight", to_string(setup.limit.weight)},
+                           {"joints_count", std::to_string(setup.limit.joints_count)},
+                           {"path_steps", std::to_string(setup.spread.steps)},
+                           {"status", to_string(r.status)},
+                           {"message", r.message}}));
+          return spread_answered;
+        }
+        bool ok = true;
+        emit(path_rows(columns, p, scene, text, setup, elastic, r, &ok));
+        return ok;
+      },
+      rows_per_scene);
+  return all_answered ? kExitOk : kExitNotConverged;
+}
+
+}  // namespace
+
+Run add_spread_options(CLI::App& cmd) {
+  auto options = std::make_shared<SpreadCommandOptions>();
+  add_scene_options(cmd, options->scene);
+  for (const auto& [flag, why] : kNotForSpread) cmd.get_option(flag)->group("");  // hidden from --help
+  add_spread_analysis_options(cmd, options->text);
+  add_column_options(cmd, options->columns);
+  add_threads_option(cmd, options->text.threads);
+  return [options, &cmd](std::ostream& out) { return run_spread(*options, cmd, out); };
+}
+
+}  // namespace ogive::cli

@@ -1,0 +1,222 @@
+// `ogive spread` (the CLI's spread subcommand): the spreading capacity from zero at the semicircle's
+// minimum thickness and growing with it, the mechanism's rising thrust (Ochsendorf), the cracking part
+// as thrust --section no-tension prints it, the mechanism's start at limit's H_min, inadmissible arches
+// as rows, and the refusal of bad input.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "support/cli_run.hpp"
+#include "support/tolerances.hpp"
+
+using namespace ogive;
+using ogive::test::Run;
+
+namespace {
+
+// The path's first mechanism state is the limit analysis' minimum-thrust state solved again with its
+// hinges as pins: the same thrust to the LP's round-off.
+constexpr double kSameState = 1e-9;
+// Near t_min the mechanism has almost no room to move: its capacity is a small part of a thicker arch's.
+constexpr double kNearlyNoCapacity = 0.05;
+
+// The rows of a CSV text as maps from the header's names.
+struct Table {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+  std::string at(std::size_t row, const std::string& name) const {
+    const auto it = std::find(header.begin(), header.end(), name);
+    REQUIRE_MESSAGE(it != header.end(), "no column " << name);
+    return rows.at(row).at(static_cast<std::size_t>(it - header.begin()));
+  }
+  double number(std::size_t row, const std::string& name) const { return std::stod(at(row, name)); }
+};
+
+Table table(const std::string& csv) {
+  Table t;
+  const auto rows = test::lines(csv);
+  REQUIRE(!rows.empty());
+  t.header = test::fields(rows[0]);
+  for (std::size_t i = 1; i < rows.size(); ++i) t.rows.push_back(test::fields(rows[i]));
+  return t;
+}
+
+Run run(const std::vector<std::string>& args) { return test::run_command(args); }
+
+std::vector<std::string> split(const std::string& text, char sep) {
+  std::vector<std::string> out;
+  std::string item;
+  std::istringstream in(text);
+  while (std::getline(in, item, sep)) out.push_back(item);
+  return out;
+}
+
+std::vector<std::size_t> rows_of_part(const Table& t, const std::string& part) {
+  std::vector<std::size_t> rows;
+  for (std::size_t i = 0; i < t.rows.size(); ++i)
+    if (t.at(i, "part") == part) rows.push_back(i);
+  return rows;
+}
+
+}  // namespace
+
+TEST_CASE("cli: spread's capacity goes to zero at the semicircle's minimum thickness and grows with it") {
+  const double t_min_over_L = 0.1075 / 2;  // Milankovitch's t/R = 0.1075 (true voussoir weight); t/L = t/(2R)
+  const std::string thicknesses = fmt::format("{:.17g},0.065,0.075,0.09", 1.0005 * t_min_over_L);
+  const Run r = run({"spread", "--weight", "voussoir", "--thickness-ratio", thicknesses});
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  const Table t = table(r.out);
+  REQUIRE(t.rows.size() == 4);
+  double previous = 0;
+  for (std::size_t i = 0; i < 4; ++i) {
+    CAPTURE(i);
+    CHECK(t.at(i, "status") == "success");
+    const double capacity = t.number(i, "spread_capacity_ratio");
+    CHECK(capacity > previous);
+    previous = capacity;
+    CHECK(split(t.at(i, "hinges"), ';').size() == 3);
+    CHECK(t.number(i, "crown_drop_ratio") > 0);
+  }
+  CHECK(t.number(0, "spread_capacity_ratio") < kNearlyNoCapacity * t.number(2, "spread_capacity_ratio"));
+  CHECK(r.out.find("nan") == std::string::npos);
+}
+
+TEST_CASE("cli: spread --path: the mechanism starts at limit's H_min and the semicircle's thrust rises (Ochsendorf)") {
+  const Run r = run({"spread", "--path", "--thickness-ratio", "0.075", "--steps", "40"});
+  REQUIRE(r.status == 0);
+  const Table t = table(r.out);
+  REQUIRE(rows_of_part(t, "elastic").size() == 1);
+  const auto mechanism = rows_of_part(t, "mechanism");
+  REQUIRE(mechanism.size() == 41);
+  const Run lim = run({"limit", "--weight", "axis", "--thickness-ratio", "0.075", "--columns", "H_min,hinges_min"});
+  REQUIRE(lim.status == 0);
+  const double H_min = table(lim.out).number(0, "H_min");
+  CHECK(t.number(mechanism.front(), "spread_ratio") == 0);
+  CHECK(close(t.number(mechanism.front(), "H"), H_min, kSameState));
+  CHECK(t.at(mechanism.front(), "hinges") == table(lim.out).at(0, "hinges_min"));  // the semicircle's three
+  for (std::size_t k = 1; k < mechanism.size(); ++k) {
+    CAPTURE(k);
+    CHECK(t.number(mechanism[k], "H") > t.number(mechanism[k - 1], "H"));
+    CHECK(t.number(mechanism[k], "spread_ratio") > t.number(mechanism[k - 1], "spread_ratio"));
+    CHECK(t.number(mechanism[k], "crown_drop_ratio") > t.number(mechanism[k - 1], "crown_drop_ratio"));
+  }
+  CHECK(t.at(mechanism.back(), "collapse") != "");
+  CHECK(t.at(mechanism.front(), "collapse") == "");
+  // The summary's plateau and capacity are the path's ends.
+  const Run summary = run({"spread", "--thickness-ratio", "0.075", "--steps", "40"});
+  const Table s = table(summary.out);
+  CHECK(s.at(0, "H_plateau") == t.at(mechanism.front(), "H"));
+  CHECK(s.at(0, "H_collapse") == t.at(mechanism.back(), "H"));
+  CHECK(s.at(0, "spread_capacity_ratio") == t.at(mechanism.back(), "spread_ratio"));
+  CHECK(s.at(0, "collapse") == t.at(mechanism.back(), "collapse"));
+  CHECK(s.at(0, "H_elastic") == t.at(0, "H"));
+}
+
+TEST_CASE("cli: spread --path's cracking part is thrust --section no-tension at the same movements, to the byte") {
+  const std::string moves = "0,1e-6,3e-6,1e-5,3e-5,1e-4,3e-4,1e-3,3e-3,1e-2";
+  struct Case {
+    std::string moving;
+    std::vector<std::string> thrust_movement;
+    double sides;
+  };
+  for (const Case& c : {Case{"both", {"--support-displacement-ratio", moves}, 2},
+                        Case{"left", {"--left-spread-ratio", moves, "--right-spread-ratio", "0"}, 1}}) {
+    CAPTURE(c.moving);
+    const Run r = run({"spread", "--path", "--thickness-ratio", "0.075", "--moving", c.moving, "--steps", "10"});
+    REQUIRE(r.status == 0);
+    const Table t = table(r.out);
+    const auto cracking = rows_of_part(t, "cracking");
+    std::vector<std::string> args = {"thrust", "--section", "no-tension", "--thickness-ratio", "0.075",
+                                     "--columns", "status,H,V,H_over_V"};
+    args.insert(args.end(), c.thrust_movement.begin(), c.thrust_movement.end());
+    const Run th = run(args);
+    REQUIRE(th.status == 0);
+    const Table u = table(th.out);
+    REQUIRE(cracking.size() == u.rows.size());
+    const auto each = split(moves, ',');
+    for (std::size_t k = 0; k < cracking.size(); ++k) {
+      CAPTURE(k);
+      for (const char* name : {"status", "H", "V", "H_over_V"}) CHECK(t.at(cracking[k], name) == u.at(k, name));
+      CHECK(t.number(cracking[k], "spread_ratio") == c.sides * std::stod(each[k]));
+    }
+    // The cracking arch falls towards the plateau, the mechanism's start.
+    const double plateau = t.number(rows_of_part(t, "mechanism").front(), "H_over_V");
+    CHECK(t.number(cracking.back(), "H_over_V") < t.number(cracking.front(), "H_over_V"));
+    CHECK(t.number(cracking.back(), "H_over_V") > plateau);
+  }
+}
+
+TEST_CASE("cli: spread gives a pointed arch's crown hinges no capacity but no_mechanism, exit 3") {
+  const Run r = run({"spread", "--eccentricity", "0.5", "--thickness-ratio", "0.08"});
+  CHECK(r.status == 3);
+  const Table t = table(r.out);
+  CHECK(t.at(0, "status") == "no_mechanism");
+  CHECK(!t.at(0, "H_plateau").empty());
+  CHECK(t.at(0, "spread_capacity_ratio").empty());
+  CHECK(!t.at(0, "message").empty());
+}
+
+TEST_CASE("cli: spread gives an arch too thin to stand a row of status inadmissible and no curve") {
+  for (const bool path : {false, true}) {
+    CAPTURE(path);
+    std::vector<std::string> args = {"spread", "--thickness-ratio", "0.04"};
+    if (path) args.push_back("--path");
+    const Run r = run(args);
+    REQUIRE(r.status == 0);
+    const Table t = table(r.out);
+    REQUIRE(t.rows.size() == 1);
+    CHECK(t.at(0, "status") == "inadmissible");
+    CHECK(t.at(0, "hinges").empty());
+  }
+  const Table s = table(run({"spread", "--thickness-ratio", "0.04"}).out);
+  CHECK(s.at(0, "spread_capacity_ratio").empty());
+  CHECK(!s.at(0, "H_elastic").empty());  // the elastic arch has its thrust whatever its thickness
+}
+
+TEST_CASE("cli: spread refuses bad input with one line naming the option, exit 2, nothing on stdout") {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> bad = {
+      {{"--moving", "up"}, "--moving"},
+      {{"--steps", "0"}, "--steps"},
+      {{"--weight", "heavy"}, "--weight"},
+      {{"--joints-count", "4"}, "--joints-count"},
+      {{"--support-displacement-ratio", "0.001"}, "--support-displacement-ratio"},
+      {{"--left-spread-ratio", "0.001"}, "--left-spread-ratio"},
+      {{"--section", "no-tension"}, "--section"},
+      {{"--horizontal-acceleration", "0.1"}, "--horizontal-acceleration"},
+      {{"--columns", "H_min"}, "--columns"},
+  };
+  for (const auto& [args, flag] : bad) {
+    CAPTURE(flag);
+    std::vector<std::string> all = {"spread"};
+    all.insert(all.end(), args.begin(), args.end());
+    const Run r = run(all);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(test::lines(r.err).size() == 1);
+    CHECK(r.err.find(flag) != std::string::npos);
+  }
+}
+
+TEST_CASE("cli: spread --columns help gives every column its unit, and threads change no byte") {
+  const Run help = run({"spread", "--columns", "help"});
+  REQUIRE(help.status == 0);
+  CHECK(help.out.find("spread_capacity_ratio,,") != std::string::npos);
+  CHECK(help.out.find("H_plateau,N/m,") != std::string::npos);
+  // --units kN divides the forces by 1000 and leaves the ratios alone.
+  const Table newtons = table(run({"spread", "--thickness-ratio", "0.075", "--steps", "20"}).out);
+  const Run kn = run({"spread", "--thickness-ratio", "0.075", "--steps", "20", "--units", "kN"});
+  REQUIRE(kn.out.rfind("# units: kN", 0) == 0);
+  const Table kilonewtons = table(kn.out.substr(kn.out.find('\n') + 1));  // after the units line
+  CHECK(close(kilonewtons.number(0, "H_plateau") * 1000, newtons.number(0, "H_plateau"), kExact));
+  CHECK(kilonewtons.at(0, "spread_capacity_ratio") == newtons.at(0, "spread_capacity_ratio"));
+  const Run one = run({"spread", "--thickness-ratio", "0.06:0.09:4", "--span", "8,10", "--threads", "1"});
+  const Run two = run({"spread", "--thickness-ratio", "0.06:0.09:4", "--span", "8,10", "--threads", "2"});
+  REQUIRE(one.status == 0);
+  CHECK(one.out == two.out);
+}
