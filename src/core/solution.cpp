@@ -103,14 +103,16 @@ double reaction_difference(const Reactions& a, const Reactions& r, double thickn
 }
 
 double roundoff_bound(const Solution& sol) {
-  const double base = sol.diagnostics.condition_estimate * std::numeric_limits<double>::epsilon();
+  const double eps = std::numeric_limits<double>::epsilon();
+  const double condition = sol.diagnostics.condition_estimate;
+  const double base = condition * eps;
   if (!sol.model) return kRoundoffProfile * base;
   const double L = sol.model->scene().span(), t = sol.model->scene().thickness;
   // The couples' scales are reaction_difference's and profile_difference's.
   const Reactions& r = sol.reactions;
   const double F = std::max({std::abs(r.H_left), std::abs(r.V_left), std::abs(r.V_right)});
   const double reactions = F * L / std::max({std::abs(r.M_left), std::abs(r.M_right), F * t / 6});
-  double bound = base * (kRoundoffFloor + kRoundoffReactions * reactions);
+  double profile = 0;  // the profile's A, where there is a profile
   if (!sol.profile.empty()) {
     double Fp = 0, N = 0, M = 0;
     for (const ArchState& a : sol.profile) {
@@ -118,7 +120,18 @@ double roundoff_bound(const Solution& sol) {
       N = std::max(N, std::abs(a.N));
       M = std::max(M, std::abs(a.M));
     }
-    bound = std::max(bound, kRoundoffProfile * base * std::max(1.0, Fp * L / std::max(M, N * t / 6)));
+    profile = std::max(1.0, Fp * L / std::max(M, N * t / 6));
+  }
+  double bound = 0;
+  if (sol.method == Method::quadrature && sol.model->scene().section == SectionKind::elastic) {
+    // Its own arithmetic's (kRoundoffQuadrature): the no-tension quadrature's Newton and section law
+    // near the hinges keep the general bound below.
+    bound = kRoundoffQuadrature * eps * (condition + std::max(reactions, profile));
+  } else {
+    const bool integrated = sol.method == Method::shooting || sol.method == Method::multiple_shooting;
+    bound = base * (kRoundoffFloor + kRoundoffReactions * reactions);
+    if (profile > 0)
+      bound = std::max(bound, (integrated ? kRoundoffProfileIntegrated : kRoundoffProfile) * base * profile);
   }
   return std::isfinite(bound) ? bound : kRoundoffProfile * base;
 }

@@ -16,7 +16,8 @@
 // profile_difference) meets rtol, and returns the finer one (never the first pair's). The estimate is of
 // the returned degree's own error: with the last two differences d0, d1 shrinking by q = d1 / d0 <= 1/2,
 // the tail d1 q / (1 - q) (spectral convergence shrinks them faster still, so it errs on the safe side),
-// else d1 (finer_error_bound). solve() floors it at the solution's round-off bound (roundoff_bound).
+// else d1 (finer_error_bound). solve() floors it at the solution's round-off bound (roundoff_bound: for
+// this method its own, kRoundoffQuadrature x eps x (condition + A), in core/solution.hpp).
 // The field (Solution::at, profiles) interpolates the nodes' states per panel (barycentric formula),
 // accurate to the method's tolerance at any station.
 #pragma once
