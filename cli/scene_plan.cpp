@@ -6,6 +6,8 @@
 #include <limits>
 #include <map>
 #include <stdexcept>
+#include <string_view>
+#include <tuple>
 #include <utility>
 
 #include <CLI/CLI.hpp>
@@ -169,6 +171,7 @@ void ScenePlan::plan_axes(SceneOptions& o, const CLI::App& cmd) {
     // A quantity given in its other form: this one's default does not apply.
     if (!given && a.flag == "--thickness-ratio" && thickness_flag_ == "--thickness") text.clear();
     if (!given && a.flag == "--eccentricity" && shape) text.clear();
+    if (given && a.flag == "--fill-height") fill_in_metres_ = true;
     if (given && a.flag == "--fill-height" && text == "crown") {
       fill_to_crown_ = true;
       text.clear();
@@ -272,6 +275,20 @@ void ScenePlan::derive_metres(SceneParameters& p) const {
 // The rules of the metre forms that depend on the span or the curve (one line naming the option).
 void ScenePlan::check_metres(const SceneParameters& p) const {
   const double L = p.span;
+  // A ratio derived from its metre form keeps the ratio option's rule, stated for the metre option.
+  for (const auto& [metre, given, ratio_flag, ratio] :
+       {std::tuple{"--thickness", thickness_flag_ == "--thickness", "--thickness-ratio", p.thickness_ratio},
+        {"--rise", shape_flag_ == "--rise", "--rise-ratio", p.rise_ratio},
+        {"--fill-height", fill_in_metres_, "--fill-height-ratio", p.fill_height_ratio}}) {
+    if (!given) continue;
+    for (const Axis& a : options_.axes)
+      if (a.flag == ratio_flag && !std::isnan(ratio) && !a.allowed(ratio))
+        throw std::invalid_argument(
+            fmt::format("{}: {} / span {}, got {} (span {} m)", metre, std::string_view(metre).substr(2), a.rule, ratio, L));
+  }
+  if (family_->eccentricity && !std::isfinite(p.eccentricity))
+    throw std::invalid_argument(fmt::format("{}: gives no pointed arch (eccentricity {}) for span {} m", shape_flag_,
+                                            p.eccentricity, L));
   if (family_->eccentricity && p.eccentricity < 0) {
     if (shape_flag_ == "--radius")
       throw std::invalid_argument(fmt::format(
@@ -310,9 +327,12 @@ ScenePlan::Built ScenePlan::build(const SceneParameters& p) const {
     out.scene = std::move(scene);
   } catch (const std::invalid_argument& e) {
     out.problem = as_option_message(e.what());
-    // The thickness as the user gave it.
+    // The thickness and the rise as the user gave them (the library's thickness rules are in metres, its
+    // rise rules over the span).
     if (thickness_flag_ == "--thickness" && out.problem.starts_with("--thickness-ratio:"))
       out.problem = "--thickness:" + out.problem.substr(std::string_view("--thickness-ratio:").size());
+    if (shape_flag_ == "--rise" && out.problem.starts_with("--rise-ratio:"))
+      out.problem = "--rise: rise / span" + out.problem.substr(std::string_view("--rise-ratio:").size());
   }
   return out;
 }

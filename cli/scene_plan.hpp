@@ -57,6 +57,7 @@ class ScenePlan {
   std::string thickness_flag_;   // --thickness-ratio or --thickness: the one the user's thickness came by
   std::string shape_flag_;       // what set the pointed arch's shape: --eccentricity, --rise-ratio, --rise, --radius
   bool fill_to_crown_ = false;   // --fill-height crown
+  bool fill_in_metres_ = false;  // --fill-height given
   double force_unit_ = 1.0;      // N per unit of the force options (--units)
 };
 

@@ -158,6 +158,15 @@ TEST_CASE("metres: both options of a pair are refused with one line naming both"
   check_refused({"thrust", "--curve", "semicircular", "--rise", "5"});            // its rise is the span's half
   check_refused({"thrust", "--curve", "segmental", "--radius", "5"});
   check_refused({"thrust", "--thickness", "-1"});
+  // A ratio derived from metres keeps the ratio option's rule, and the message names the option given.
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"thrust", "--fill-density", "1", "--fill-height", "1e300"},
+        {"thrust", "--rise", "25"}, {"thrust", "--rise", "1e300"}, {"thrust", "--thickness", "10"},
+        {"thrust", "--curve", "segmental", "--rise", "9"}}) {
+    check_refused(args);
+    const std::string& flag = args.at(args.size() - 2);
+    CHECK(run_command(args).err.rfind("ogive: " + flag + ":", 0) == 0);
+  }
   check_refused({"thrust", "--fill-density", "1", "--fill-height", "top"});
   check_refused({"thrust", "--fill-height", "crown"});                            // no fill density
   check_refused({"thrust", "--units", "kn"});
