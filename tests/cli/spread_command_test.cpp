@@ -191,7 +191,9 @@ TEST_CASE("cli: spread refuses bad input with one line naming the option, exit 2
       {{"--horizontal-acceleration", "0.1"}, "--horizontal-acceleration"},
       {{"--columns", "H_min"}, "--columns"},
   };
-  for (const auto& [args, flag] : bad) {
+  for (const auto& item : bad) {
+    const std::vector<std::string>& args = item.first;
+    const std::string& flag = item.second;  // not a structured binding: CAPTURE's lambda captures it
     CAPTURE(flag);
     std::vector<std::string> all = {"spread"};
     all.insert(all.end(), args.begin(), args.end());
