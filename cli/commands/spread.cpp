@@ -58,7 +58,7 @@ struct SpreadCommandOptions {
 
 // The scene options whose values spread sets itself: refused when given, and left out of its --help.
 constexpr const char* kSpreadMovesWhy = "spread moves the springings itself: --moving chooses which";
-constexpr std::pair<const char*, const char*> kNotForSpread[] = {
+constexpr Inapplicable kNotForSpread[] = {
     {"--support-displacement-ratio", kSpreadMovesWhy},
     {"--left-spread-ratio", kSpreadMovesWhy},
     {"--right-spread-ratio", kSpreadMovesWhy},
@@ -94,8 +94,7 @@ struct SpreadSetup {
 };
 
 SpreadSetup spread_setup(const SpreadText& t, const CLI::App& cmd) {
-  for (const auto& [flag, why] : kNotForSpread)
-    if (cmd.count(flag) > 0) throw UsageError(fmt::format("{}: does not apply to spread ({})", flag, why));
+  refuse_inapplicable(cmd, "spread", kNotForSpread);
   SpreadSetup s;
   s.limit.weight = lookup(weight_models(), t.weight, "--weight");
   s.limit.joints_count = t.joints_count;
@@ -278,7 +277,7 @@ int run_spread(SpreadCommandOptions& so, const CLI::App& cmd, std::ostream& out)
 Run add_spread_options(CLI::App& cmd) {
   auto options = std::make_shared<SpreadCommandOptions>();
   add_scene_options(cmd, options->scene);
-  for (const auto& [flag, why] : kNotForSpread) cmd.get_option(flag)->group("");  // hidden from --help
+  hide_inapplicable(cmd, kNotForSpread);
   add_spread_analysis_options(cmd, options->text);
   add_column_options(cmd, options->columns);
   add_threads_option(cmd, options->text.threads);
