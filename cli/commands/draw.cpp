@@ -68,6 +68,24 @@ void add_limit_drawing(const Scene& scene, DrawingOptions& drawing) {
   add_limit_analysis(drawing, scene, r);
 }
 
+// Exactly one of --output FILE and --output-dir DIR (draw's and report's targets).
+void check_target_choice(const DrawTargets& to, const char* command, const char* file, const char* one_scene) {
+  if (to.output.empty() == to.output_dir.empty())
+    throw UsageError(to.output.empty() ? fmt::format("--output: {} needs --output {} ({}) or --output-dir DIR (one "
+                                                     "file per scene)",
+                                                     command, file, one_scene)
+                                       : fmt::format("--output-dir: give --output {} or --output-dir DIR, not both", file));
+}
+
+// One scene for --output, at most kMaxDrawings for --output-dir; `what` names one file's content.
+void check_target_count(const DrawTargets& to, std::size_t scenes, const char* what) {
+  if (!to.output.empty() && scenes > 1)
+    throw UsageError(fmt::format("--output: the options give {} scenes and one file holds one {}; use "
+                                 "--output-dir DIR for one file per scene", scenes, what));
+  if (scenes > kMaxDrawings)
+    throw UsageError(fmt::format("--output-dir: the options give {} scenes, more than {} {}s", scenes, kMaxDrawings, what));
+}
+
 // The drawing's caption: the curve, its shape parameters, span, t/L and d/L, as the options name them.
 std::string draw_title(const SceneParameters& p) {
   std::string title = p.curve;
@@ -202,16 +220,9 @@ int run_draw(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
   // Standard output carries the CSV rows, one per drawing: a picture cannot go there too.
   if (to.output == "-")
     throw UsageError("--output: - (standard output) is refused: standard output carries the CSV row; give a file name");
-  if (to.output.empty() == to.output_dir.empty())
-    throw UsageError(to.output.empty() ? "--output: draw needs --output FILE.svg (one scene) or --output-dir DIR "
-                                         "(one file per scene)"
-                                       : "--output-dir: give --output FILE.svg or --output-dir DIR, not both");
+  check_target_choice(to, "draw", "FILE.svg", "one scene");
   const ScenePlan plan(d.scene, cmd);
-  if (!to.output.empty() && plan.size() > 1)
-    throw UsageError(fmt::format("--output: the options give {} scenes and one file holds one drawing; use "
-                                 "--output-dir DIR for one file per scene", plan.size()));
-  if (plan.size() > kMaxDrawings)
-    throw UsageError(fmt::format("--output-dir: the options give {} scenes, more than {} drawings", plan.size(), kMaxDrawings));
+  check_target_count(to, plan.size(), "drawing");
   columns.select(d.columns, plan.varying_inputs());
   const std::vector<std::string> files = target_files(plan, d.scene, to, ".svg");
   const bool all_ok = write_scenes(
@@ -249,16 +260,9 @@ int run_report(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
   }
   const Options o = checked_picture_options(d, cmd, "a file name ending in .html, or - for standard output");
   const DrawTargets& to = d.targets;
-  if (to.output.empty() == to.output_dir.empty())
-    throw UsageError(to.output.empty() ? "--output: report needs --output FILE.html (one scene; - for standard output) "
-                                         "or --output-dir DIR (one file per scene)"
-                                       : "--output-dir: give --output FILE.html or --output-dir DIR, not both");
+  check_target_choice(to, "report", "FILE.html", "one scene; - for standard output");
   const ScenePlan plan(d.scene, cmd);
-  if (!to.output.empty() && plan.size() > 1)
-    throw UsageError(fmt::format("--output: the options give {} scenes and one file holds one report; use "
-                                 "--output-dir DIR for one file per scene", plan.size()));
-  if (plan.size() > kMaxDrawings)
-    throw UsageError(fmt::format("--output-dir: the options give {} scenes, more than {} reports", plan.size(), kMaxDrawings));
+  check_target_count(to, plan.size(), "report");
   ReportOptions report;
   report.solver = o;
   report.inputs = given_inputs(cmd);
