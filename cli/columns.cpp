@@ -244,8 +244,7 @@ void Columns::select(const ColumnText& ct, const std::vector<std::string>& varyi
   if (ct.given() && ct.all_columns) throw UsageError("--columns: give either --columns or --all-columns");
   selection_.digits = significant_digits(ct.digits);
   selection_.divisor.clear();
-  kilonewtons_ = force_unit(ct.units) != 1.0;
-  if (kilonewtons_) {
+  if (force_unit(ct.units) != 1.0) {
     // The results' forces and moments; the inputs print as given (in the unit they were given in).
     selection_.divisor.assign(all_.size(), 1.0);
     for (std::size_t i = scene_columns().size(); i < all_.size(); ++i) {
@@ -296,7 +295,7 @@ std::string Columns::header() const {
   std::vector<std::string_view> kept;
   for (std::size_t i = 0; i < all_.size(); ++i)
     if (selection_.keep[i]) kept.push_back(all_[i]);
-  std::string out = kilonewtons_ ? "# units: kN (forces in kN/m and moments in kN m/m per metre of vault width)\n" : "";
+  std::string out = !selection_.divisor.empty() ? "# units: kN (forces in kN/m and moments in kN m/m per metre of vault width)\n" : "";
   for (std::size_t k = 0; k < kept.size(); ++k) {
     if (k > 0) out += ',';
     out += kept[selection_.order.empty() ? k : selection_.order[k]];

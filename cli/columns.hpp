@@ -59,8 +59,7 @@ class Columns {
 
  private:
   std::vector<std::string> all_, defaults_;
-  FieldSelection selection_;
-  bool kilonewtons_ = false;  // --units kN
+  FieldSelection selection_;  // its divisor is set with --units kN alone
 };
 
 // A parameter that does not apply to the scene's curve is an empty field, never "nan".

@@ -157,7 +157,7 @@ void ScenePlan::plan_axes(SceneOptions& o, const CLI::App& cmd) {
   // --units (columns.hpp): the unit of the force options.
   if (const CLI::Option* units = cmd.get_option_no_throw("--units"); units && units->count() > 0)
     force_unit_ = force_unit(units->as<std::string>());
-  thickness_flag_ = given_of(cmd, {"--thickness"}) ? "--thickness" : "--thickness-ratio";
+  thickness_flag_ = cmd.count("--thickness") > 0 ? "--thickness" : "--thickness-ratio";
   const char* shape = given_of(cmd, {"--rise-ratio", "--rise", "--radius"});
   shape_flag_ = shape ? shape : "--eccentricity";
   for (Axis& a : o.axes) {
