@@ -46,6 +46,7 @@ struct SpreadText {
   std::string weight = "axis", moving = "both";
   int joints_count = kDefaultJointsCount;
   int steps = SpreadOptions{}.steps;
+  double increment_ratio = SpreadOptions{}.increment_ratio;
   bool path = false;
   int threads = 1;
 };
@@ -79,8 +80,12 @@ void add_spread_analysis_options(CLI::App& cmd, SpreadText& t) {
   cmd.add_option("--joints-count", t.joints_count, "rigid voussoirs' joints springing to springing, both included; odd, >= 5")
       ->check(whole_count())
       ->capture_default_str();
-  cmd.add_option("--steps", t.steps, "steps of the mechanism's path from d = 0 to collapse, in [1, 100000]")
+  cmd.add_option("--steps", t.steps, "rows of the mechanism's path from d = 0 to collapse (with --path), in [1, 100000]")
       ->check(whole_count())
+      ->capture_default_str();
+  cmd.add_option("--increment-ratio", t.increment_ratio,
+                 "the span's increase over L between two solutions of the mechanism's minimum-thrust state (where "
+                 "its hinges may move), in (0, 0.1]")
       ->capture_default_str();
   cmd.add_flag("--path", t.path,
                "instead of the summary, the whole curve: the elastic arch at d = 0, the cracking arch, the mechanism "
@@ -105,8 +110,11 @@ SpreadSetup spread_setup(const SpreadText& t, const CLI::App& cmd) {
   s.spread.right_share = s.right_moves ? 1 : 0;
   if (t.steps < 1 || t.steps > 100000)
     throw UsageError(fmt::format("--steps: must lie in [1, 100000], got {}", t.steps));
-  s.spread.steps = t.steps;
   std::string why;
+  s.spread.steps = t.steps;
+  s.spread.increment_ratio = t.increment_ratio;
+  if (!(t.increment_ratio > 0 && t.increment_ratio <= 0.1))
+    throw UsageError(fmt::format("--increment-ratio: must lie in (0, 0.1], got {}", t.increment_ratio));
   if (!s.limit.is_valid(&why)) throw UsageError(as_option_message(why));
   return s;
 }
@@ -128,21 +136,6 @@ Columns spread_columns(bool path) {
 
 void add_setup(CsvRow& row, const SpreadText& t, const SpreadSetup& s) {
   row.add(t.moving).add(to_string(s.limit.weight)).add(s.limit.joints_count).add(s.spread.steps);
-}
-
-// The mechanism's three hinges at `step`, each with the face it turns on at d = 0 (the nearest of the
-// joint's intrados, extrados and axis points).
-std::vector<Hinge> mechanism_hinges(const SpreadResult& r, const SpreadStep& step) {
-  std::vector<Hinge> hinges;
-  for (std::size_t k = 0; k < r.hinge_joints.size() && k < step.hinges.size(); ++k) {
-    const int joint = r.hinge_joints[k];
-    const Joint& j = r.ring.joints[static_cast<std::size_t>(joint)];
-    const Eigen::Vector2d& p0 = r.path.front().hinges[k];
-    Face face = (p0 - j.intrados).norm() <= (p0 - j.extrados).norm() ? Face::intrados : Face::extrados;
-    if ((p0 - j.axis).norm() < std::min((p0 - j.intrados).norm(), (p0 - j.extrados).norm())) face = Face::axis;
-    hinges.push_back({joint, face, step.hinges[k]});
-  }
-  return hinges;
 }
 
 // The crown's drop (m, downwards positive) of a solved elastic or cracking arch; NaN without a field.
@@ -177,7 +170,7 @@ std::string summary_row(const Columns& columns, const SceneParameters& p, const 
   }
   row.add((s.spread.left_share + s.spread.right_share) * r.d_max / L).add(to_string(r.collapse));
   row.add(last.H).add(last.V_left).add(last.H / last.V_left).add(last.crown_drop / L);
-  row.add(hinge_text(mechanism_hinges(r, first), L)).add(hinge_text(mechanism_hinges(r, last), L));
+  row.add(hinge_text(first.hinges, L)).add(hinge_text(last.hinges, L));
   row.add(r.message);
   return row.take();
 }
@@ -222,7 +215,7 @@ std::string path_rows(const Columns& columns, const SceneParameters& p, const Sc
     const SpreadStep& step = r.path[i];
     row.add((s.spread.left_share + s.spread.right_share) * step.d / L).add(to_string(r.status)).add(step.H);
     row.add(step.V_left).add(step.V_right).add(step.H / step.V_left).add(step.crown_drop / L);
-    row.add(hinge_text(mechanism_hinges(r, step), L));
+    row.add(hinge_text(step.hinges, L));
     row.add(i + 1 == r.path.size() ? std::string_view(to_string(r.collapse)) : std::string_view{});
     row.add(std::string_view{});
     text += row.take_to_mark();

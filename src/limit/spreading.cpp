@@ -1,13 +1,14 @@
-// The mechanism part of the spreading path (spreading.hpp). The crown hinge's position is found in
-// closed form (two circles), so the finite rotations are exact; the program is the limit analysis' own.
+// The mechanism part of the spreading path (spreading.hpp): increments of the movement, each from the
+// minimum-thrust state of the voussoirs where they are, its hinges turned by finite angles that close the
+// chain exactly (a Newton iteration on three equations); the program is the limit analysis' own.
 #include "ogive/limit/spreading.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <stdexcept>
 
 #include <Eigen/Geometry>
+#include <Eigen/SVD>
 
 #include "limit/limit_internal.hpp"
 
@@ -17,168 +18,275 @@ namespace {
 using limit_detail::LimitLp;
 using Vec = Eigen::Vector2d;
 
-using limit_detail::cross;
+// z x r: the velocity at arm r of a unit rotation rate.
+Vec perp(const Vec& r) { return {-r.y(), r.x()}; }
 
-// A rigid motion p -> centre' + R(angle) (p - centre).
-struct Motion {
-  Vec centre = Vec::Zero(), moved = Vec::Zero();
+// A rigid motion x -> R(angle) x + shift.
+struct Rigid {
   double angle = 0;
-  Vec operator()(const Vec& p) const { return moved + Eigen::Rotation2Dd(angle) * (p - centre); }
+  Vec shift = Vec::Zero();
+  Vec operator()(const Vec& p) const { return Eigen::Rotation2Dd(angle) * p + shift; }
+  // x -> this(first(x)).
+  Rigid after(const Rigid& first) const { return {angle + first.angle, Eigen::Rotation2Dd(angle) * first.shift + shift}; }
 };
+Rigid translation(const Vec& u) { return {0, u}; }
+Rigid rotation_about(const Vec& p, double phi) { return {phi, p - Eigen::Rotation2Dd(phi) * p}; }
 
-// The four bodies: left support part, left block, right block, right support part.
-struct Configuration {
-  Motion body[4];
-  Vec crown;  // the crown hinge, moved
+// Where the pieces are: each voussoir's motion from its place at d = 0, and each springing's.
+struct Placement {
+  std::vector<Rigid> voussoir;
+  Rigid left, right;
 };
-
-struct Mechanism {
-  int joint[3];  // left, crown, right hinge joints
-  Vec point[3];  // their points at d = 0
-  double left_share, right_share;
-};
-
-// The configuration at movement d; false when the two circles do not meet (the hinges are collinear).
-bool configure(const Mechanism& m, double d, Configuration& c) {
-  const Vec uL(-m.left_share * d, 0), uR(m.right_share * d, 0);
-  const Vec p1 = m.point[0] + uL, p3 = m.point[2] + uR;
-  const double a = (m.point[1] - m.point[0]).norm(), b = (m.point[1] - m.point[2]).norm();
-  const Vec chord = p3 - p1;
-  const double c_len = chord.norm();
-  if (c_len >= a + b || c_len <= std::abs(a - b)) return false;
-  // The crown hinge on the same side of the chord as at d = 0 (the branch the motion follows).
-  const double along = (a * a - b * b + c_len * c_len) / (2 * c_len);
-  const double off = std::sqrt(std::max(0.0, a * a - along * along));
-  const Vec e = chord / c_len, n(-e.y(), e.x());
-  const double side = cross(m.point[2] - m.point[0], m.point[1] - m.point[0]) >= 0 ? 1.0 : -1.0;
-  c.crown = p1 + along * e + side * off * n;
-  auto angle_of = [](const Vec& v) { return std::atan2(v.y(), v.x()); };
-  c.body[0] = {Vec::Zero(), uL, 0};
-  c.body[1] = {m.point[0], p1, angle_of(c.crown - p1) - angle_of(m.point[1] - m.point[0])};
-  c.body[2] = {m.point[2], p3, angle_of(c.crown - p3) - angle_of(m.point[1] - m.point[2])};
-  c.body[3] = {Vec::Zero(), uR, 0};
-  return true;
-}
-
-// The body of voussoir k, and of joint j's left side.
-int body_of_voussoir(const Mechanism& m, int k) {
-  return k < m.joint[0] ? 0 : k < m.joint[1] ? 1 : k < m.joint[2] ? 2 : 3;
-}
 
 Vec load_point(const VerticalLoad& l) { return {l.moment / l.force, l.height_moment / l.force}; }
-VerticalLoad moved_load(const VerticalLoad& l, const Motion& mo) {
+VerticalLoad moved_load(const VerticalLoad& l, const Rigid& m) {
   if (l.force == 0) return l;
-  const Vec p = mo(load_point(l));
+  const Vec p = m(load_point(l));
   return {l.force, l.force * p.x(), l.force * p.y()};
 }
 
-// The ring moved into configuration c: every point with its body, the hinge joints as pins through
-// their hinge points.
-void move_ring(const Ring& ring0, const Mechanism& m, const Configuration& c, Ring& ring) {
+// ring0 with every voussoir (its centroid and its loads' points) where `at` puts it, and each joint
+// midway between its two faces: the left one with the voussoir (or springing) before it, the right one
+// with the voussoir after it.
+void place_ring(const Ring& ring0, const Placement& at, Ring& ring) {
   ring = ring0;
-  for (std::size_t k = 0; k < ring.voussoirs.size(); ++k) {
-    const Motion& mo = c.body[body_of_voussoir(m, static_cast<int>(k))];
+  const std::size_t n = ring0.voussoirs.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Rigid& m = at.voussoir[k];
     Voussoir& v = ring.voussoirs[k];
-    v.centroid = mo(ring0.voussoirs[k].centroid);
-    v.fill = moved_load(ring0.voussoirs[k].fill, mo);
-    v.live = moved_load(ring0.voussoirs[k].live, mo);
+    v.centroid = m(ring0.voussoirs[k].centroid);
+    v.fill = moved_load(ring0.voussoirs[k].fill, m);
+    v.live = moved_load(ring0.voussoirs[k].live, m);
   }
-  for (std::size_t j = 0; j < ring.joints.size(); ++j) {
-    const int k = std::max(0, static_cast<int>(j) - 1);  // the voussoir on its left (the first: its right)
-    const Motion& mo = c.body[j == 0 ? 0 : body_of_voussoir(m, k)];
+  for (std::size_t j = 0; j <= n; ++j) {
+    const Rigid& a = j == 0 ? at.left : at.voussoir[j - 1];
+    const Rigid& b = j == n ? at.right : at.voussoir[j];
+    const Joint& j0 = ring0.joints[j];
     Joint& jt = ring.joints[j];
-    jt.intrados = mo(ring0.joints[j].intrados);
-    jt.extrados = mo(ring0.joints[j].extrados);
-    jt.axis = mo(ring0.joints[j].axis);
+    jt.intrados = 0.5 * (a(j0.intrados) + b(j0.intrados));
+    jt.extrados = 0.5 * (a(j0.extrados) + b(j0.extrados));
+    jt.axis = 0.5 * (a(j0.axis) + b(j0.axis));
   }
-  for (int h = 0; h < 3; ++h) {
-    const Motion& mo = c.body[h == 0 ? 0 : h];  // the left side's body of each hinge joint
-    ring.joints[m.joint[h]].axis = mo(m.point[h]);
-    ring.pins.push_back(m.joint[h]);
-  }
-  std::sort(ring.pins.begin(), ring.pins.end());
-  ring.pins.erase(std::unique(ring.pins.begin(), ring.pins.end()), ring.pins.end());
 }
 
-// Whether every hinge opens (the face opposite its contact separates into the arch's direction) by more
-// than -gap_floor; at d = 0 nothing has opened.
-bool hinges_open(const Ring& ring0, const Mechanism& m, const Configuration& c, double gap_floor) {
-  for (int h = 0; h < 3; ++h) {
-    const Joint& j = ring0.joints[m.joint[h]];
-    const bool contact_intrados = (m.point[h] - j.intrados).norm() < (m.point[h] - j.extrados).norm();
-    const Vec q = contact_intrados ? j.extrados : j.intrados;
-    const Vec gap = c.body[h + 1](q) - c.body[h](q);
-    const Vec e = j.extrados - j.intrados;
-    const Vec towards_right(e.y(), -e.x());  // the joint's normal pointing to the next voussoir
-    // Which way the joint's normal points: towards the voussoir on its right, or (the right springing's
-    // joint, with none there) away from the one on its left.
-    const int voussoirs = static_cast<int>(ring0.voussoirs.size());
-    const bool right_springing = m.joint[h] >= voussoirs;
-    const Vec centroid = ring0.voussoirs[right_springing ? voussoirs - 1 : m.joint[h]].centroid;
-    const double side = towards_right.dot(centroid - j.axis) >= 0 ? 1.0 : -1.0;
-    const double sign = right_springing ? -side : side;
-    if (sign * towards_right.normalized().dot(gap) < -gap_floor) return false;
+// Every vertical load of the ring at factor 1 (self-weight, fill, live) by its point of action, with the
+// voussoir it bears on.
+template <class F>
+void for_each_load(const Ring& ring, F&& f) {
+  for (std::size_t k = 0; k < ring.voussoirs.size(); ++k) {
+    const Voussoir& v = ring.voussoirs[k];
+    if (v.weight != 0) f(k, v.weight, v.centroid);
+    if (v.fill.force != 0) f(k, v.fill.force, load_point(v.fill));
+    if (v.live.force != 0) f(k, v.live.force, load_point(v.live));
   }
+}
+
+// Which way a hinge's relative rotation (of the part after it against the part before it, counter-
+// clockwise positive) opens its joint: +1 or -1; 0 for a pin, which turns either way. The face opposite
+// the contact must move away from the voussoir before the joint.
+double opening_sign(const Ring& ring, const Hinge& h) {
+  if (h.face == Face::axis) return 0;
+  const Joint& jt = ring.joints[static_cast<std::size_t>(h.joint)];
+  const Vec q = h.face == Face::intrados ? jt.extrados : jt.intrados;
+  const Vec e = jt.extrados - jt.intrados;
+  Vec normal(e.y(), -e.x());  // oriented below towards the voussoir after the joint
+  const std::size_t n = ring.voussoirs.size();
+  const bool last = static_cast<std::size_t>(h.joint) >= n;  // the right springing: none after it
+  const Vec c = ring.voussoirs[last ? n - 1 : static_cast<std::size_t>(h.joint)].centroid;
+  if (normal.dot(c - jt.axis) < 0) normal = -normal;
+  if (last) normal = -normal;
+  return perp(q - h.point).dot(normal) >= 0 ? 1.0 : -1.0;
+}
+
+// A mechanism: its hinges (ascending) and their relative rotation rates per unit rate of d.
+struct Mechanism {
+  std::vector<Hinge> hinges;
+  std::vector<double> rates;
+  bool found() const { return !hinges.empty(); }
+};
+
+// The smallest-norm solution x of J x = r for a 3 x m J of rank 3; false when J has a smaller rank (the
+// hinges are fewer than three or in a line) or the equations do not hold to round-off.
+bool min_norm_solve(const Eigen::MatrixXd& J, const Eigen::Vector3d& r, Eigen::VectorXd& x) {
+  if (J.cols() < 3) return false;
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const auto& s = svd.singularValues();
+  if (!(s(2) > 1e-10 * s(0))) return false;
+  x = svd.solve(r);
   return true;
 }
 
-// Every vertical load of the ring at factor 1 (self-weight, fill, live) by its point of action.
-template <class F>
-void for_each_load(const Ring& ring, F&& f) {
-  for (const Voussoir& v : ring.voussoirs) {
-    if (v.weight != 0) f(v.weight, v.centroid);
-    if (v.fill.force != 0) f(v.fill.force, load_point(v.fill));
-    if (v.live.force != 0) f(v.live.force, load_point(v.live));
+// Each hinge's column of the closure equations: the rotation it adds, and the velocity it gives the
+// point `at` of the right springing (rotation rate times the arm from the hinge's point `q`).
+Eigen::Vector3d closure_column(const Vec& at, const Vec& q) {
+  const Vec v = perp(at - q);
+  return {1.0, v.x(), v.y()};
+}
+
+// The mechanism of `hinges` under the springings' velocities vL, vR: relative rotation rates with sum 0
+// (neither springing turns) that carry the right springing at vR - vL relative to the left one, the
+// least squared; hinges that this would close are left out one by one (the worst first).
+Mechanism choose_mechanism(const Ring& ring, std::vector<Hinge> hinges, const Vec& vL, const Vec& vR) {
+  std::vector<double> sign(hinges.size());
+  for (std::size_t i = 0; i < hinges.size(); ++i) sign[i] = opening_sign(ring, hinges[i]);
+  for (;;) {
+    const std::size_t m = hinges.size();
+    Eigen::MatrixXd J(3, static_cast<Eigen::Index>(m));
+    // The right springing's point taken at the first hinge: the rows are the same equations (the rates
+    // sum to 0) with arms of the arch's size.
+    const Vec at = m > 0 ? hinges.front().point : Vec::Zero();
+    for (std::size_t i = 0; i < m; ++i) J.col(static_cast<Eigen::Index>(i)) = closure_column(at, hinges[i].point);
+    Eigen::VectorXd x;
+    const Vec dv = vR - vL;
+    if (!min_norm_solve(J, Eigen::Vector3d(0, dv.x(), dv.y()), x)) return {};
+    const double scale = x.cwiseAbs().maxCoeff();
+    std::size_t worst = m;
+    double worst_value = -1e-9 * scale;
+    for (std::size_t i = 0; i < m; ++i) {
+      const double opening = sign[i] * x(static_cast<Eigen::Index>(i));
+      if (opening < worst_value) {
+        worst_value = opening;
+        worst = i;
+      }
+    }
+    if (worst == m) return {std::move(hinges), std::vector<double>(x.data(), x.data() + m)};
+    hinges.erase(hinges.begin() + static_cast<std::ptrdiff_t>(worst));
+    sign.erase(sign.begin() + static_cast<std::ptrdiff_t>(worst));
   }
 }
 
-// The mechanism's thrust by virtual work at configuration c of the moved ring: the velocities per unit
-// rate of d (the closure's derivative at c), then the supports' work -H (left_share + right_share)
-// balances the loads' -sum F v_y.
-double thrust_by_work(const Ring& moved, const Mechanism& m, const Configuration& c) {
-  const Vec vL(-m.left_share, 0), vR(m.right_share, 0);
-  const Vec a = c.crown - c.body[1].moved, b = c.crown - c.body[2].moved;
-  // vL + w1 z x a = vR + w3 z x b, z x r = (-r_y, r_x).
-  Eigen::Matrix2d A;
-  A << -a.y(), b.y(), a.x(), -b.x();
-  const Eigen::Vector2d w = A.fullPivLu().solve(Eigen::Vector2d(vR.x() - vL.x(), vR.y() - vL.y()));
-  const double omega[4] = {0, w(0), w(1), 0};
-  const Vec base[4] = {Vec::Zero(), c.body[1].moved, c.body[2].moved, Vec::Zero()};
-  const Vec vel[4] = {vL, vL, vR, vR};
-  double work = 0;
-  for (std::size_t k = 0; k < moved.voussoirs.size(); ++k) {
-    const int body = body_of_voussoir(m, static_cast<int>(k));
-    const Voussoir& v = moved.voussoirs[k];
-    auto vy = [&](const Vec& p) { return vel[body].y() + omega[body] * (p - base[body]).x(); };
-    if (v.weight != 0) work -= v.weight * vy(v.centroid);
-    if (v.fill.force != 0) work -= v.fill.force * vy(load_point(v.fill));
-    if (v.live.force != 0) work -= v.live.force * vy(load_point(v.live));
+// The finite motion of each body of `mech` (the left springing's part, the blocks between hinges, the
+// right springing's part) when the springings move by uL and uR: the hinge rotations phi that close the
+// chain exactly, by Newton's method from the rates' first-order guess, each step the least-squares one.
+// False when the iteration does not close it or a hinge would turn the closing way.
+bool finite_motion(const Ring& ring, const Mechanism& mech, const Vec& uL, const Vec& uR, double d_step,
+                   std::vector<Rigid>& bodies) {
+  const std::size_t m = mech.hinges.size();
+  Eigen::VectorXd phi(static_cast<Eigen::Index>(m));
+  for (std::size_t i = 0; i < m; ++i) phi(static_cast<Eigen::Index>(i)) = mech.rates[i] * d_step;
+  const double L = ring.span;
+  bodies.assign(m + 1, Rigid{});
+  std::vector<Vec> q(m);
+  for (int iteration = 0; iteration < 30; ++iteration) {
+    Rigid chain = translation(uL);
+    bodies[0] = chain;
+    for (std::size_t i = 0; i < m; ++i) {
+      q[i] = chain(mech.hinges[i].point);
+      chain = chain.after(rotation_about(mech.hinges[i].point, phi(static_cast<Eigen::Index>(i))));
+      bodies[i + 1] = chain;
+    }
+    const Eigen::Vector3d residual(chain.angle, chain.shift.x() - uR.x(), chain.shift.y() - uR.y());
+    if (std::abs(residual(0)) <= 1e-15 && residual.tail<2>().norm() <= 1e-15 * L) {
+      bodies[m] = translation(uR);  // equal to round-off: the springing's own motion
+      for (std::size_t i = 0; i < m; ++i) {
+        const double opening = opening_sign(ring, mech.hinges[i]) * phi(static_cast<Eigen::Index>(i));
+        if (opening < -1e-9 * phi.cwiseAbs().maxCoeff()) return false;
+      }
+      return true;
+    }
+    Eigen::MatrixXd J(3, static_cast<Eigen::Index>(m));
+    for (std::size_t i = 0; i < m; ++i) J.col(static_cast<Eigen::Index>(i)) = closure_column(chain.shift, q[i]);
+    Eigen::VectorXd step;
+    if (!min_norm_solve(J, -residual, step)) return false;
+    phi += step;
   }
-  return work / (m.left_share + m.right_share);
+  return false;
 }
 
-// The mechanism's hinges among `hinges` (indices; -1 when missing): the one nearest the crown joint cj
-// and the nearest one on each side of it.
-struct MechanismHinges {
-  int left = -1, crown = -1, right = -1;
-};
-MechanismHinges mechanism_hinges(const std::vector<Hinge>& hinges, int cj) {
-  MechanismHinges m;
-  for (std::size_t i = 0; i < hinges.size(); ++i)
-    if (m.crown < 0 || std::abs(hinges[i].joint - cj) < std::abs(hinges[m.crown].joint - cj)) m.crown = static_cast<int>(i);
-  for (std::size_t i = 0; m.crown >= 0 && i < hinges.size(); ++i) {
-    const int j = hinges[i].joint, c = hinges[m.crown].joint;
-    if (j < c && (m.left < 0 || j > hinges[m.left].joint)) m.left = static_cast<int>(i);
-    if (j > c && (m.right < 0 || j < hinges[m.right].joint)) m.right = static_cast<int>(i);
-  }
-  return m;
-}
-
-struct Evaluation {
-  bool admissible = false;
-  bool snap = false;
-  bool lp_failed = false;
+// One admissible state of the path: where the pieces are, the program's answer and the mechanism that
+// moves them on.
+struct State {
+  Placement at;
+  LimitLp::Answer answer;
+  Mechanism mechanism;
   SpreadStep step;
+};
+
+enum class Outcome { admissible, inadmissible, snap_through, lp_failure };
+
+class Path {
+ public:
+  Path(const Ring& ring0, const LimitOptions& limit, const SpreadOptions& spread)
+      : ring0_(ring0),
+        friction_(limit.friction),
+        lp_(ring0, limit.friction),
+        vL_(-spread.left_share, 0),
+        vR_(spread.right_share, 0),
+        live_factor_(ring0.has_live_load() ? 1.0 : 0.0) {}
+
+  // The state of the pieces `at`, movement d.
+  Outcome evaluate(Placement at, double d, const std::vector<int>* warm, State& s) {
+    place_ring(ring0_, at, moved_);
+    lp_.load(moved_, friction_);
+    const LimitLp::Answer a = lp_.extreme_thrust(live_factor_, false, warm);
+    if (a.outcome == LimitLp::Outcome::infeasible) return Outcome::inadmissible;
+    if (a.outcome != LimitLp::Outcome::optimal) return Outcome::lp_failure;
+    const ThrustState st = thrust_state(moved_, a.H, a.V, a.M, live_factor_);
+    Mechanism mech = choose_mechanism(moved_, st.hinges, vL_, vR_);
+    if (!mech.found()) return Outcome::snap_through;
+    s.at = std::move(at);
+    s.answer = a;
+    s.mechanism = std::move(mech);
+    SpreadStep& step = s.step;
+    step.d = d;
+    step.H = a.H;
+    step.V_left = st.V_left;
+    step.V_right = st.V_right;
+    step.H_work = thrust_by_work(s.mechanism);
+    const std::size_t cj = static_cast<std::size_t>(ring0_.crown_joint());
+    step.crown_drop = ring0_.joints[cj].extrados.y() - moved_.joints[cj].extrados.y();
+    step.potential = 0;
+    for_each_load(moved_, [&](std::size_t, double f, const Vec& p) { step.potential += f * p.y(); });
+    step.hinges = s.mechanism.hinges;
+    return Outcome::admissible;
+  }
+
+  // The state after a further movement `dd` from `from` by its mechanism.
+  Outcome advance(const State& from, double dd, State& to) {
+    std::vector<Rigid> bodies;
+    if (!finite_motion(moved_for(from), from.mechanism, vL_ * dd, vR_ * dd, dd, bodies)) return Outcome::snap_through;
+    Placement at = from.at;
+    const std::vector<Hinge>& h = from.mechanism.hinges;
+    std::size_t body = 0;
+    for (std::size_t k = 0; k < at.voussoir.size(); ++k) {
+      while (body < h.size() && static_cast<std::size_t>(h[body].joint) <= k) ++body;
+      at.voussoir[k] = bodies[body].after(at.voussoir[k]);
+    }
+    at.left = bodies.front().after(at.left);
+    at.right = bodies.back().after(at.right);
+    return evaluate(std::move(at), from.step.d + dd, &from.answer.basis, to);
+  }
+
+  const Ring& moved() const { return moved_; }
+
+ private:
+  // The moved ring of a state (the last one evaluated is kept; another is placed again).
+  const Ring& moved_for(const State& s) {
+    place_ring(ring0_, s.at, moved_);
+    return moved_;
+  }
+
+  // The thrust by virtual work of the mechanism at the moved ring: each body's velocity per unit rate
+  // of d, the loads' work -sum F v_y balanced by the supports' H (vR - vL).x.
+  double thrust_by_work(const Mechanism& mech) const {
+    const std::vector<Hinge>& h = mech.hinges;
+    double work = 0;
+    std::size_t body = 0;
+    for_each_load(moved_, [&](std::size_t k, double f, const Vec& p) {
+      while (body < h.size() && static_cast<std::size_t>(h[body].joint) <= k) ++body;
+      Vec v = vL_;
+      for (std::size_t i = 0; i < body; ++i) v += mech.rates[i] * perp(p - h[i].point);
+      work -= f * v.y();
+    });
+    return work / (vR_.x() - vL_.x());
+  }
+
+  const Ring& ring0_;
+  const double friction_;
+  LimitLp lp_;
+  Ring moved_;
+  const Vec vL_, vR_;
+  const double live_factor_;
 };
 
 }  // namespace
@@ -191,6 +299,7 @@ const char* to_string(SpreadStatus s) {
     case SpreadStatus::inadmissible: return "inadmissible";
     case SpreadStatus::no_mechanism: return "no_mechanism";
     case SpreadStatus::lp_failure: return "lp_failure";
+    case SpreadStatus::not_collapsed: return "not_collapsed";
   }
   return "?";
 }
@@ -203,6 +312,7 @@ bool SpreadOptions::is_valid(std::string* why) const {
   if (!(left_share >= 0) || !std::isfinite(left_share)) return bad("left_share must be finite and >= 0");
   if (!(right_share >= 0) || !std::isfinite(right_share)) return bad("right_share must be finite and >= 0");
   if (!(left_share + right_share > 0)) return bad("left_share + right_share must be > 0 (the span must grow)");
+  if (!(increment_ratio > 0 && increment_ratio <= 0.1)) return bad("increment_ratio must lie in (0, 0.1]");
   if (steps < 1 || steps > 100000) return bad("steps must be in [1, 100000]");
   return true;
 }
@@ -218,105 +328,103 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
     r.message = base.message.empty() ? "no thrust line fits inside the arch at d = 0" : base.message;
     return r;
   }
-  const Ring& ring0 = base.ring;
-  const std::vector<Hinge>& hinges = base.min_state.hinges;
-  const auto [left, crown, right] = mechanism_hinges(hinges, ring0.crown_joint());
-  if (left < 0 || right < 0) {
-    r.status = SpreadStatus::no_mechanism;
-    r.message = "the minimum-thrust state has no hinge on each side of its crown hinge";
-    return r;
-  }
-  Mechanism m{{hinges[left].joint, hinges[crown].joint, hinges[right].joint},
-              {hinges[left].point, hinges[crown].point, hinges[right].point},
-              spread.left_share,
-              spread.right_share};
-  r.hinge_joints = {m.joint[0], m.joint[1], m.joint[2]};
+  const Ring& ring0 = r.ring;
   const double L = ring0.span;
-  const double lf = ring0.has_live_load() ? 1.0 : 0.0;
+  const double sides = spread.left_share + spread.right_share;
+  Path path(ring0, limit, spread);
+  Placement start;
+  start.voussoir.assign(ring0.voussoirs.size(), Rigid{});
 
-  Ring moved;
-  LimitLp lp(ring0, limit.friction);
-  auto evaluate = [&](double d) {
-    Evaluation ev;
-    Configuration c;
-    if (!configure(m, d, c) || (d > 0 && !hinges_open(ring0, m, c, 1e-12 * L))) {
-      ev.snap = true;
-      return ev;
+  State current;
+  const Outcome first = path.evaluate(start, 0, nullptr, current);
+  if (first != Outcome::admissible) {
+    if (first == Outcome::snap_through) {  // admissible, but nothing moves the springings apart
+      r.status = SpreadStatus::no_mechanism;
+      r.message = "the minimum-thrust state's hinges make no mechanism that moves the springings apart";
+      SpreadStep s;
+      s.H = base.min_state.H;
+      s.V_left = base.min_state.V_left;
+      s.V_right = base.min_state.V_right;
+      s.hinges = base.min_state.hinges;
+      r.path.push_back(s);
+      return r;
     }
-    move_ring(ring0, m, c, moved);
-    lp.load(moved, limit.friction);
-    const LimitLp::Answer a = lp.extreme_thrust(lf, false);
-    if (a.outcome == LimitLp::Outcome::infeasible) return ev;
-    if (a.outcome != LimitLp::Outcome::optimal) {
-      ev.lp_failed = true;
-      return ev;
-    }
-    const ThrustState st = thrust_state(moved, a.H, a.V, a.M, lf);
-    ev.admissible = true;
-    ev.step.d = d;
-    ev.step.H = a.H;
-    ev.step.V_left = st.V_left;
-    ev.step.V_right = st.V_right;
-    ev.step.H_work = thrust_by_work(moved, m, c);
-    ev.step.crown_drop = m.point[1].y() - c.crown.y();
-    double potential = 0;
-    for_each_load(moved, [&](double f, const Vec& p) { potential += f * p.y(); });
-    ev.step.potential = potential;
-    ev.step.hinges = {c.body[1].moved, c.crown, c.body[2].moved};
-    return ev;
-  };
-
-  Evaluation first = evaluate(0);
-  if (!first.admissible) {
-    r.status = first.lp_failed ? SpreadStatus::lp_failure : SpreadStatus::inadmissible;
-    r.message = "no thrust line through the minimum-thrust state's hinges fits the arch at d = 0";
+    r.status = first == Outcome::lp_failure ? SpreadStatus::lp_failure : SpreadStatus::inadmissible;
+    r.message = first == Outcome::lp_failure ? "the LP of the minimum thrust stopped without an answer"
+                                             : "no thrust line fits inside the arch at d = 0";
     return r;
   }
-  // Bracket the collapse by doubling, then bisect.
-  double lo = 0, hi = 1e-5 * L;
-  Evaluation last_bad;
-  for (;;) {
-    Evaluation ev = evaluate(hi);
-    if (ev.lp_failed) {
+
+  std::vector<SpreadStep> all{current.step};
+  const double increment = spread.increment_ratio * L / sides;
+  const double tolerance = kSpreadTolerance * L / sides;
+  // A span that grew by more than 2.5 L has outgrown any arch: both halves lie flat before that.
+  const long most = static_cast<long>(std::ceil(2.5 / spread.increment_ratio));
+  State next;
+  for (long i = 0;; ++i) {
+    if (i == most) {
+      r.status = SpreadStatus::not_collapsed;
+      r.message = "no collapse before the span grew by 2.5 L (both halves would lie flat before that)";
+      r.path = {all.front(), all.back()};
+      return r;
+    }
+    Outcome o = path.advance(current, increment, next);
+    ++r.increments;
+    if (o == Outcome::admissible) {
+      std::swap(current, next);
+      all.push_back(current.step);
+      continue;
+    }
+    if (o == Outcome::lp_failure) {
       r.status = SpreadStatus::lp_failure;
       r.message = "the LP of the minimum thrust stopped without an answer";
       return r;
     }
-    if (!ev.admissible) {
-      last_bad = ev;
-      break;
+    // Collapse within this increment: bisect it from the current state with the current mechanism.
+    double lo = 0, hi = increment;
+    Outcome last_bad = o;
+    bool moved_on = false;
+    State best;
+    while (hi - lo > tolerance) {
+      const double mid = 0.5 * (lo + hi);
+      const Outcome om = path.advance(current, mid, next);
+      ++r.increments;
+      if (om == Outcome::lp_failure) {
+        r.status = SpreadStatus::lp_failure;
+        r.message = "the LP of the minimum thrust stopped without an answer";
+        return r;
+      }
+      if (om == Outcome::admissible) {
+        lo = mid;
+        std::swap(best, next);
+        moved_on = true;
+      } else {
+        hi = mid;
+        last_bad = om;
+      }
     }
-    lo = hi;
-    hi *= 2;
-  }
-  while (hi - lo > kSpreadTolerance * L) {
-    const double mid = 0.5 * (lo + hi);
-    Evaluation ev = evaluate(mid);
-    if (ev.admissible) lo = mid;
-    else {
-      last_bad = ev;
-      hi = mid;
+    if (moved_on) {
+      current = std::move(best);
+      all.push_back(current.step);
     }
+    r.collapse = last_bad == Outcome::inadmissible ? SpreadCollapse::inadmissible : SpreadCollapse::snap_through;
+    break;
   }
-  r.collapse = last_bad.snap ? SpreadCollapse::snap_through : SpreadCollapse::inadmissible;
-  r.d_max = lo;
-  if (lo == 0 && last_bad.snap) {  // the hinges do not move this way at all: no mechanism, not a capacity of 0
-    r.status = SpreadStatus::no_mechanism;
-    r.message = "the minimum-thrust state's three hinges nearest the crown do not open under this movement (a "
-                "pointed arch turns about two hinges beside its crown: four hinges)";
-    r.path.push_back(first.step);
-    return r;
+  r.d_max = current.step.d;
+  // The moved ring at collapse, for drawing.
+  State last;
+  path.evaluate(current.at, current.step.d, &current.answer.basis, last);
+  r.collapse_ring = path.moved();
+
+  // The path's rows: d = 0, the state reached at or before each d_max i / steps, and the last.
+  r.path.push_back(all.front());
+  std::size_t k = 0;
+  for (int i = 1; i < spread.steps; ++i) {
+    const double target = r.d_max * i / spread.steps;
+    while (k + 1 < all.size() && all[k + 1].d <= target) ++k;
+    if (all[k].d > r.path.back().d) r.path.push_back(all[k]);
   }
-  r.path.reserve(spread.steps + 1);
-  r.path.push_back(first.step);
-  for (int i = 1; i <= spread.steps; ++i) {
-    Evaluation ev = evaluate(lo * i / spread.steps);
-    if (!ev.admissible) {  // a window of inadmissibility inside the bracket: collapse is there
-      r.d_max = r.path.back().d;
-      break;
-    }
-    r.path.push_back(ev.step);
-  }
+  if (all.back().d > r.path.back().d || r.path.size() == 1) r.path.push_back(all.back());
   r.status = SpreadStatus::success;
   return r;
 }

@@ -1,24 +1,34 @@
 // The arch of rigid voussoirs on spreading supports, with large displacements: the mechanism part of the
 // path from the limit analysis' minimum-thrust state (d = 0) to collapse.
 //
-// Kinematics: the three hinges of the mechanism (the minimum-thrust state's hinge nearest the crown and
-// the nearest one on each side of it) cut the ring into two rotating blocks; the voussoirs outside the
-// outer hinges move with their support (a rigid translation). The springings move apart horizontally,
-// the left one by -left_share * d, the right one by +right_share * d. The crown hinge's new position is
-// the intersection of the two circles about the moved outer hinges (finite rotations, exact, not
-// linearised); every joint point, centroid and load's point of action moves with its block, and every
-// load stays vertical.
+// The movement: the left springing moves by -left_share * d, the right one by +right_share * d
+// (horizontally), d growing from 0 in increments of increment_ratio * L.
 //
-// Statics: at each step the deformed ring, with the three hinges as pins (an opened joint carries its
-// force through its hinge point only), goes to the limit analysis' minimum-thrust program.
+// Each increment starts from an admissible state of the moved ring: the limit analysis' program of the
+// minimum thrust on the voussoirs where they are now, every joint free (no hinge is imposed). The joints
+// where its thrust line touches a face (or crosses a pin) are the hinges of the increment's mechanism;
+// from one increment to the next they may move to other joints (hinge migration), and an abandoned
+// hinge's opening stays in the voussoirs' places.
 //
-// Collapse, at the first of (bisected to kSpreadTolerance of the span):
-//   inadmissible - no thrust line through the hinges fits inside the deformed voussoirs (the program is
-//                  infeasible);
-//   snap_through - the three hinges are collinear (the circles no longer meet), or a hinge would close
-//                  (its relative rotation reverses: the blocks would interpenetrate).
+// Kinematics of an increment: the hinges, ascending along the arch, cut it into blocks; the voussoirs
+// before the first hinge move with the left springing, those after the last with the right one. The
+// blocks turn about the hinges by finite angles (exact rigid motions, not linearised) such that the
+// chain closes on the moved right springing. Three hinges fix the motion; with more (a pointed arch's
+// minimum-thrust state has two beside its crown, a symmetric pair) the motion is the one of least
+// squared hinge rotations, which for a symmetric arch under a symmetric movement is the symmetric one.
+// A hinge turns one way only (its joint opens on the face opposite its contact; a pin either way): a
+// hinge the least-squares motion would close is left out, and the motion found again without it.
 //
-// Units: SI (m, N per metre of width). Positions as in limit.hpp.
+// A joint's faces, once opened, no longer meet: the program takes each joint midway between its two
+// faces (exact at a turning hinge, whose contact point both faces share).
+//
+// Collapse, at the first of (the last increment bisected to kSpreadTolerance of the span):
+//   inadmissible - no thrust line fits inside the moved voussoirs (the program is infeasible);
+//   snap_through - no mechanism of the current hinges moves the springings apart: the hinges are in a
+//                  line, or fewer than three remain that open.
+//
+// Units: SI (m, N per metre of width). Positions as in limit.hpp: x from the left springing's intrados
+// at d = 0, y up.
 #pragma once
 
 #include <limits>
@@ -31,37 +41,40 @@
 
 namespace ogive {
 
-inline constexpr double kSpreadTolerance = 1e-6;  // collapse spread located to this fraction of L
+inline constexpr double kSpreadTolerance = 1e-6;  // collapse movement located to this fraction of L
 
 struct SpreadOptions {
   double left_share = 1;   // the left springing moves by -left_share * d (m per m of d), >= 0
   double right_share = 1;  // the right springing moves by +right_share * d, >= 0; one of them > 0
-  int steps = 200;         // steps along the path before collapse is bracketed, >= 1
+  // The increment of the span's increase (left_share + right_share) * d over L between two
+  // re-solutions of the minimum-thrust state (where the hinges may move), in (0, 0.1].
+  double increment_ratio = 2.5e-4;
+  int steps = 200;  // the path's rows: states at about d_max i / steps, i = 0 .. steps; >= 1
   bool is_valid(std::string* why) const;
 };
 
 enum class SpreadCollapse { inadmissible, snap_through };
 const char* to_string(SpreadCollapse c);
 
-// One configuration of the mechanism.
+// One state of the mechanism.
 struct SpreadStep {
-  double d = 0;             // m, the movement parameter: the span grew by (left_share + right_share) d
-  double H = std::numeric_limits<double>::quiet_NaN();  // N/m, the program's (static) thrust
+  double d = 0;  // m, the movement parameter: the span grew by (left_share + right_share) d
+  double H = std::numeric_limits<double>::quiet_NaN();       // N/m, the program's (static) thrust
   double H_work = std::numeric_limits<double>::quiet_NaN();  // N/m, the mechanism's by virtual work
   double V_left = std::numeric_limits<double>::quiet_NaN(), V_right = std::numeric_limits<double>::quiet_NaN();
-  double crown_drop = 0;    // m, the crown hinge's drop
-  double potential = 0;     // N m/m, sum of every load times its height
-  std::vector<Eigen::Vector2d> hinges;  // m, the three hinge points, left to right
+  double crown_drop = 0;     // m, the drop of the crown joint's extrados point
+  double potential = 0;      // N m/m, sum of every load times its height
+  std::vector<Hinge> hinges;  // the mechanism's hinges, ascending: joint, face and where the point is now
 };
 
 enum class SpreadStatus {
-  success,        // a path to collapse: every step's H is the program's and agrees with its virtual work
-  inadmissible,   // no thrust line fits the arch at d = 0 (t < t_min): no path
-  no_mechanism,   // the minimum-thrust state has no hinge on each side of a crown hinge, or its three
-                  // hinges do not open under the movement (snap-through at once: a pointed arch's
-                  // minimum-thrust state turns about two hinges beside its crown, which three do not
-                  // describe); path holds the state at d = 0 in the second case
-  lp_failure,     // the LP library stopped without an answer
+  success,       // a path to collapse: every state's H is the program's and equals its virtual work
+  inadmissible,  // no thrust line fits the arch at d = 0 (t < t_min): no path
+  no_mechanism,  // the minimum-thrust state at d = 0 has no mechanism that moves the springings apart;
+                 // path holds that state
+  lp_failure,    // the LP library stopped without an answer
+  not_collapsed, // no collapse before the span grew by 2.5 L, which no arch survives: path holds d = 0
+                 // and the last state
 };
 const char* to_string(SpreadStatus s);
 
@@ -70,9 +83,10 @@ struct SpreadResult {
   std::string message;
   SpreadCollapse collapse = SpreadCollapse::inadmissible;
   double d_max = std::numeric_limits<double>::quiet_NaN();  // m, the movement parameter at collapse
-  std::vector<int> hinge_joints;                            // the mechanism's three joints
-  std::vector<SpreadStep> path;  // d = 0, the steps, and the last admissible state at d_max
-  Ring ring;                     // the ring at d = 0
+  int increments = 0;             // increments taken (each one program, plus the bisection's)
+  std::vector<SpreadStep> path;   // d = 0, about `steps` states between, and the last admissible one
+  Ring ring;                      // the ring at d = 0
+  Ring collapse_ring;             // the moved ring of path.back() (its joints midway between their faces)
 };
 
 // The mechanism path of `scene` (as analyse_limit takes it) under the movement of `spread`. Throws
