@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# docs/figures/spreading-path.png: H/V of the semicircle against the span's increase, from d = 0 to
-# collapse, at three thicknesses (`ogive spread --path`; a few seconds):
+# docs/figures/spreading-path.png: H/V of the semicircle and the equilateral arch against the span's
+# increase, from d = 0 to collapse, at three thicknesses each (`ogive spread --path`; a few seconds):
 #
 #   bash docs/figures/make_spreading_figure.sh [OGIVE]        # OGIVE defaults to build/ogive
 #
-# Left, on a logarithmic axis of the movement: the cracking arch (no-tension section) falling from the
+# One row per arch. Left, on a logarithmic axis of the movement: the cracking arch (no-tension section) falling from the
 # elastic thrust to the plateau. Right, on a linear one: the mechanism of rigid voussoirs from the
 # plateau (the minimum thrust) to collapse. Needs gnuplot (bash .ci/install_deps.sh --charts).
 set -euo pipefail
@@ -14,41 +14,62 @@ ogive=${1:-build/ogive}
 command -v gnuplot >/dev/null || { echo "make_spreading_figure.sh: no gnuplot" >&2; exit 2; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-thicknesses=(0.065 0.075 0.085)
-for t in "${thicknesses[@]}"; do
-  "$ogive" spread --curve semicircular --thickness-ratio "$t" --path --columns part,spread_ratio,H_over_V \
-    >"$tmp/path-$t.csv"
-  grep ',cracking,' "$tmp/path-$t.csv" | awk -F, '$3 > 0 {print $3, $4}' >"$tmp/cracking-$t.dat"
-  grep ',elastic,' "$tmp/path-$t.csv" | awk -F, '{print 1e-7, $4}' >"$tmp/elastic-$t.dat"
-  grep ',mechanism,' "$tmp/path-$t.csv" | awk -F, '{print $3, $4}' >"$tmp/mechanism-$t.dat"
-done
+# Each arch: its curve options, a label, three thicknesses.
+arches=("--curve semicircular" "--eccentricity 0.5")
+labels=("semicircle" "equilateral arch")
+thicknesses=("0.065 0.075 0.085" "0.05 0.075 0.1")
 colors=("#1f77b4" "#d62728" "#2ca02c")
-left="" right=""
-for i in "${!thicknesses[@]}"; do
-  t=${thicknesses[$i]} c=${colors[$i]}
-  left+="'$tmp/cracking-$t.dat' with lines lw 2 lc rgb '$c' title 't/L = $t', "
-  left+="'$tmp/elastic-$t.dat' with points pt 7 ps 1.2 lc rgb '$c' notitle, "
-  right+="'$tmp/mechanism-$t.dat' with lines lw 2 lc rgb '$c' title 't/L = $t', "
+plots=()
+for a in 0 1; do
+  left="" right=""
+  i=0
+  for t in ${thicknesses[$a]}; do
+    f="$tmp/$a-$t"
+    # shellcheck disable=SC2086  # the curve options are two words
+    "$ogive" spread ${arches[$a]} --thickness-ratio "$t" --path --columns part,spread_ratio,H_over_V >"$f.csv"
+    grep ',cracking,' "$f.csv" | awk -F, '$3 > 0 {print $3, $4}' >"$f-cracking.dat"
+    grep ',elastic,' "$f.csv" | awk -F, '{print 1e-7, $4}' >"$f-elastic.dat"
+    grep ',mechanism,' "$f.csv" | awk -F, '{print $3, $4}' >"$f-mechanism.dat"
+    c=${colors[$i]}
+    left+="'$f-cracking.dat' with lines lw 2 lc rgb '$c' title 't/L = $t', "
+    left+="'$f-elastic.dat' with points pt 7 ps 1.2 lc rgb '$c' notitle, "
+    right+="'$f-mechanism.dat' with lines lw 2 lc rgb '$c' title 't/L = $t', "
+    i=$((i + 1))
+  done
+  plots+=("${left%, }" "${right%, }")
 done
 gnuplot <<GNUPLOT
-set terminal pngcairo size 1100,450 font 'sans,11'
+set terminal pngcairo size 1100,820 font 'sans,11'
 set output 'docs/figures/spreading-path.png'
 set datafile separator ' '
-set multiplot layout 1,2
+set multiplot layout 2,2
 set grid
 set ylabel 'H / V'
-set yrange [0.32:0.48]
-set title 'cracking arch: elastic thrust (dot) down to the plateau'
+set key top right
+set title '${labels[0]}, cracking arch: elastic thrust (dot) down to the plateau'
 set xlabel 'span increase / L (both springings moving)'
 set logscale x
 set format x '10^{%L}'
 set xrange [1e-7:0.03]
-plot ${left%, }
+plot ${plots[0]}
 unset logscale x
 set format x '%g'
 set xrange [0:*]
-set title 'rigid voussoirs: from the plateau up to collapse'
-plot ${right%, }
+set title '${labels[0]}, rigid voussoirs: from the plateau up to collapse'
+set key top left
+plot ${plots[1]}
+set key top right
+set title '${labels[1]}, cracking arch'
+set logscale x
+set format x '10^{%L}'
+set xrange [1e-7:0.03]
+plot ${plots[2]}
+unset logscale x
+set format x '%g'
+set xrange [0:*]
+set title '${labels[1]}, rigid voussoirs'
+set key top left
+plot ${plots[3]}
 unset multiplot
 GNUPLOT
 echo "make_spreading_figure.sh: wrote docs/figures/spreading-path.png"
