@@ -120,7 +120,7 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"error_profile", "", "bench: true error of the profile (profile_difference) against the reference"},
     {"median_seconds", "s", "bench: median time of one solve"},
     {"file", "", "draw, report: the SVG drawing or HTML page written for the scene"},
-    {"joints", "", "limit: joint orientation, radial (normal to the axis) or vertical"},
+    {"joints", "", "limit, spread: joint orientation, radial (normal to the axis) or vertical"},
     {"weight", "", "limit, spread: voussoir (each voussoir's weight at its centroid) or axis (rho g t per axis length)"},
     {"joints_count", "", "limit, spread: joints springing to springing, both included"},
     {"friction", "", "limit: friction coefficient of the joints; empty: no sliding check"},

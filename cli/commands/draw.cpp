@@ -21,6 +21,7 @@
 #include "columns.hpp"
 #include "commands.hpp"
 #include "ogive/limit/limit.hpp"
+#include "ogive/limit/spreading.hpp"
 #include "ogive/output/html_report.hpp"
 #include "ogive/output/svg.hpp"
 #include "ogive/solve/solve.hpp"
@@ -42,6 +43,7 @@ struct DrawTargets {
   std::string output;      // --output FILE: exactly one scene
   std::string output_dir;  // --output-dir DIR: one file per scene, named by draw_file_name
   bool limit = false;      // --limit: the limit analysis' minimum and maximum thrust lines too
+  std::optional<double> spread_stage;  // --spread-stage: the spreading mechanism this far to collapse
 };
 
 struct DrawOptions {
@@ -66,6 +68,44 @@ void add_limit_drawing(const Scene& scene, DrawingOptions& drawing) {
   options.horizontal_load_factor = scene.horizontal_acceleration != 0;
   const LimitResult r = analyse_limit(scene, options);
   add_limit_analysis(drawing, scene, r);
+}
+
+// The options a spreading stage does not take: it starts from the arch at d = 0, both springings moving
+// apart, vertical loads only.
+constexpr const char* kStageMovesWhy = "the rigid voussoirs' springings move apart from d = 0";
+constexpr Inapplicable kNotForSpreadStage[] = {
+    {"--support-displacement-ratio", kStageMovesWhy},
+    {"--left-spread-ratio", kStageMovesWhy},
+    {"--right-spread-ratio", kStageMovesWhy},
+    {"--left-settlement-ratio", kStageMovesWhy},
+    {"--right-settlement-ratio", kStageMovesWhy},
+    {"--left-rotation", kStageMovesWhy},
+    {"--right-rotation", kStageMovesWhy},
+    {"--horizontal-acceleration", "the mechanism of rigid voussoirs carries vertical loads only"},
+};
+
+// The arch of rigid voussoirs on spreading springings (ogive spread's mechanism with its defaults: both
+// springings moving, the weight on the axis) at `fraction` of the way from d = 0 to collapse: its
+// voussoirs, thrust line and hinges; a legend line alone where there is no path (the arch too thin).
+void add_spread_drawing(const Scene& scene, double fraction, DrawingOptions& drawing) {
+  LimitOptions limit;
+  limit.weight = WeightModel::axis;
+  SpreadOptions spread;
+  SpreadResult r = analyse_spreading(scene, limit, spread);
+  const double L = scene.span();
+  const double sides = spread.left_share + spread.right_share;
+  if (r.status == SpreadStatus::success && fraction < 1) {
+    spread.stop_ratio = fraction * sides * r.d_max / L;
+    r = analyse_spreading(scene, limit, spread);
+  }
+  const double increase = r.path.empty() ? 0 : sides * r.path.back().d / L;
+  if (std::optional<SpreadStageDrawing> stage = spread_stage_drawing(r, increase)) {
+    drawing.spread_stages.push_back(std::move(*stage));
+    return;
+  }
+  SpreadStageDrawing none;
+  none.label = fmt::format("rigid voussoirs: {}: {}", to_string(r.status), r.message);
+  drawing.spread_stages.push_back(std::move(none));
 }
 
 // Exactly one of --output FILE and --output-dir DIR (draw's and report's targets).
@@ -221,6 +261,11 @@ int run_draw(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
   if (to.output == "-")
     throw UsageError("--output: - (standard output) is refused: standard output carries the CSV row; give a file name");
   check_target_choice(to, "draw", "FILE.svg", "one scene");
+  if (to.spread_stage) {
+    if (!(*to.spread_stage >= 0 && *to.spread_stage <= 1))
+      throw UsageError(fmt::format("--spread-stage: must lie in [0, 1] (0: d = 0, 1: collapse), got {}", *to.spread_stage));
+    refuse_inapplicable(cmd, "draw --spread-stage", kNotForSpreadStage);
+  }
   const ScenePlan plan(d.scene, cmd);
   check_target_count(to, plan.size(), "drawing");
   columns.select(d.columns, plan.varying_inputs());
@@ -232,6 +277,7 @@ int run_draw(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
         DrawingOptions drawing;
         drawing.title = draw_title(p);
         if (to.limit) add_limit_drawing(scene, drawing);
+        if (to.spread_stage) add_spread_drawing(scene, *to.spread_stage, drawing);
         const std::string& path = files[p.scene - 1];
         write_drawing(path, arch_svg(scene, sol, drawing));
         emit(picture_row(columns, p, scene, sol, path));
@@ -310,6 +356,11 @@ Run add_draw_options(CLI::App& cmd) {
   cmd.add_flag("--limit", to.limit,
                "also draw the limit analysis' minimum and maximum thrust lines with their hinges and, with a point "
                "or live load, the collapse mechanism (ogive limit's defaults: radial joints, the voussoirs' weight)");
+  cmd.add_option("--spread-stage", to.spread_stage,
+                 "also draw the arch of rigid voussoirs on spreading springings (ogive spread's mechanism, its "
+                 "defaults) this far from d = 0 (0) to collapse (1), where its voussoirs have moved, with its thrust "
+                 "line and hinges; in [0, 1]")
+      ->check(finite_number());
   cmd.add_option("--output-dir", to.output_dir,
                  "an existing directory: one SVG per scene, named after the curve and the options that vary");
   add_column_options(cmd, options->columns);

@@ -29,8 +29,6 @@
 namespace ogive::cli {
 namespace {
 
-const std::map<std::string, JointOrientation> kJointOrientations = {{"radial", JointOrientation::radial},
-                                                                    {"vertical", JointOrientation::vertical}};
 enum class ThrustLine { min, max, collapse, horizontal };
 const std::map<std::string, ThrustLine> kThrustLines = {{"min", ThrustLine::min},
                                                         {"max", ThrustLine::max},
@@ -98,7 +96,7 @@ constexpr Inapplicable kNotForLimit[] = {
 // The options as the library's, refused with the option's name when they break a rule.
 LimitOptions limit_options(const LimitText& t, const CLI::App& cmd) {
   LimitOptions o;
-  o.joints = lookup(kJointOrientations, t.joints, "--joints");
+  o.joints = lookup(joint_orientations(), t.joints, "--joints");
   o.weight = lookup(weight_models(), t.weight, "--weight");
   o.joints_count = t.joints_count;
   if (cmd.count("--friction") > 0 && !(t.friction > 0))

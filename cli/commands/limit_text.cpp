@@ -10,6 +10,12 @@ const std::map<std::string, WeightModel>& weight_models() {
   return names;
 }
 
+const std::map<std::string, JointOrientation>& joint_orientations() {
+  static const std::map<std::string, JointOrientation> names = {{"radial", JointOrientation::radial},
+                                                                {"vertical", JointOrientation::vertical}};
+  return names;
+}
+
 std::string hinge_text(const std::vector<Hinge>& hinges, double span) {
   std::string text;
   for (const Hinge& h : hinges) {

@@ -43,7 +43,7 @@ const std::map<std::string, MovingSprings> kMovingSprings = {
 constexpr double kCrackingMoves[] = {0, 1e-6, 3e-6, 1e-5, 3e-5, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2};
 
 struct SpreadText {
-  std::string weight = "axis", moving = "both";
+  std::string weight = "axis", moving = "both", joints = "radial";
   int joints_count = kDefaultJointsCount;
   int steps = SpreadOptions{}.steps;
   double increment_ratio = SpreadOptions{}.increment_ratio;
@@ -77,6 +77,8 @@ void add_spread_analysis_options(CLI::App& cmd, SpreadText& t) {
                  "rigid voussoirs' weight: axis (rho g t per axis length, the elastic arch's, so that the cracking "
                  "arch's plateau is the mechanism's start) or voussoir (the true weight at each centroid)")
       ->capture_default_str();
+  cmd.add_option("--joints", t.joints, "rigid voussoirs' interior joints: radial (normal to the axis) or vertical")
+      ->capture_default_str();
   cmd.add_option("--joints-count", t.joints_count, "rigid voussoirs' joints springing to springing, both included; odd, >= 5")
       ->check(whole_count())
       ->capture_default_str();
@@ -102,6 +104,7 @@ SpreadSetup spread_setup(const SpreadText& t, const CLI::App& cmd) {
   refuse_inapplicable(cmd, "spread", kNotForSpread);
   SpreadSetup s;
   s.limit.weight = lookup(weight_models(), t.weight, "--weight");
+  s.limit.joints = lookup(joint_orientations(), t.joints, "--joints");
   s.limit.joints_count = t.joints_count;
   const MovingSprings moving = lookup(kMovingSprings, t.moving, "--moving");
   s.left_moves = moving != MovingSprings::right;
@@ -120,7 +123,7 @@ SpreadSetup spread_setup(const SpreadText& t, const CLI::App& cmd) {
 }
 
 Columns spread_columns(bool path) {
-  std::vector<std::string> results = {"moving", "weight", "joints_count", "path_steps"};
+  std::vector<std::string> results = {"moving", "joints", "weight", "joints_count", "path_steps"};
   // The summary: the elastic arch at d = 0, the plateau, the capacity and the state at collapse.
   const std::vector<std::string> summary = {
       "status", "H_elastic", "V_elastic", "H_over_V_elastic", "H_plateau", "V_plateau", "H_over_V_plateau",
@@ -135,7 +138,7 @@ Columns spread_columns(bool path) {
 }
 
 void add_setup(CsvRow& row, const SpreadText& t, const SpreadSetup& s) {
-  row.add(t.moving).add(to_string(s.limit.weight)).add(s.limit.joints_count).add(s.spread.steps);
+  row.add(t.moving).add(to_string(s.limit.joints)).add(to_string(s.limit.weight)).add(s.limit.joints_count).add(s.spread.steps);
 }
 
 // The crown's drop (m, downwards positive) of a solved elastic or cracking arch; NaN without a field.

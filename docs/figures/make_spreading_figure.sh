@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # docs/figures/spreading-path.png: H/V of the semicircle and the equilateral arch against the span's
-# increase, from d = 0 to collapse, at three thicknesses each (`ogive spread --path`; a few seconds):
+# increase, from d = 0 to collapse, at three thicknesses each (`ogive spread --path`; a few seconds);
+# docs/figures/spreading-stage-{semicircle,equilateral}-{0.5,1}.png: the two arches at t/L = 0.075,
+# half-way to collapse and at collapse (`ogive draw --spread-stage`, rendered by rsvg-convert):
 #
 #   bash docs/figures/make_spreading_figure.sh [OGIVE]        # OGIVE defaults to build/ogive
 #
@@ -11,7 +13,9 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 ogive=${1:-build/ogive}
 [[ -x $ogive ]] || { echo "make_spreading_figure.sh: no ogive executable at '$ogive' (build first)" >&2; exit 2; }
-command -v gnuplot >/dev/null || { echo "make_spreading_figure.sh: no gnuplot" >&2; exit 2; }
+for tool in gnuplot rsvg-convert; do
+  command -v $tool >/dev/null || { echo "make_spreading_figure.sh: no $tool (bash .ci/install_deps.sh --charts)" >&2; exit 2; }
+done
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 # Each arch: its curve options, a label, three thicknesses.
@@ -72,4 +76,13 @@ set key top left
 plot ${plots[3]}
 unset multiplot
 GNUPLOT
-echo "make_spreading_figure.sh: wrote docs/figures/spreading-path.png"
+# The stages: half-way to collapse and at collapse.
+for a in 0 1; do
+  name=$([[ $a == 0 ]] && echo semicircle || echo equilateral)
+  for stage in 0.5 1; do
+    # shellcheck disable=SC2086  # the curve options are two words
+    "$ogive" draw ${arches[$a]} --thickness-ratio 0.075 --spread-stage $stage --output "$tmp/$name-$stage.svg" >/dev/null
+    rsvg-convert --width 560 "$tmp/$name-$stage.svg" -o "docs/figures/spreading-stage-$name-$stage.png"
+  done
+done
+echo "make_spreading_figure.sh: wrote docs/figures/spreading-path.png and spreading-stage-*.png"

@@ -258,6 +258,7 @@ class Path {
   }
 
   const Ring& moved() const { return moved_; }
+  const Ring& ring() const { return ring0_; }
 
  private:
   // The moved ring of a state (the last one evaluated is kept; another is placed again).
@@ -314,7 +315,40 @@ bool SpreadOptions::is_valid(std::string* why) const {
   if (!(left_share + right_share > 0)) return bad("left_share + right_share must be > 0 (the span must grow)");
   if (!(increment_ratio > 0 && increment_ratio <= 0.1)) return bad("increment_ratio must lie in (0, 0.1]");
   if (steps < 1 || steps > 100000) return bad("steps must be in [1, 100000]");
+  if (!(stop_ratio >= 0)) return bad("stop_ratio must be >= 0 (infinity: to collapse)");
   return true;
+}
+
+// The shape of a state on the path, for drawing: its program solved again to have the moved ring and
+// its thrust line.
+SpreadShape shape_of(Path& path, const State& current) {
+  const Ring& ring0 = path.ring();
+  State last;
+  path.evaluate(current.at, current.step.d, &current.answer.basis, last);
+  SpreadShape shape;
+  shape.thrust_line = thrust_state(path.moved(), last.answer.H, last.answer.V, last.answer.M,
+                                   ring0.has_live_load() ? 1.0 : 0.0).crossing;
+  shape.voussoirs.resize(ring0.voussoirs.size());
+  for (std::size_t k = 0; k < ring0.voussoirs.size(); ++k) {
+    const Rigid& m = current.at.voussoir[k];
+    const Joint &a = ring0.joints[k], &b = ring0.joints[k + 1];
+    shape.voussoirs[k] = {m(a.intrados), m(a.extrados), m(b.extrados), m(b.intrados)};
+  }
+  return shape;
+}
+
+// The path's printed rows: d = 0, the state reached at or before each d_end i / steps, and the last.
+std::vector<SpreadStep> printed_rows(const std::vector<SpreadStep>& all, int steps) {
+  std::vector<SpreadStep> rows{all.front()};
+  std::size_t k = 0;
+  const double end = all.back().d;
+  for (int i = 1; i < steps; ++i) {
+    const double target = end * i / steps;
+    while (k + 1 < all.size() && all[k + 1].d <= target) ++k;
+    if (all[k].d > rows.back().d) rows.push_back(all[k]);
+  }
+  if (all.back().d > rows.back().d || rows.size() == 1) rows.push_back(all.back());
+  return rows;
 }
 
 SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread) {
@@ -358,6 +392,7 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
   std::vector<SpreadStep> all{current.step};
   const double increment = spread.increment_ratio * L / sides;
   const double tolerance = kSpreadTolerance * L / sides;
+  const double stop = spread.stop_ratio * L / sides;  // infinity without a stop
   // A span that grew by more than 2.5 L has outgrown any arch: both halves lie flat before that.
   const long most = static_cast<long>(std::ceil(2.5 / spread.increment_ratio));
   State next;
@@ -368,11 +403,18 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
       r.path = {all.front(), all.back()};
       return r;
     }
-    Outcome o = path.advance(current, increment, next);
+    // The last increment ends at the stop, if there is one before collapse.
+    const double to_stop = stop - current.step.d;
+    const bool stops = to_stop <= increment;
+    Outcome o = path.advance(current, stops ? to_stop : increment, next);
     ++r.increments;
     if (o == Outcome::admissible) {
       std::swap(current, next);
       all.push_back(current.step);
+      if (stops) {
+        r.stopped = true;
+        break;
+      }
       continue;
     }
     if (o == Outcome::lp_failure) {
@@ -381,7 +423,7 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
       return r;
     }
     // Collapse within this increment: bisect it from the current state with the current mechanism.
-    double lo = 0, hi = increment;
+    double lo = 0, hi = stops ? to_stop : increment;
     Outcome last_bad = o;
     bool moved_on = false;
     State best;
@@ -410,21 +452,9 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
     r.collapse = last_bad == Outcome::inadmissible ? SpreadCollapse::inadmissible : SpreadCollapse::snap_through;
     break;
   }
-  r.d_max = current.step.d;
-  // The moved ring at collapse, for drawing.
-  State last;
-  path.evaluate(current.at, current.step.d, &current.answer.basis, last);
-  r.collapse_ring = path.moved();
-
-  // The path's rows: d = 0, the state reached at or before each d_max i / steps, and the last.
-  r.path.push_back(all.front());
-  std::size_t k = 0;
-  for (int i = 1; i < spread.steps; ++i) {
-    const double target = r.d_max * i / spread.steps;
-    while (k + 1 < all.size() && all[k + 1].d <= target) ++k;
-    if (all[k].d > r.path.back().d) r.path.push_back(all[k]);
-  }
-  if (all.back().d > r.path.back().d || r.path.size() == 1) r.path.push_back(all.back());
+  if (!r.stopped) r.d_max = current.step.d;
+  r.shape = shape_of(path, current);
+  r.path = printed_rows(all, spread.steps);
   r.status = SpreadStatus::success;
   return r;
 }

@@ -228,17 +228,8 @@ void draw_extra_lines(std::string& body, const std::vector<ExtraThrustLine>& ext
     for (PlanePoint p : extra.points) points.push_back(frame.at(p.x, p.y));
     if (!points.empty())
       path(body, extra.id.c_str(), {points}, ("fill=\"none\" " + extra_line_style(extra, frame.stroke)).c_str());
-    body += fmt::format("<g id=\"{}-hinges\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\">\n", extra.id,
-                        extra.colour, frame.stroke);
-    for (PlanePoint h : extra.hinges) {
-      const PlanePoint c = frame.at(h.x, h.y);
-      body += "<circle";
-      attribute(body, "cx", c.x);
-      attribute(body, "cy", -c.y);
-      attribute(body, "r", 0.6 * frame.font);
-      body += "/>\n";
-    }
-    body += "</g>\n";
+    hinge_circles(body, extra.id + "-hinges", extra.hinges, frame, 0.6 * frame.font,
+                  fmt::format("fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"", extra.colour, frame.stroke));
   }
 }
 
@@ -334,7 +325,7 @@ struct TitleText {
   std::vector<std::string> lines;
   std::string load_scale;  // the load arrows' scales, "" without loads
   std::size_t legend_lines(const DrawingOptions& o) const {
-    return 1 + o.extra_lines.size() + o.mechanisms.size() + (load_scale.empty() ? 0 : 1);
+    return 1 + o.extra_lines.size() + o.mechanisms.size() + o.spread_stages.size() + (load_scale.empty() ? 0 : 1);
   }
   double height(const DrawingOptions& o, double font) const {
     return (1.4 * static_cast<double>(lines.size()) + 1.3 * static_cast<double>(legend_lines(o))) * font;
@@ -377,6 +368,12 @@ std::string title_svg(const Scene& scene, const TitleText& t, const DrawingOptio
     line(title, {x0, y + 0.3 * font}, {x0 + 2 * font, y + 0.3 * font},
          fmt::format("stroke=\"{}\" stroke-width=\"{}\"", m.colour, 3 * frame.stroke));
     text(title, {x0 + 2.5 * font, y}, 0.8 * font, "start", m.label);
+  }
+  for (const SpreadStageDrawing& stage : options.spread_stages) {
+    y -= 1.3 * font;
+    line(title, {x0, y + 0.3 * font}, {x0 + 2 * font, y + 0.3 * font},
+         fmt::format("stroke=\"{}\" stroke-width=\"{}\"", stage.colour, 3 * frame.stroke));
+    text(title, {x0 + 2.5 * font, y}, 0.8 * font, "start", stage.label);
   }
   if (!t.load_scale.empty()) text(title, {x0, y - 1.3 * font}, 0.8 * font, "start", t.load_scale);
   title += "</g>\n";
@@ -463,6 +460,7 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
   draw_arch(body, outline, frame.stroke);
   draw_cracks(body, scene, solution, frame);
   for (const CollapseMechanism& m : options.mechanisms) draw_mechanism(body, scene, m, frame, drawn);
+  for (const SpreadStageDrawing& stage : options.spread_stages) draw_spread_stage(body, stage, frame, drawn);
   draw_thrust_line(body, thrust, drawn, frame.stroke);
   draw_extra_lines(body, options.extra_lines, frame);
   body += supports;

@@ -112,6 +112,21 @@ struct Frame {
   }
 };
 
+// Hinges as circles of radius `r` (drawing units) in a group `id` with the given style.
+inline void hinge_circles(std::string& out, const std::string& id, const std::vector<PlanePoint>& hinges,
+                          const Frame& frame, double r, const std::string& style) {
+  out += fmt::format("<g id=\"{}\" {}>\n", id, style);
+  for (PlanePoint h : hinges) {
+    const PlanePoint c = frame.at(h.x, h.y);
+    out += "<circle";
+    attribute(out, "cx", c.x);
+    attribute(out, "cy", -c.y);
+    attribute(out, "r", r);
+    out += "/>\n";
+  }
+  out += "</g>\n";
+}
+
 // The arch's axis and faces, in drawing units.
 struct Outline {
   std::vector<PlanePoint> axis, intrados, extrados;
@@ -134,6 +149,8 @@ void draw_cracks(std::string& body, const Scene& scene, const Solution& solution
 // (exaggerated), outlined in its colour.
 void draw_mechanism(std::string& body, const Scene& scene, const CollapseMechanism& mechanism, const Frame& frame,
                     Box& drawn);
+// A spreading stage: its ring where it has moved, outlined in its colour, its thrust line and hinges.
+void draw_spread_stage(std::string& body, const SpreadStageDrawing& stage, const Frame& frame, Box& drawn);
 // The words of `text` in lines of at most `width` characters, broken after ", " where it can be.
 std::vector<std::string> wrap(const std::string& text, std::size_t width);
 

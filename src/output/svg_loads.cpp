@@ -252,9 +252,48 @@ void draw_mechanism(std::string& body, const Scene& scene, const CollapseMechani
   body += "</g>\n";
 }
 
+void draw_spread_stage(std::string& body, const SpreadStageDrawing& stage, const Frame& frame, Box& drawn) {
+  // The ring as one outline (the intrados corners in order, then the extrados' back): a joint that has
+  // opened shows as a notch in it, and 400 voussoirs draw no hatching of their own.
+  std::vector<PlanePoint> outline;
+  for (const std::vector<PlanePoint>& v : stage.voussoirs)
+    for (int corner : {0, 3}) outline.push_back(frame.at(v[corner].x, v[corner].y));
+  for (auto v = stage.voussoirs.rbegin(); v != stage.voussoirs.rend(); ++v)
+    for (int corner : {2, 1}) outline.push_back(frame.at((*v)[corner].x, (*v)[corner].y));
+  for (const PlanePoint& p : outline) drawn.add(p);
+  if (!outline.empty())
+    body += fmt::format("<path id=\"spread-stage\" fill=\"{0}\" fill-opacity=\"0.15\" stroke=\"{0}\" stroke-width=\"{1}\" "
+                        "d=\"{2} Z\"/>\n",
+                        stage.colour, frame.stroke, path_data({outline}));
+  std::vector<PlanePoint> line;
+  for (PlanePoint p : stage.thrust_line) line.push_back(frame.at(p.x, p.y));
+  if (!line.empty())
+    path(body, "spread-stage-thrust-line", {line},
+         fmt::format("fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"", stage.colour, 2 * frame.stroke).c_str());
+  hinge_circles(body, "spread-stage-hinges", stage.hinges, frame, 0.45 * frame.font,
+                fmt::format("fill=\"white\" stroke=\"{}\" stroke-width=\"{}\"", stage.colour, 1.5 * frame.stroke));
+}
+
 }  // namespace ogive::svg_draw
 
 namespace ogive {
+
+std::optional<SpreadStageDrawing> spread_stage_drawing(const SpreadResult& r, double span_increase_ratio) {
+  if (r.status != SpreadStatus::success || r.path.empty()) return std::nullopt;
+  auto plane = [](const Eigen::Vector2d& p) { return PlanePoint{p.x(), p.y()}; };
+  SpreadStageDrawing stage;
+  for (const auto& corners : r.shape.voussoirs) {
+    std::vector<PlanePoint>& outline = stage.voussoirs.emplace_back();
+    for (const Eigen::Vector2d& c : corners) outline.push_back(plane(c));
+  }
+  for (const Eigen::Vector2d& p : r.shape.thrust_line) stage.thrust_line.push_back(plane(p));
+  const SpreadStep& last = r.path.back();
+  for (const Hinge& h : last.hinges) stage.hinges.push_back(plane(h.point));
+  stage.label = fmt::format("rigid voussoirs, span increased by {:.4g} L{}: H/V {:.4g}, crown drop {:.4g} L, {} hinges",
+                            span_increase_ratio, r.stopped ? "" : " (collapse)", last.H / last.V_left,
+                            last.crown_drop / r.ring.span, last.hinges.size());
+  return stage;
+}
 
 std::vector<ExtraThrustLine> limit_thrust_lines(const LimitResult& r) {
   std::vector<ExtraThrustLine> lines;

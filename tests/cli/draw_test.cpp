@@ -18,6 +18,8 @@
 #include <utility>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "ogive/output/svg.hpp"
 #include "support/cli_run.hpp"
 #include "support/files.hpp"
@@ -314,4 +316,64 @@ TEST_CASE("draw --limit: under a horizontal acceleration the collapse line of a_
                                     "--thickness-ratio", "0.1"};
   REQUIRE(run_command(still).status == 0);
   CHECK(read_text(dir / "still.svg").find("thrust-line-horizontal") == std::string::npos);
+}
+
+TEST_CASE("draw --spread-stage: the spread mechanism's ring where it has moved, its thrust line and hinges") {
+  TempDir dir("ogive_test_draw_spread_stage");
+  // The semicircle, t/L = 0.1: ogive spread's capacity and hinges at collapse are the stage's at 1.
+  const std::vector<std::string> scene = {"--eccentricity", "0", "--thickness-ratio", "0.1"};
+  std::vector<std::string> spread = {"spread", "--columns", "spread_capacity_ratio,hinges_at_collapse"};
+  spread.insert(spread.end(), scene.begin(), scene.end());
+  const Run collapse = run_command(spread);
+  REQUIRE(collapse.status == 0);
+  const double capacity = std::stod(column(collapse.out, "spread_capacity_ratio", 1));
+  const std::string hinges = column(collapse.out, "hinges_at_collapse", 1);
+  const std::size_t hinges_at_collapse = static_cast<std::size_t>(std::count(hinges.begin(), hinges.end(), ';') + 1);
+  const double L = 10, t = 1;  // the default span, and t/L 0.1
+  for (const double fraction : {0.0, 0.5, 1.0}) {
+    CAPTURE(fraction);
+    const std::string file = dir / "stage.svg";
+    std::vector<std::string> draw = {"draw", "--spread-stage", fmt::format("{}", fraction), "--output", file};
+    draw.insert(draw.end(), scene.begin(), scene.end());
+    const Run drawn = run_command(draw);
+    REQUIRE(drawn.status == 0);
+    CHECK(xmllint_accepts(file));
+    const std::string svg = read_text(file);
+    // The ring's outline: the intrados corners springing to springing, then the extrados' back. The
+    // springings' intrados corners lie L - t apart at d = 0 and move apart by the span's increase.
+    const auto ring = svg_path_points(svg, "spread-stage");
+    REQUIRE(ring.size() == 1);
+    REQUIRE(ring[0].size() % 4 == 0);
+    const auto& left = ring[0].front();
+    const auto& right = ring[0][ring[0].size() / 2 - 1];
+    CHECK(std::abs(left.second) <= 1e-9 * L);
+    CHECK(std::abs(right.second) <= 1e-9 * L);
+    const double increase = (right.first - left.first - (L - t)) / L;
+    // The stage stops at fraction x capacity to the path's bisection tolerance; the drawing's digits are
+    // a few more than that.
+    CHECK(std::abs(increase - fraction * capacity) <= 1e-5);
+    CHECK(!svg_path_points(svg, "spread-stage-thrust-line").empty());
+    const std::size_t group = svg.find("id=\"spread-stage-hinges\"");
+    REQUIRE(group != std::string::npos);
+    std::size_t circles = 0;
+    for (std::size_t at = svg.find("<circle", group); at < svg.find("</g>", group); at = svg.find("<circle", at + 1))
+      ++circles;
+    if (fraction == 1.0) CHECK(circles == hinges_at_collapse);
+    CHECK(circles >= 3);
+  }
+  // Bad stages and the movements the stage sets itself: one line naming the option, exit 2, no output.
+  for (const std::vector<std::string>& bad :
+       {std::vector<std::string>{"--spread-stage", "1.5"}, {"--spread-stage", "-0.1"}, {"--spread-stage", "nan"},
+        {"--spread-stage", "0.5", "--left-spread-ratio", "0.01"},
+        {"--spread-stage", "0.5", "--horizontal-acceleration", "0.1"}}) {
+    std::vector<std::string> draw = {"draw", "--output", dir / "bad.svg"};
+    draw.insert(draw.end(), bad.begin(), bad.end());
+    const Run r = run_command(draw);
+    CAPTURE(bad.back());
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(lines(r.err).size() == 1);
+    CHECK(r.err.find(bad.size() == 2 ? "--spread-stage" : bad[2]) != std::string::npos);
+    CHECK(!std::filesystem::exists(dir / "bad.svg"));
+  }
 }

@@ -180,11 +180,36 @@ TEST_CASE("cli: spread gives an arch too thin to stand a row of status inadmissi
   CHECK(!s.at(0, "H_elastic").empty());  // the elastic arch has its thrust whatever its thickness
 }
 
+TEST_CASE("cli: spread --joints vertical: the mechanism starts at limit's H_min on the same vertical joints") {
+  // The equilateral arch, whose vertical joints differ most from its radial ones near the springings.
+  const std::vector<std::string> scene = {"--eccentricity", "0.5", "--thickness-ratio", "0.08", "--weight", "axis"};
+  double capacity[2] = {0, 0};
+  for (const char* joints : {"radial", "vertical"}) {
+    CAPTURE(joints);
+    std::vector<std::string> spread = {"spread", "--joints", joints, "--columns", "joints,H_plateau,spread_capacity_ratio"};
+    spread.insert(spread.end(), scene.begin(), scene.end());
+    const Run r = run(spread);
+    REQUIRE(r.status == 0);
+    std::vector<std::string> limit = {"limit", "--joints", joints, "--joints-count", "201", "--columns", "H_min"};
+    limit.insert(limit.end(), scene.begin(), scene.end());
+    const Run lim = run(limit);
+    REQUIRE(lim.status == 0);
+    const Table t = table(r.out);
+    CHECK(t.at(0, "joints") == joints);
+    CHECK(close(t.number(0, "H_plateau"), table(lim.out).number(0, "H_min"), kSameState));
+    capacity[joints[0] == 'v' ? 1 : 0] = t.number(0, "spread_capacity_ratio");
+  }
+  CHECK(capacity[0] > 0);
+  CHECK(capacity[1] > 0);
+  CHECK(capacity[0] != capacity[1]);  // the joints are the question's: another ring, another capacity
+}
+
 TEST_CASE("cli: spread refuses bad input with one line naming the option, exit 2, nothing on stdout") {
   const std::vector<std::pair<std::vector<std::string>, std::string>> bad = {
       {{"--moving", "up"}, "--moving"},
       {{"--steps", "0"}, "--steps"},
       {{"--weight", "heavy"}, "--weight"},
+      {{"--joints", "oblique"}, "--joints"},
       {{"--joints-count", "4"}, "--joints-count"},
       {{"--support-displacement-ratio", "0.001"}, "--support-displacement-ratio"},
       {{"--left-spread-ratio", "0.001"}, "--left-spread-ratio"},

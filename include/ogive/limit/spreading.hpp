@@ -31,6 +31,7 @@
 // at d = 0, y up.
 #pragma once
 
+#include <array>
 #include <limits>
 #include <string>
 #include <vector>
@@ -50,6 +51,9 @@ struct SpreadOptions {
   // re-solutions of the minimum-thrust state (where the hinges may move), in (0, 0.1].
   double increment_ratio = 2.5e-4;
   int steps = 200;  // the path's rows: states at about d_max i / steps, i = 0 .. steps; >= 1
+  // Stop where the span's increase over L reaches this, before collapse (SpreadResult::stopped): the
+  // path's last state is there. >= 0 (0: the state at d = 0); infinity: to collapse.
+  double stop_ratio = std::numeric_limits<double>::infinity();
   bool is_valid(std::string* why) const;
 };
 
@@ -78,15 +82,24 @@ enum class SpreadStatus {
 };
 const char* to_string(SpreadStatus s);
 
+// The voussoirs of a state where they have moved, and its line of thrust.
+struct SpreadShape {
+  // m: each voussoir's corners, its intrados and extrados points on its left joint, then its extrados
+  // and intrados points on its right joint (an opened joint shows as the gap between neighbours).
+  std::vector<std::array<Eigen::Vector2d, 4>> voussoirs;
+  std::vector<Eigen::Vector2d> thrust_line;  // m: where the resultant crosses each joint (midway between its faces)
+};
+
 struct SpreadResult {
   SpreadStatus status = SpreadStatus::lp_failure;
   std::string message;
   SpreadCollapse collapse = SpreadCollapse::inadmissible;
   double d_max = std::numeric_limits<double>::quiet_NaN();  // m, the movement parameter at collapse
+  bool stopped = false;  // the path stopped at SpreadOptions::stop_ratio before collapse (d_max is NaN)
   int increments = 0;             // increments taken (each one program, plus the bisection's)
   std::vector<SpreadStep> path;   // d = 0, about `steps` states between, and the last admissible one
   Ring ring;                      // the ring at d = 0
-  Ring collapse_ring;             // the moved ring of path.back() (its joints midway between their faces)
+  SpreadShape shape;              // path.back()'s voussoirs and thrust line (a success's)
 };
 
 // The mechanism path of `scene` (as analyse_limit takes it) under the movement of `spread`. Throws

@@ -34,6 +34,10 @@
 //   #cracks     no-tension section: where the resultant leaves the kern, the cracked depth of the
 //               section (t times one minus the compressed depth) on the face away from it, shaded
 //   #mechanism  DrawingOptions::mechanisms: the collapse mechanism's moving blocks, displaced
+//   #spread-stage  DrawingOptions::spread_stages: the rigid voussoirs of the spreading mechanism where
+//               they have moved (to scale, not exaggerated), the ring outlined as one piece (a joint
+//               that has opened is a notch), with the stage's line of thrust
+//               (#spread-stage-thrust-line) and its hinges (#spread-stage-hinges)
 //   #title      the caption given in DrawingOptions::title wrapped to the page, below it H/V, H and V (or
 //               the status and message of an unsolved scene), each springing's support and movement, and
 //               the legend (the line of thrust is "elastic" or "cracked-section" after the scene's
@@ -47,6 +51,7 @@
 #include "ogive/model/scene.hpp"
 #include "ogive/core/solution.hpp"
 #include "ogive/limit/limit.hpp"
+#include "ogive/limit/spreading.hpp"
 
 namespace ogive {
 
@@ -83,11 +88,27 @@ struct CollapseMechanism {
   std::string colour = "#b9770e";  // SVG colour
 };
 
+// A state of the arch of rigid voussoirs on spreading supports (spreading.hpp): the voussoirs where they
+// have moved, its line of thrust and its hinges, drawn over the arch at d = 0 to the same scale.
+struct SpreadStageDrawing {
+  std::vector<std::vector<PlanePoint>> voussoirs;  // m, each voussoir's outline (its four corners)
+  std::vector<PlanePoint> thrust_line;              // m, one point per joint
+  std::vector<PlanePoint> hinges;                   // m
+  std::string label;                                // legend text
+  std::string colour = "#1f618d";                   // SVG colour
+};
+
+// The last state of a spreading path (SpreadResult::shape and path.back()), labelled with the span's
+// increase (span_increase_ratio, the caller's: the path knows d, not the shares) and H/V; nothing unless
+// the result is a success.
+std::optional<SpreadStageDrawing> spread_stage_drawing(const SpreadResult& result, double span_increase_ratio);
+
 struct DrawingOptions {
   std::string title;      // caption, e.g. the scene's parameters; plain text (escaped here), wrapped to the page
                           // at ", "
   std::vector<ExtraThrustLine> extra_lines;  // drawn after the elastic line, each with a legend line
   std::vector<CollapseMechanism> mechanisms;  // drawn over the arch, each with a legend line
+  std::vector<SpreadStageDrawing> spread_stages;  // drawn over the arch, each with a legend line
   int samples = 101;      // points of the intrados, extrados and axis over the half arch, in [2, 100000]
   double width_px = 960;  // width of the rendered picture, px, in [16, 100000]; the height follows
 
