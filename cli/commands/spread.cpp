@@ -3,6 +3,7 @@
 // voussoirs' spreading capacity and their state at collapse; or (--path) the whole curve: the elastic
 // arch at d = 0, the cracking arch (no-tension section) at small spreads, the three-hinge mechanism of
 // rigid voussoirs (analyse_spreading) from d = 0 to collapse. docs/spreading.md tells how they join.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -41,12 +42,16 @@ const std::map<std::string, MovingSprings> kMovingSprings = {
 // to 1e-2, the largest movement the small-displacement theory of the elastic arch takes (the rule of
 // --support-displacement-ratio), where the cracking arch's H/V lies within about 1 % of the plateau.
 constexpr double kCrackingMoves[] = {0, 1e-6, 3e-6, 1e-5, 3e-5, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2};
+// A springing's settlement per unit of its outward movement, at most: the cracking part's movements are
+// scaled down so that no component exceeds 1e-2 of the span.
+constexpr double kMostSettlementShare = 10;
 
 struct SpreadText {
   std::string weight = "axis", moving = "both", joints = "radial";
   int joints_count = kDefaultJointsCount;
   int steps = SpreadOptions{}.steps;
   double increment_ratio = SpreadOptions{}.increment_ratio;
+  double left_settlement_share = 0, right_settlement_share = 0;
   bool path = false;
   int threads = 1;
 };
@@ -73,6 +78,16 @@ constexpr Inapplicable kNotForSpread[] = {
 
 void add_spread_analysis_options(CLI::App& cmd, SpreadText& t) {
   cmd.add_option("--moving", t.moving, "the springings that move outwards: left, right or both")->capture_default_str();
+  cmd.add_option("--left-settlement-share", t.left_settlement_share,
+                 "the left springing's settlement (downwards positive) per unit of d, the outward movement of each "
+                 "springing --moving moves: it moves along a sloping line (or settles only, without --moving left or "
+                 "both); in [-10, 10]")
+      ->check(finite_number())
+      ->capture_default_str();
+  cmd.add_option("--right-settlement-share", t.right_settlement_share,
+                 "the right springing's settlement per unit of d, as --left-settlement-share; in [-10, 10]")
+      ->check(finite_number())
+      ->capture_default_str();
   cmd.add_option("--weight", t.weight,
                  "rigid voussoirs' weight: axis (rho g t per axis length, the elastic arch's, so that the cracking "
                  "arch's plateau is the mechanism's start) or voussoir (the true weight at each centroid)")
@@ -88,6 +103,7 @@ void add_spread_analysis_options(CLI::App& cmd, SpreadText& t) {
   cmd.add_option("--increment-ratio", t.increment_ratio,
                  "the span's increase over L between two solutions of the mechanism's minimum-thrust state (where "
                  "its hinges may move), in (0, 0.1]")
+      ->check(finite_number())
       ->capture_default_str();
   cmd.add_flag("--path", t.path,
                "instead of the summary, the whole curve: the elastic arch at d = 0, the cracking arch, the mechanism "
@@ -111,6 +127,13 @@ SpreadSetup spread_setup(const SpreadText& t, const CLI::App& cmd) {
   s.right_moves = moving != MovingSprings::left;
   s.spread.left_share = s.left_moves ? 1 : 0;
   s.spread.right_share = s.right_moves ? 1 : 0;
+  for (const auto& [share, name] : {std::pair{t.left_settlement_share, "--left-settlement-share"},
+                                    std::pair{t.right_settlement_share, "--right-settlement-share"}})
+    if (!(share >= -kMostSettlementShare && share <= kMostSettlementShare))
+      throw UsageError(fmt::format("{}: must lie in [-{}, {}], got {}", name, kMostSettlementShare,
+                                   kMostSettlementShare, share));
+  s.spread.left_settlement_share = t.left_settlement_share;
+  s.spread.right_settlement_share = t.right_settlement_share;
   if (t.steps < 1 || t.steps > 100000)
     throw UsageError(fmt::format("--steps: must lie in [1, 100000], got {}", t.steps));
   std::string why;
@@ -123,7 +146,8 @@ SpreadSetup spread_setup(const SpreadText& t, const CLI::App& cmd) {
 }
 
 Columns spread_columns(bool path) {
-  std::vector<std::string> results = {"moving", "joints", "weight", "joints_count", "path_steps"};
+  std::vector<std::string> results = {"moving", "left_settlement_share", "right_settlement_share", "joints", "weight",
+                                      "joints_count", "path_steps"};
   // The summary: the elastic arch at d = 0, the plateau, the capacity and the state at collapse.
   const std::vector<std::string> summary = {
       "status", "H_elastic", "V_elastic", "H_over_V_elastic", "H_plateau", "V_plateau", "H_over_V_plateau",
@@ -138,7 +162,7 @@ Columns spread_columns(bool path) {
 }
 
 void add_setup(CsvRow& row, const SpreadText& t, const SpreadSetup& s) {
-  row.add(t.moving).add(to_string(s.limit.joints)).add(to_string(s.limit.weight)).add(s.limit.joints_count).add(s.spread.steps);
+  row.add(t.moving).add(s.spread.left_settlement_share).add(s.spread.right_settlement_share).add(to_string(s.limit.joints)).add(to_string(s.limit.weight)).add(s.limit.joints_count).add(s.spread.steps);
 }
 
 // The crown's drop (m, downwards positive) of a solved elastic or cracking arch; NaN without a field.
@@ -196,14 +220,19 @@ std::string path_rows(const Columns& columns, const SceneParameters& p, const Sc
                       const SpreadSetup& s, const Solution& elastic, const SpreadResult& r, bool* ok) {
   const double L = scene.span();
   const double sides = (s.left_moves ? 1 : 0) + (s.right_moves ? 1 : 0);
+  const SpreadOptions& o = s.spread;
+  const double most = std::max({1.0, std::abs(o.left_settlement_share), std::abs(o.right_settlement_share)});
   std::string text = solve_row(columns, p, scene, t, s, "elastic", 0, elastic);
   *ok = answered(elastic);
   Solution previous;
-  for (const double move : kCrackingMoves) {
+  for (const double each : kCrackingMoves) {
+    const double move = each / most;  // no springing moves more than 1e-2 L either way
     Scene cracking = scene;
     cracking.section = SectionKind::no_tension;
     cracking.left.spread = s.left_moves ? move * p.span : 0;
     cracking.right.spread = s.right_moves ? move * p.span : 0;
+    cracking.left.settlement = o.left_settlement_share * move * p.span;
+    cracking.right.settlement = o.right_settlement_share * move * p.span;
     const Solution sol = solve(cracking, Options{}, &previous);
     if (sol.field) previous = sol;
     text += solve_row(columns, p, scene, t, s, "cracking", sides * move, sol);
@@ -253,6 +282,9 @@ int run_spread(SpreadCommandOptions& so, const CLI::App& cmd, std::ostream& out)
         if (r.status != SpreadStatus::success) {
           emit(sparse_row(columns, p, scene.curve.get(),
                           {{"moving", text.moving},
+                           {"left_settlement_share", fmt::format("{}", setup.spread.left_settlement_share)},
+                           {"right_settlement_share", fmt::format("{}", setup.spread.right_settlement_share)},
+                           {"joints", to_string(setup.limit.joints)},
                            {"weight", to_string(setup.limit.weight)},
                            {"joints_count", std::to_string(setup.limit.joints_count)},
                            {"path_steps", std::to_string(setup.spread.steps)},

@@ -102,7 +102,7 @@ struct Basis {
 
 // Factorises the basis and computes its vertex and duals; false when it is singular.
 bool evaluate(const std::vector<DenseRow>& rows, const std::vector<double>& b, const std::vector<int>& free,
-              int target_position, double sense, Basis& basis) {
+              const std::array<double, K>& objective, Basis& basis) {
   const int k = static_cast<int>(free.size());
   basis.lu.k = k;
   for (int i = 0; i < k; ++i)
@@ -110,7 +110,7 @@ bool evaluate(const std::vector<DenseRow>& rows, const std::vector<double>& b, c
   if (!basis.lu.factor()) return false;
   for (int i = 0; i < k; ++i) basis.z[i] = b[basis.rows[i]];
   basis.lu.solve(basis.z);
-  for (int i = 0; i < k; ++i) basis.y[i] = i == target_position ? sense : 0.0;
+  for (int i = 0; i < k; ++i) basis.y[i] = objective[free[i]];
   basis.lu.solve_transposed(basis.y);
   return true;
 }
@@ -124,11 +124,10 @@ bool dual_feasible(const std::vector<DenseRow>& rows, const Basis& basis, int k,
 }  // namespace
 
 DenseLpAnswer solve_dense_lp(const std::vector<DenseRow>& rows, const std::vector<double>& b,
-                             const std::vector<int>& free, int target, double sense, const std::vector<int>& start,
-                             const std::vector<int>* warm, double tolerance) {
+                             const std::vector<int>& free, const std::array<double, K>& objective,
+                             const std::vector<int>& start, const std::vector<int>* warm, double tolerance) {
   DenseLpAnswer answer;
   const int k = static_cast<int>(free.size()), n = static_cast<int>(rows.size());
-  const int target_position = static_cast<int>(std::find(free.begin(), free.end(), target) - free.begin());
   Basis basis;
   bool started = false;
   if (warm && static_cast<int>(warm->size()) == k) {
@@ -138,15 +137,15 @@ DenseLpAnswer solve_dense_lp(const std::vector<DenseRow>& rows, const std::vecto
       valid = valid && r >= 0 && r < n && std::find(warm->begin(), warm->begin() + i, r) == warm->begin() + i;
       basis.rows[i] = valid ? r : 0;
     }
-    started = valid && evaluate(rows, b, free, target_position, sense, basis) &&
+    started = valid && evaluate(rows, b, free, objective, basis) &&
               dual_feasible(rows, basis, k, tolerance);
   }
   if (!started) {
     std::copy(start.begin(), start.end(), basis.rows);
-    if (!evaluate(rows, b, free, target_position, sense, basis)) return answer;  // failure
+    if (!evaluate(rows, b, free, objective, basis)) return answer;  // failure
   }
 
-  double objective = std::numeric_limits<double>::infinity();
+  double best_value = std::numeric_limits<double>::infinity();
   int stalled = 0;
   const int max_steps = 1000 + 10 * n;
   for (int step = 0; step < max_steps; ++step) {
@@ -214,10 +213,11 @@ DenseLpAnswer solve_dense_lp(const std::vector<DenseRow>& rows, const std::vecto
       return answer;
     }
     basis.rows[p] = q;
-    if (!evaluate(rows, b, free, target_position, sense, basis)) return answer;  // failure
-    double value = sense * basis.z[target_position];
-    if (value < objective - 1e-15 * std::max(1.0, std::abs(objective))) {
-      objective = value;
+    if (!evaluate(rows, b, free, objective, basis)) return answer;  // failure
+    double value = 0;
+    for (int c = 0; c < k; ++c) value += objective[free[c]] * basis.z[c];
+    if (value < best_value - 1e-15 * std::max(1.0, std::abs(best_value))) {
+      best_value = value;
       stalled = 0;
     } else {
       ++stalled;

@@ -113,6 +113,11 @@ class LimitLp {
   // `warm` (here and below): an optimal basis of the same question to start from (the previous ring's,
   // translated by rows(keys(...))); ignored unless it is a nonsingular, dual-feasible basis here.
   Answer extreme_thrust(double load_factor, bool largest, const std::vector<int>* warm = nullptr);
+  // The smallest per_H H + per_V V of an admissible state under dead + load_factor * live (mu = 0; H
+  // and V the left springing's, as in Answer): the state that does the least work on a movement of the
+  // springings (per_H the span's increase, per_V the right springing's rise over the left's, per unit
+  // movement). With per_V = 0 and per_H > 0, extreme_thrust's smallest H.
+  Answer least_work(double load_factor, double per_H, double per_V, const std::vector<int>* warm = nullptr);
   // The largest margin mu under dead + load_factor * live: >= 0 iff the arch is admissible.
   // `warm`: the basis of the margin of a ring with the same joints count (another thickness), to start
   // from.

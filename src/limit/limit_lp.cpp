@@ -30,6 +30,15 @@ namespace {
 
 enum Column { kH = 0, kV = 1, kM = 2, kLambda = 3, kMu = 4, kUnknowns = 5 };
 
+// The gradient of what a program maximises, over the scaled unknowns.
+using Objective = std::array<double, kUnknowns>;
+// The objective that maximises (or minimises) one unknown.
+Objective pushing(Column c, bool maximise) {
+  Objective o{};
+  o[c] = maximise ? 1.0 : -1.0;
+  return o;
+}
+
 // Bounds that keep every program bounded (in units of the total load W and the span L, far beyond any
 // arch's real values); an optimum on one of them means "no finite answer".
 constexpr double kCap = 1e6;
@@ -110,16 +119,17 @@ struct LimitLp::Impl {
   LoadsLeftOfJoints left;
   mutable Held held;
 
-  // Maximises (or minimises) unknown `target` with the unknowns in `fixed` (NaN: free) held.
-  Answer optimise(Column target, bool maximise, const std::array<double, kUnknowns>& fixed,
+  // Maximises objective . z (scaled unknowns) with the unknowns in `fixed` (NaN: free) held.
+  Answer optimise(const Objective& objective, const std::array<double, kUnknowns>& fixed,
                   const std::vector<int>* warm = nullptr) const;
   // The optimum of the dense method or of Clp: the free unknowns (the held ones as given) and the basis.
-  Answer dense(const Held& h, const std::array<double, kUnknowns>& fixed, Column target, bool maximise,
+  Answer dense(const Held& h, const std::array<double, kUnknowns>& fixed, const Objective& objective,
                const std::vector<int>* warm) const;
-  Answer clp(const Held& h, const std::array<double, kUnknowns>& fixed, Column target, bool maximise,
+  Answer clp(const Held& h, const std::array<double, kUnknowns>& fixed, const Objective& objective,
              const std::vector<int>* warm) const;
-  // The answer in SI units from the scaled unknowns z.
-  Answer unscaled(std::array<double, kUnknowns> z, Column target) const;
+  // The answer in SI units from the scaled unknowns z; unbounded where an unknown the objective pushes
+  // reached its cap.
+  Answer unscaled(std::array<double, kUnknowns> z, const Objective& objective) const;
 };
 
 LimitLp::LimitLp(const Ring& ring, double friction, LpWorkspace* workspace, LpSolver solver, LiveKind live)
@@ -210,18 +220,20 @@ LimitLp::~LimitLp() = default;
 
 int LimitLp::clp_fallbacks() const { return impl_->fallbacks; }
 
-LimitLp::Answer LimitLp::Impl::unscaled(std::array<double, kUnknowns> z, Column target) const {
+LimitLp::Answer LimitLp::Impl::unscaled(std::array<double, kUnknowns> z, const Objective& objective) const {
   Answer a;
   a.H = z[kH] * weight;
   a.V = z[kV] * weight;
   a.M = z[kM] * weight * span;
   a.load_factor = z[kLambda];
   a.margin = z[kMu];
-  a.outcome = std::abs(z[target]) >= 0.5 * kCap ? Outcome::unbounded : Outcome::optimal;
+  a.outcome = Outcome::optimal;
+  for (int c = 0; c < kUnknowns; ++c)
+    if (objective[c] != 0 && std::abs(z[c]) >= 0.5 * kCap) a.outcome = Outcome::unbounded;
   return a;
 }
 
-LimitLp::Answer LimitLp::Impl::optimise(Column target, bool maximise, const std::array<double, kUnknowns>& fixed,
+LimitLp::Answer LimitLp::Impl::optimise(const Objective& objective, const std::array<double, kUnknowns>& fixed,
                                         const std::vector<int>* warm) const {
   Held& h = held;
   hold(rows, fixed, h);
@@ -230,22 +242,22 @@ LimitLp::Answer LimitLp::Impl::optimise(Column target, bool maximise, const std:
     infeasible.outcome = Outcome::infeasible;
     return infeasible;
   }
-  return solver == LpSolver::dense ? dense(h, fixed, target, maximise, warm) : clp(h, fixed, target, maximise, warm);
+  return solver == LpSolver::dense ? dense(h, fixed, objective, warm) : clp(h, fixed, objective, warm);
 }
 
-LimitLp::Answer LimitLp::Impl::dense(const Held& h, const std::array<double, kUnknowns>& fixed, Column target,
-                                     bool maximise, const std::vector<int>* warm) const {
+LimitLp::Answer LimitLp::Impl::dense(const Held& h, const std::array<double, kUnknowns>& fixed,
+                                     const Objective& objective, const std::vector<int>* warm) const {
   // The start: the caps of the free unknowns, the target's on the side it is pushed to (its dual 1, the
   // others' 0): a vertex no worse than the optimum, whatever the rows.
   const int caps = static_cast<int>(rows.size()) - kCapRows;
   std::vector<int> start;
-  for (int c : h.free) start.push_back(caps + 2 * c + (c == target && !maximise ? 1 : 0));
-  const DenseLpAnswer d = solve_dense_lp(rows, h.b, h.free, target, maximise ? 1.0 : -1.0, start, warm, kFeasibility);
+  for (int c : h.free) start.push_back(caps + 2 * c + (objective[c] < 0 ? 1 : 0));
+  const DenseLpAnswer d = solve_dense_lp(rows, h.b, h.free, objective, start, warm, kFeasibility);
   // The dense method fails only on a basis it finds singular or a step limit (neither met in the test
   // suite): Clp then decides.
   if (d.outcome == DenseLpAnswer::Outcome::failure) {
     ++fallbacks;
-    return clp(h, fixed, target, maximise, warm);
+    return clp(h, fixed, objective, warm);
   }
   if (d.outcome == DenseLpAnswer::Outcome::infeasible) {
     Answer a;
@@ -254,13 +266,13 @@ LimitLp::Answer LimitLp::Impl::dense(const Held& h, const std::array<double, kUn
   }
   std::array<double, kUnknowns> z = fixed;
   for (int c : h.free) z[c] = d.z[c];
-  Answer a = unscaled(z, target);
+  Answer a = unscaled(z, objective);
   a.basis = d.basis;
   return a;
 }
 
-LimitLp::Answer LimitLp::Impl::clp(const Held& h, const std::array<double, kUnknowns>& fixed, Column target,
-                                   bool maximise, const std::vector<int>* warm) const {
+LimitLp::Answer LimitLp::Impl::clp(const Held& h, const std::array<double, kUnknowns>& fixed,
+                                   const Objective& objective, const std::vector<int>* warm) const {
   // The free unknowns become the dual's rows; every inequality with a free coefficient a column.
   const std::vector<int>& free = h.free;
   const int m = static_cast<int>(free.size());
@@ -286,9 +298,8 @@ LimitLp::Answer LimitLp::Impl::clp(const Held& h, const std::array<double, kUnkn
   }
   const int columns = static_cast<int>(cost.size());
   const std::vector<double> column_upper(columns, COIN_DBL_MAX);
-  std::vector<double> rhs(m, 0.0);  // A^T y = c: c is +-1 on the target
-  for (int k = 0; k < m; ++k)
-    if (free[k] == target) rhs[k] = maximise ? 1.0 : -1.0;
+  std::vector<double> rhs(m, 0.0);  // A^T y = c, the objective
+  for (int k = 0; k < m; ++k) rhs[k] = objective[free[k]];
   ClpSimplex& model = workspace->clp();
   model.loadProblem(columns, m, start.data(), index.data(), value.data(), column_lower.data(), column_upper.data(),
                     cost.data(), rhs.data(), rhs.data());
@@ -322,7 +333,7 @@ LimitLp::Answer LimitLp::Impl::clp(const Held& h, const std::array<double, kUnkn
   std::array<double, kUnknowns> z = fixed;
   const double* price = model.getRowPrice();
   for (int k = 0; k < m; ++k) z[free[k]] = price[k];
-  a = unscaled(z, target);
+  a = unscaled(z, objective);
   for (int c = 0; c < columns; ++c)
     if (model.getColumnStatus(c) == ClpSimplex::basic) a.basis.push_back(kept[c]);
   return a;
@@ -348,19 +359,32 @@ std::vector<int> LimitLp::rows(const std::vector<RowKey>& keys) const {
 LimitLp::Answer LimitLp::extreme_thrust(double load_factor, bool largest, const std::vector<int>* warm) {
   ++solves_;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  return impl_->optimise(kH, largest, {nan, nan, nan, load_factor, 0.0}, warm);
+  return impl_->optimise(pushing(kH, largest), {nan, nan, nan, load_factor, 0.0}, warm);
 }
 
 LimitLp::Answer LimitLp::margin(double load_factor, const std::vector<int>* warm) {
   ++solves_;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  return impl_->optimise(kMu, true, {nan, nan, nan, load_factor, nan}, warm);
+  return impl_->optimise(pushing(kMu, true), {nan, nan, nan, load_factor, nan}, warm);
 }
 
 LimitLp::Answer LimitLp::collapse(const std::vector<int>* warm) {
   ++solves_;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  return impl_->optimise(kLambda, true, {nan, nan, nan, nan, 0.0}, warm);
+  return impl_->optimise(pushing(kLambda, true), {nan, nan, nan, nan, 0.0}, warm);
+}
+
+LimitLp::Answer LimitLp::least_work(double load_factor, double per_H, double per_V, const std::vector<int>* warm) {
+  ++solves_;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // H and V share their scale (W), so the scaled objective has the same direction; normalised, so that
+  // per_V = 0 is extreme_thrust's program to the bit.
+  const double norm = std::max(std::abs(per_H), std::abs(per_V));
+  if (!(norm > 0) || !std::isfinite(norm)) return Answer{};  // no objective: a failure, not an answer
+  Objective objective{};
+  objective[kH] = -per_H / norm;
+  objective[kV] = -per_V / norm;
+  return impl_->optimise(objective, {nan, nan, nan, load_factor, 0.0}, warm);
 }
 
 }  // namespace ogive::limit_detail

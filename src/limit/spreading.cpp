@@ -210,15 +210,16 @@ class Path {
       : ring0_(ring0),
         friction_(limit.friction),
         lp_(ring0, limit.friction),
-        vL_(-spread.left_share, 0),
-        vR_(spread.right_share, 0),
+        vL_(-spread.left_share, -spread.left_settlement_share),
+        vR_(spread.right_share, -spread.right_settlement_share),
         live_factor_(ring0.has_live_load() ? 1.0 : 0.0) {}
 
   // The state of the pieces `at`, movement d.
   Outcome evaluate(Placement at, double d, const std::vector<int>* warm, State& s) {
     place_ring(ring0_, at, moved_);
     lp_.load(moved_, friction_);
-    const LimitLp::Answer a = lp_.extreme_thrust(live_factor_, false, warm);
+    // The least work on the movement: H (vR - vL).x - V_left vL.y - V_right vR.y, V_right = total - V_left.
+    const LimitLp::Answer a = lp_.least_work(live_factor_, vR_.x() - vL_.x(), vR_.y() - vL_.y(), warm);
     if (a.outcome == LimitLp::Outcome::infeasible) return Outcome::inadmissible;
     if (a.outcome != LimitLp::Outcome::optimal) return Outcome::lp_failure;
     const ThrustState st = thrust_state(moved_, a.H, a.V, a.M, live_factor_);
@@ -232,7 +233,7 @@ class Path {
     step.H = a.H;
     step.V_left = st.V_left;
     step.V_right = st.V_right;
-    step.H_work = thrust_by_work(s.mechanism);
+    step.H_work = thrust_by_work(s.mechanism, st.V_left, st.V_right);
     const std::size_t cj = static_cast<std::size_t>(ring0_.crown_joint());
     step.crown_drop = ring0_.joints[cj].extrados.y() - moved_.joints[cj].extrados.y();
     step.potential = 0;
@@ -268,8 +269,9 @@ class Path {
   }
 
   // The thrust by virtual work of the mechanism at the moved ring: each body's velocity per unit rate
-  // of d, the loads' work -sum F v_y balanced by the supports' H (vR - vL).x.
-  double thrust_by_work(const Mechanism& mech) const {
+  // of d, the loads' work -sum F v_y and the vertical reactions' V_left vL.y + V_right vR.y balanced by
+  // the supports' H (vR - vL).x.
+  double thrust_by_work(const Mechanism& mech, double V_left, double V_right) const {
     const std::vector<Hinge>& h = mech.hinges;
     double work = 0;
     std::size_t body = 0;
@@ -279,7 +281,7 @@ class Path {
       for (std::size_t i = 0; i < body; ++i) v += mech.rates[i] * perp(p - h[i].point);
       work -= f * v.y();
     });
-    return work / (vR_.x() - vL_.x());
+    return (work + V_left * vL_.y() + V_right * vR_.y()) / (vR_.x() - vL_.x());
   }
 
   const Ring& ring0_;
@@ -313,6 +315,8 @@ bool SpreadOptions::is_valid(std::string* why) const {
   if (!(left_share >= 0) || !std::isfinite(left_share)) return bad("left_share must be finite and >= 0");
   if (!(right_share >= 0) || !std::isfinite(right_share)) return bad("right_share must be finite and >= 0");
   if (!(left_share + right_share > 0)) return bad("left_share + right_share must be > 0 (the span must grow)");
+  if (!std::isfinite(left_settlement_share)) return bad("left_settlement_share must be finite");
+  if (!std::isfinite(right_settlement_share)) return bad("right_settlement_share must be finite");
   if (!(increment_ratio > 0 && increment_ratio <= 0.1)) return bad("increment_ratio must lie in (0, 0.1]");
   if (steps < 1 || steps > 100000) return bad("steps must be in [1, 100000]");
   if (!(stop_ratio >= 0)) return bad("stop_ratio must be >= 0 (infinity: to collapse)");

@@ -22,6 +22,8 @@ namespace {
 // The path's first mechanism state is the limit analysis' minimum-thrust state solved again with its
 // hinges as pins: the same thrust to the LP's round-off.
 constexpr double kSameState = 1e-9;
+// Two successful solves of one scene at the default rtol (Options::rtol) agree within it.
+constexpr double kDefaultRtol = 1e-8;
 // Near t_min the mechanism has almost no room to move: its capacity is a small part of a thicker arch's.
 constexpr double kNearlyNoCapacity = 0.05;
 
@@ -152,6 +154,35 @@ TEST_CASE("cli: spread --path's cracking part is thrust --section no-tension at 
   }
 }
 
+TEST_CASE("cli: spread --right-settlement-share: the cracking part settles too, within the small movements") {
+  // Twice as far down as out: the cracking movements are halved so that no springing moves more than
+  // 1e-2 L either way; the settling springing sheds load; the cracking arch falls towards the plateau.
+  const Run r = run({"spread", "--path", "--thickness-ratio", "0.075", "--moving", "right", "--right-settlement-share",
+                     "2", "--steps", "10", "--all-columns"});
+  REQUIRE(r.status == 0);
+  const Table t = table(r.out);
+  const auto cracking = rows_of_part(t, "cracking");
+  const auto each = split("0,1e-6,3e-6,1e-5,3e-5,1e-4,3e-4,1e-3,3e-3,1e-2", ',');
+  REQUIRE(cracking.size() == each.size());
+  for (std::size_t k = 0; k < cracking.size(); ++k) {
+    CAPTURE(k);
+    CHECK(t.at(cracking[k], "status") == "success");
+    CHECK(t.at(cracking[k], "right_settlement_share") == "2");
+    CHECK(t.number(cracking[k], "spread_ratio") == std::stod(each[k]) / 2);
+    if (k > 0) CHECK(t.number(cracking[k], "V_right") < t.number(cracking[k], "V"));
+  }
+  // The same last movement by thrust --section no-tension, alone (no continuation): the same answer
+  // within the default rtol each solve meets.
+  const Run th = run({"thrust", "--section", "no-tension", "--thickness-ratio", "0.075", "--left-spread-ratio", "0",
+                      "--right-spread-ratio", "0.005", "--right-settlement-ratio", "0.01", "--columns", "H,V_right"});
+  REQUIRE(th.status == 0);
+  CHECK(close(t.number(cracking.back(), "H"), table(th.out).number(0, "H"), kDefaultRtol));
+  const auto mechanism = rows_of_part(t, "mechanism");
+  REQUIRE(!mechanism.empty());
+  CHECK(t.number(cracking.back(), "H_over_V") > t.number(mechanism.front(), "H_over_V"));
+  CHECK(t.at(mechanism.back(), "collapse") != "");
+}
+
 TEST_CASE("cli: spread gives a pointed arch its four hinges and a capacity") {
   const Run r = run({"spread", "--eccentricity", "0.5", "--thickness-ratio", "0.08"});
   CHECK(r.status == 0);
@@ -210,6 +241,10 @@ TEST_CASE("cli: spread refuses bad input with one line naming the option, exit 2
       {{"--steps", "0"}, "--steps"},
       {{"--weight", "heavy"}, "--weight"},
       {{"--joints", "oblique"}, "--joints"},
+      {{"--right-settlement-share", "11"}, "--right-settlement-share"},
+      {{"--left-settlement-share", "nan"}, "--left-settlement-share"},
+      {{"--left-settlement-share", "0,1"}, "--left-settlement-share"},
+      {{"--increment-ratio", "abc"}, "--increment-ratio"},
       {{"--joints-count", "4"}, "--joints-count"},
       {{"--support-displacement-ratio", "0.001"}, "--support-displacement-ratio"},
       {{"--left-spread-ratio", "0.001"}, "--left-spread-ratio"},

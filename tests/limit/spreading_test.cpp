@@ -2,7 +2,7 @@
 // program's thrust against the mechanism's virtual work at every step, the loads' potential energy
 // along the movement, the start at the limit analysis' H_min, the semicircle's rising thrust
 // (Ochsendorf 2006), the capacity against the thickness and its convergence, hinge migration, the pointed
-// arch's four hinges, one-sided movement, and misuse.
+// arch's four hinges, one-sided movement, settling springings (and their mirror symmetry), and misuse.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -91,6 +91,66 @@ TEST_CASE("spreading: one-sided movement keeps static and kinematic thrust equal
   REQUIRE(r.status == SpreadStatus::success);
   for (const SpreadStep& s : r.path) CHECK(close(s.H, s.H_work, kStaticKinematic));
   CHECK(r.d_max > 0);
+}
+
+TEST_CASE("spreading: a settling springing - static work equals the mechanism's, it sheds load, mirrors match") {
+  // The right springing spreads and settles (0.5 m down per m out), the left stays: the least-work state
+  // of each increment is no longer the least thrust, and the vertical reactions do work on the
+  // settlement. The same movement mirrored (the left springing moving) gives the same path.
+  SpreadOptions right, left;
+  right.left_share = 0;
+  right.right_settlement_share = 0.5;
+  left.right_share = 0;
+  left.left_settlement_share = 0.5;
+  const SpreadResult r = spread(0.075, right), m = spread(0.075, left);
+  REQUIRE(r.status == SpreadStatus::success);
+  REQUIRE(m.status == SpreadStatus::success);
+  REQUIRE(r.path.size() > 10);
+  for (std::size_t i = 0; i < r.path.size(); ++i) {
+    const SpreadStep& s = r.path[i];
+    CAPTURE(i);
+    CHECK(close(s.H, s.H_work, kStaticKinematic));
+    if (i > 0) CHECK(s.potential < r.path[i - 1].potential);
+  }
+  CHECK(close(m.d_max, r.d_max, kSpreadTolerance));
+  CHECK(close(m.path.back().H, r.path.back().H, kSameState));
+  CHECK(close(m.path.front().V_right, r.path.front().V_left, kSameState));
+  // The right springing rising instead (-0.5) is the same mechanics seen in a mirror and moved as a
+  // whole (mirrored, the left springing moves out and down while the right stays; lifting the whole by
+  // the settlement changes nothing): the same thrust at every d, the vertical reactions swapped.
+  SpreadOptions rising = right;
+  rising.right_settlement_share = -0.5;
+  const SpreadResult u = spread(0.075, rising);
+  REQUIRE(u.status == SpreadStatus::success);
+  CHECK(close(u.d_max, r.d_max, kSpreadTolerance));
+  REQUIRE(u.path.size() == r.path.size());
+  for (std::size_t i = 0; i < r.path.size(); ++i) {
+    CAPTURE(i);
+    CHECK(close(u.path[i].d, r.path[i].d, kExact));
+    CHECK(close(u.path[i].H, r.path[i].H, kSameState));
+    CHECK(close(u.path[i].V_left, r.path[i].V_right, kSameState));
+  }
+  // Settling lowers the capacity.
+  SpreadOptions level = right;
+  level.right_settlement_share = 0;
+  const SpreadResult flat = spread(0.075, level);
+  REQUIRE(flat.status == SpreadStatus::success);
+  CHECK(flat.d_max > r.d_max);
+  // Where the settlement dominates, the state at d = 0 is no longer the minimum-thrust one (half the
+  // load on each side): a thicker arch has room for a line of thrust that leans to the left springing.
+  SpreadOptions steep = right;
+  steep.right_settlement_share = 4;
+  const SpreadResult sinking = spread(0.1, steep), level_thick = spread(0.1, level);
+  REQUIRE(sinking.status == SpreadStatus::success);
+  REQUIRE(level_thick.status == SpreadStatus::success);
+  CHECK(close(level_thick.path.front().V_right, level_thick.path.front().V_left, kSameState));
+  CHECK(sinking.path.front().V_right < level_thick.path.front().V_right);
+  CHECK(sinking.path.front().H > level_thick.path.front().H);
+  for (const SpreadStep& s : sinking.path) CHECK(close(s.H, s.H_work, kStaticKinematic));
+  // Misuse: a settlement that is not a number.
+  SpreadOptions bad = right;
+  bad.right_settlement_share = std::nan("");
+  CHECK_THROWS_AS(spread(0.075, bad), std::invalid_argument);
 }
 
 TEST_CASE("spreading: the capacity converges with the joints count and the increment") {

@@ -1,11 +1,15 @@
 // The arch of rigid voussoirs on spreading supports, with large displacements: the mechanism part of the
 // path from the limit analysis' minimum-thrust state (d = 0) to collapse.
 //
-// The movement: the left springing moves by -left_share * d, the right one by +right_share * d
-// (horizontally), d growing from 0 in increments of increment_ratio * L.
+// The movement: the left springing moves by (-left_share, -left_settlement_share) d, the right one by
+// (+right_share, -right_settlement_share) d (x right, y up: the settlements downwards positive), d
+// growing from 0 in increments of increment_ratio * L. The span grows: left_share + right_share > 0.
 //
-// Each increment starts from an admissible state of the moved ring: the limit analysis' program of the
-// minimum thrust on the voussoirs where they are now, every joint free (no hinge is imposed). The joints
+// Each increment starts from an admissible state of the moved ring: the limit analysis' program on the
+// voussoirs where they are now, every joint free (no hinge is imposed), for the state that does the least
+// work on the movement: the smallest H (left_share + right_share) + V_left (left_settlement_share -
+// right_settlement_share) (V_left the left springing's vertical reaction; the smallest H when neither
+// settles; a settling springing sheds load to the other). The joints
 // where its thrust line touches a face (or crosses a pin) are the hinges of the increment's mechanism;
 // from one increment to the next they may move to other joints (hinge migration), and an abandoned
 // hinge's opening stays in the voussoirs' places.
@@ -47,6 +51,9 @@ inline constexpr double kSpreadTolerance = 1e-6;  // collapse movement located t
 struct SpreadOptions {
   double left_share = 1;   // the left springing moves by -left_share * d (m per m of d), >= 0
   double right_share = 1;  // the right springing moves by +right_share * d, >= 0; one of them > 0
+  // Each springing's settlement per unit of d (m per m, downwards positive; finite, either sign): with
+  // a horizontal share, a springing moving along a sloping line; without one, a pure settlement.
+  double left_settlement_share = 0, right_settlement_share = 0;
   // The increment of the span's increase (left_share + right_share) * d over L between two
   // re-solutions of the minimum-thrust state (where the hinges may move), in (0, 0.1].
   double increment_ratio = 2.5e-4;
@@ -64,7 +71,9 @@ const char* to_string(SpreadCollapse c);
 struct SpreadStep {
   double d = 0;  // m, the movement parameter: the span grew by (left_share + right_share) d
   double H = std::numeric_limits<double>::quiet_NaN();       // N/m, the program's (static) thrust
-  double H_work = std::numeric_limits<double>::quiet_NaN();  // N/m, the mechanism's by virtual work
+  // N/m, the mechanism's thrust by virtual work: the loads' work on its velocities, with the vertical
+  // reactions' own work on the settlements (V_left and V_right the program's), over the span's growth
+  double H_work = std::numeric_limits<double>::quiet_NaN();
   double V_left = std::numeric_limits<double>::quiet_NaN(), V_right = std::numeric_limits<double>::quiet_NaN();
   double crown_drop = 0;     // m, the drop of the crown joint's extrados point
   double potential = 0;      // N m/m, sum of every load times its height
@@ -73,6 +82,7 @@ struct SpreadStep {
 
 enum class SpreadStatus {
   success,       // a path to collapse: every state's H is the program's and equals its virtual work
+                 // (H_work)
   inadmissible,  // no thrust line fits the arch at d = 0 (t < t_min): no path
   no_mechanism,  // the minimum-thrust state at d = 0 has no mechanism that moves the springings apart;
                  // path holds that state
