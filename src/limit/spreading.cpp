@@ -378,7 +378,7 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
   if (first != Outcome::admissible) {
     if (first == Outcome::snap_through) {  // admissible, but nothing moves the springings apart
       r.status = SpreadStatus::no_mechanism;
-      r.message = "the minimum-thrust state's hinges make no mechanism that moves the springings apart";
+      r.message = "the hinges of the state at d = 0 make no mechanism that moves the springings apart";
       SpreadStep s;
       s.H = base.min_state.H;
       s.V_left = base.min_state.V_left;

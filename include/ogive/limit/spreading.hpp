@@ -84,7 +84,7 @@ enum class SpreadStatus {
   success,       // a path to collapse: every state's H is the program's and equals its virtual work
                  // (H_work)
   inadmissible,  // no thrust line fits the arch at d = 0 (t < t_min): no path
-  no_mechanism,  // the minimum-thrust state at d = 0 has no mechanism that moves the springings apart;
+  no_mechanism,  // the state at d = 0 has no mechanism that moves the springings apart;
                  // path holds that state
   lp_failure,    // the LP library stopped without an answer
   not_collapsed, // no collapse before the span grew by 2.5 L, which no arch survives: path holds d = 0
