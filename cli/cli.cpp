@@ -170,15 +170,20 @@ int run_reporting_errors(const Run& run, std::ostream& out, std::ostream& err) {
 int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   CLI::App app{"ogive: thrust and line of thrust of arches and barrel vaults (CSV on stdout)", "ogive"};
   app.require_subcommand(1);
-  // Only the subcommand named first on the command line gets its options: CLI11 checks every new
-  // option's names against all of its command's others, and building all seven subcommands' options
-  // cost about as much as the rest of a one-scene run. The others are still registered, so that
-  // `ogive --help` lists them and a misspelt one is still named.
+  // Only the subcommand named first on the command line is built, with its options: CLI11 checks every
+  // new option's names against all of its command's others, and building every subcommand's options
+  // cost about as much as the rest of a one-scene run. A command line that names none first (help,
+  // version, a misspelt or missing subcommand) gets them all, without options, so that `ogive --help`
+  // lists them and a misspelt one is named. Once one is named, the others change nothing CLI11 prints:
+  // a second subcommand is refused as an unexpected argument either way (require_subcommand(1)).
   const std::string named = args.empty() ? std::string() : args.front();
+  const bool names_one = std::any_of(std::begin(kSubcommands), std::end(kSubcommands),
+                                     [&](const Subcommand& s) { return s.name == named; });
   Run run;
   for (const Subcommand& s : kSubcommands) {
+    if (names_one && s.name != named) continue;
     CLI::App* cmd = app.add_subcommand(s.name, s.description);
-    if (s.name == named) run = s.add_options(*cmd);
+    if (names_one) run = s.add_options(*cmd);
   }
   add_help_texts(app);
   app.set_version_flag("--version", std::string("ogive ") + kVersion, "print the version and exit");

@@ -1,7 +1,8 @@
 #include "help.hpp"
 
-#include <map>
 #include <string>
+#include <string_view>
+#include <utility>
 
 #include <CLI/CLI.hpp>
 
@@ -15,7 +16,8 @@ void add_help_texts(CLI::App& app) {
       "3 some row not, 2 bad input (one line on stderr), 4 the output could not be written, 1 internal error.\n"
       "Options, statuses and every output column: docs/cli.md; the model and its sign conventions:\n"
       "docs/model.md. `ogive SUBCOMMAND --help` lists a subcommand's options.");
-  const std::map<std::string, std::string> examples = {
+  // A table rather than a map: only the subcommands registered (one, once named) look theirs up.
+  static constexpr std::pair<std::string_view, std::string_view> kExamples[] = {
       {"thrust",
        "  ogive thrust --eccentricity 0:1:11                      # the paper's Figure 8, H/V against eccentricity\n"
        "  ogive thrust --curve segmental --rise-ratio 0.1:0.4:4 --thickness-ratio 0.1"},
@@ -44,10 +46,11 @@ void add_help_texts(CLI::App& app) {
        "  ogive spread --curve semicircular --thickness-ratio 0.06:0.1:5   # spreading capacity against t\n"
        "  ogive spread --curve semicircular --thickness-ratio 0.075 --path --moving left"},
   };
-  for (CLI::App* sub : app.get_subcommands({})) {
-    const auto it = examples.find(sub->get_name());
-    if (it != examples.end()) sub->footer("Examples:\n" + it->second + "\nUnits and output columns: docs/cli.md; signs: docs/model.md.");
-  }
+  for (CLI::App* sub : app.get_subcommands({}))
+    for (const auto& [name, examples] : kExamples)
+      if (name == sub->get_name())
+        sub->footer("Examples:\n" + std::string(examples) +
+                    "\nUnits and output columns: docs/cli.md; signs: docs/model.md.");
 }
 
 }  // namespace ogive::cli

@@ -29,8 +29,17 @@ std::string as_option_message(const std::string& what) {
   return flag + what.substr(colon);
 }
 
+bool given(const CLI::App& cmd, std::string_view flag) {
+  // CLI11 keeps long names without their dashes.
+  if (flag.starts_with("--"))
+    for (const CLI::Option* opt : cmd.get_options())
+      for (const std::string& name : opt->get_lnames())
+        if (name == flag.substr(2)) return opt->count() > 0;
+  throw CLI::OptionNotFound(std::string(flag));
+}
+
 void refuse_empty_name(const CLI::App& cmd, const char* flag, const std::string& value, const char* what) {
-  if (value.empty() && cmd.count(flag) > 0)
+  if (value.empty() && given(cmd, flag))
     throw UsageError(fmt::format("{}: the name must not be empty (give {})", flag, what));
 }
 
@@ -40,7 +49,7 @@ void hide_inapplicable(CLI::App& cmd, std::span<const Inapplicable> options) {
 
 void refuse_inapplicable(const CLI::App& cmd, const char* command, std::span<const Inapplicable> options) {
   for (const Inapplicable& o : options)
-    if (cmd.count(o.flag) > 0) throw UsageError(fmt::format("{}: does not apply to {} ({})", o.flag, command, o.why));
+    if (given(cmd, o.flag)) throw UsageError(fmt::format("{}: does not apply to {} ({})", o.flag, command, o.why));
 }
 
 std::string did_you_mean(const std::string& name, const std::vector<std::string>& candidates) {

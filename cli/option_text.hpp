@@ -5,6 +5,7 @@
 #include <map>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
@@ -39,6 +40,11 @@ std::string as_option_message(const std::string& what);
 // for a name cut short (5 characters or more) the one to three candidates it begins
 // (" (did you mean 'a' or 'b'?)"), or "".
 std::string did_you_mean(const std::string& name, const std::vector<std::string>& candidates);
+
+// Whether the option `flag` ("--name", one of cmd's) was given: App::count's answer without its cost,
+// which copies every option's names for each option it compares (a one-scene run asks some 80 times).
+// CLI::OptionNotFound, as App::count, for a flag that cmd does not have.
+bool given(const CLI::App& cmd, std::string_view flag);
 
 // A file or directory option given as "": UsageError naming it (rather than read as not given);
 // `what` says what the option takes, e.g. "a file, or - for standard input".

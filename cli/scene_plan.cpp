@@ -36,7 +36,7 @@ const CurveFamily& find_family(const std::string& curve) {
 // Options that do not apply to the curve are refused when given.
 void refuse_inapplicable(const CurveFamily& family, const std::string& curve, const CLI::App& cmd) {
   auto refuse_unless = [&](bool applies, const char* flag) {
-    if (!applies && cmd.count(flag) > 0) throw UsageError(fmt::format("{}: does not apply to --curve {}", flag, curve));
+    if (!applies && given(cmd, flag)) throw UsageError(fmt::format("{}: does not apply to --curve {}", flag, curve));
   };
   refuse_unless(family.eccentricity, "--eccentricity");
   refuse_unless(family.rise || family.eccentricity, "--rise-ratio");  // pointed: sets the eccentricity
@@ -61,7 +61,7 @@ constexpr std::initializer_list<const char*> kSameQuantity[] = {
 // The flag of `group` that was given, or nullptr.
 const char* given_of(const CLI::App& cmd, std::initializer_list<const char*> group) {
   for (const char* flag : group)
-    if (cmd.count(flag) > 0) return flag;
+    if (given(cmd, flag)) return flag;
   return nullptr;
 }
 
@@ -83,12 +83,12 @@ std::shared_ptr<const Curve> read_points(const SceneOptions& o) {
 // Load and movement options that need another, or exclude one.
 void check_option_pairs(const CLI::App& cmd) {
   auto needs = [&](const char* flag, const char* other) {
-    if (cmd.count(flag) > 0 && cmd.count(other) == 0) throw UsageError(fmt::format("{}: needs {}", flag, other));
+    if (given(cmd, flag) && !given(cmd, other)) throw UsageError(fmt::format("{}: needs {}", flag, other));
   };
   for (std::initializer_list<const char*> group : kSameQuantity) {
     const char* first = nullptr;
     for (const char* flag : group) {
-      if (cmd.count(flag) == 0) continue;
+      if (!given(cmd, flag)) continue;
       if (first)
         throw UsageError(fmt::format("{}: cannot be combined with {} (both give the same quantity): give one", flag,
                                      first));
@@ -103,10 +103,10 @@ void check_option_pairs(const CLI::App& cmd) {
   needs("--live-load-to-x", "--live-load");
   needs("--fill-height-ratio", "--fill-density");
   needs("--fill-height", "--fill-density");
-  if (cmd.count("--fill-density") > 0 && !given_of(cmd, {"--fill-height-ratio", "--fill-height"}))
+  if (given(cmd, "--fill-density") && !given_of(cmd, {"--fill-height-ratio", "--fill-height"}))
     throw UsageError("--fill-density: needs --fill-height-ratio or --fill-height");
   for (const char* side : {"--left-spread-ratio", "--right-spread-ratio"})
-    if (cmd.count(side) > 0 && cmd.count("--support-displacement-ratio") > 0)
+    if (given(cmd, side) && given(cmd, "--support-displacement-ratio"))
       throw UsageError(fmt::format("{}: cannot be combined with --support-displacement-ratio (both springings "
                                    "spreading alike): give each side's spread instead",
                                    side));
@@ -146,7 +146,7 @@ void ScenePlan::choose_supports(const SceneOptions& o, const CLI::App& cmd) {
   if (!o.left_support.empty() || !o.right_support.empty()) lookup(kSupportKinds, o.supports, "--supports");
   section_ = lookup(kSectionKinds, o.section, "--section");
   for (const auto& [flag, kind] : {std::pair{"--left-rotation", left_kind_}, {"--right-rotation", right_kind_}})
-    if (kind == SupportKind::pinned && cmd.count(flag) > 0)
+    if (kind == SupportKind::pinned && given(cmd, flag))
       throw UsageError(fmt::format("{}: does not apply to a pinned springing (it turns freely: its rotation is a "
                                    "result, not a given movement)",
                                    flag));
@@ -157,29 +157,29 @@ void ScenePlan::plan_axes(SceneOptions& o, const CLI::App& cmd) {
   // --units (columns.hpp): the unit of the force options.
   if (const CLI::Option* units = cmd.get_option_no_throw("--units"); units && units->count() > 0)
     force_unit_ = force_unit(units->as<std::string>());
-  thickness_flag_ = cmd.count("--thickness") > 0 ? "--thickness" : "--thickness-ratio";
+  thickness_flag_ = given(cmd, "--thickness") ? "--thickness" : "--thickness-ratio";
   const char* shape = given_of(cmd, {"--rise-ratio", "--rise", "--radius"});
   shape_flag_ = shape ? shape : "--eccentricity";
   for (Axis& a : o.axes) {
     std::string text = a.text;
-    const bool given = cmd.count(a.flag) > 0;  // given text is parsed as it stands, even if empty
-    if (!given && text.empty()) {
+    const bool is_given = given(cmd, a.flag);  // given text is parsed as it stands, even if empty
+    if (!is_given && text.empty()) {
       if (a.flag == "--rise-ratio") text = family_->default_rise;
       if (a.flag == "--haunch-angle") text = family_->default_haunch;
       if (a.flag == "--crown-angle") text = family_->default_crown;
     }
     // A quantity given in its other form: this one's default does not apply.
-    if (!given && a.flag == "--thickness-ratio" && thickness_flag_ == "--thickness") text.clear();
-    if (!given && a.flag == "--eccentricity" && shape) text.clear();
-    if (given && a.flag == "--fill-height") fill_in_metres_ = true;
-    if (given && a.flag == "--fill-height" && text == "crown") {
+    if (!is_given && a.flag == "--thickness-ratio" && thickness_flag_ == "--thickness") text.clear();
+    if (!is_given && a.flag == "--eccentricity" && shape) text.clear();
+    if (is_given && a.flag == "--fill-height") fill_in_metres_ = true;
+    if (is_given && a.flag == "--fill-height" && text == "crown") {
       fill_to_crown_ = true;
       text.clear();
     }
     if (family_->file && a.flag == "--span") {
       // A points file sets the span: --span may only repeat it.
       const double own = o.points->span();
-      if (given)
+      if (is_given)
         for (double v : parse_values(text, a.flag))
           if (!(std::abs(v - own) <= 1e-9 * own))
             throw UsageError(fmt::format("--span: the points file sets the span ({} m in {}), got {}: omit --span, "
@@ -188,7 +188,7 @@ void ScenePlan::plan_axes(SceneOptions& o, const CLI::App& cmd) {
       text = fmt::format("{}", own);
     }
     // Not a parameter of this curve: one NaN, printed as an empty field.
-    const bool absent = (!given || (a.flag == "--fill-height" && fill_to_crown_)) && text.empty();
+    const bool absent = (!is_given || (a.flag == "--fill-height" && fill_to_crown_)) && text.empty();
     try {
       a.values = absent ? std::vector<double>{std::numeric_limits<double>::quiet_NaN()} : parse_values(text, a.flag);
     } catch (const UsageError& e) {

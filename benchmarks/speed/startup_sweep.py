@@ -4,13 +4,13 @@ closed-form sweep's throughput against threads, measured in one run.
 
     /usr/bin/python3 benchmarks/speed/startup_sweep.py [--ogive build/ogive] [--startup-runs 20]
         [--marginal-scale 1] [--sweep-scenes 1000000] [--sweep-runs 3] [--threads 1,2]
-        [--chart docs/figures/sweep-threads.png] [--peer-tol 1e-8]
+        [--chart docs/figures/sweep-threads.png] [--peer-tol 1e-8] [--startup-only]
 
 Start-up: `ogive thrust` (one scene, its row discarded) and `/bin/true`, run in turn --startup-runs
 times each, so that a change in the machine's load slows both alike; the table gives each one's median
 wall-clock and CPU time (user + system, from the kernel's accounting of the finished child) and the
 median of the pairwise differences. `ogive --version` is measured the same way: what is left of it is
-loading the shared libraries and building the command line, not solving.
+loading the program and building the command line, not solving. --startup-only stops there.
 
 Marginal time per scene: for each method, the best of 5 runs of a sweep of N pointed arches
 (`--eccentricity 0:1:N`, one thread, N from 2000 for multiple shooting to 40 000 for the closed form,
@@ -147,6 +147,7 @@ def main():
     p.add_argument("--threads", default="1,2", help="thread counts of the sweep, a list a,b")
     p.add_argument("--chart", help="PNG of throughput against threads (gnuplot)")
     p.add_argument("--peer-tol", default="1e-8", help="solve_bvp's tolerance for the ratio (default 1e-8)")
+    p.add_argument("--startup-only", action="store_true", help="measure the start-up alone (a few seconds)")
     o = p.parse_args()
     if o.startup_runs < 1 or o.sweep_runs < 1 or not o.marginal_scale > 0 or o.sweep_scenes < 1:
         sys.exit("startup_sweep.py: --startup-runs and --sweep-runs must be >= 1, --marginal-scale > 0, "
@@ -161,6 +162,8 @@ def main():
         f = startup(ogive, args, o.startup_runs)
         print(f"| {label} | " + " | ".join(f"{1e3 * x:.2f}" for x in f) + " |")
     print()
+    if o.startup_only:
+        return
 
     print("| method (one thread) | scenes | marginal µs per scene |")
     print("|---|---:|---:|")

@@ -99,7 +99,7 @@ LimitOptions limit_options(const LimitText& t, const CLI::App& cmd) {
   o.joints = lookup(joint_orientations(), t.joints, "--joints");
   o.weight = lookup(weight_models(), t.weight, "--weight");
   o.joints_count = t.joints_count;
-  if (cmd.count("--friction") > 0 && !(t.friction > 0))
+  if (given(cmd, "--friction") && !(t.friction > 0))
     throw UsageError(fmt::format("--friction: must be > 0 (omit it for no sliding check), got {}", t.friction));
   o.friction = t.friction;
   // The loads are the scene's (--point-load, --live-load, --fill-density, --loads-file) and so are the
@@ -216,8 +216,8 @@ int run_limit(LimitCommandOptions& lo, const CLI::App& cmd, std::ostream& out) {
   }
   LimitOptions o = limit_options(text, cmd);
   const ScenePlan plan(lo.scene, cmd);
-  if (lines && kThrustLines.at(text.thrust_line) == ThrustLine::collapse && cmd.count("--point-load") == 0 &&
-      cmd.count("--live-load") == 0 && lo.scene.file_loads.points.empty() && lo.scene.file_loads.live.empty())
+  if (lines && kThrustLines.at(text.thrust_line) == ThrustLine::collapse && !given(cmd, "--point-load") &&
+      !given(cmd, "--live-load") && lo.scene.file_loads.points.empty() && lo.scene.file_loads.live.empty())
     throw UsageError("--thrust-line collapse: a load factor needs a live load (--point-load, --live-load or a "
                      "--loads-file with point or live rows)");
   if (lines) check_rows(plan.size(), o.joints_count);
