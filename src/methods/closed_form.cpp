@@ -11,9 +11,9 @@ namespace {
 
 constexpr int kCos = 6, kSin = 7;  // the appended trigonometric states
 
-// Local (tangential/radial) components from global ones at tangent angle theta: u = R y.
-SystemMatrix to_local(double theta) {
-  const double c = std::cos(theta), sn = std::sin(theta);
+// Local (tangential/radial) components from global ones at a tangent angle of cosine c and sine sn:
+// u = R y.
+SystemMatrix to_local(double c, double sn) {
   SystemMatrix R = SystemMatrix::Identity();
   R(kUx, kUx) = c;   R(kUx, kUy) = sn;
   R(kUy, kUx) = -sn; R(kUy, kUy) = c;
@@ -118,19 +118,46 @@ ArcMatrix arc_exponential(double k, double l, double aN, double aV, double b, do
 
 namespace {
 
-// Transfer over [ds0, ds1] of one arc (distances from the arc's start, scaled).
-Transfer arc_transfer(const ArchModel& model, const CircularArc& arc, double ds0, double ds1) {
+// One arc's piece [ds0, ds1] (distances from the arc's start, scaled): its exp(A8 l) and the cosines
+// and sines of its end tangents.
+struct ArcPiece {
+  ArcMatrix E;
+  double c0, sn0, c1, sn1;
+};
+
+ArcPiece arc_piece(const ArchModel& model, const CircularArc& arc, double ds0, double ds1) {
   const double L = model.scales().length;
-  const double k = arc.kappa * L;
   const double th0 = arc.theta_start + arc.kappa * ds0 * L;
   const double th1 = arc.theta_start + arc.kappa * ds1 * L;
-  const ArcMatrix E = arc_exponential(k, ds1 - ds0, model.a_N(), model.a_V(), model.self_weight(),
-                                      model.acceleration() * model.self_weight());
-  const SystemMatrix back = to_local(th1).transpose();
+  return {arc_exponential(arc.kappa * L, ds1 - ds0, model.a_N(), model.a_V(), model.self_weight(),
+                          model.acceleration() * model.self_weight()),
+          std::cos(th0), std::sin(th0), std::cos(th1), std::sin(th1)};
+}
+
+// Transfer over [ds0, ds1] of one arc.
+Transfer arc_transfer(const ArchModel& model, const CircularArc& arc, double ds0, double ds1) {
+  const ArcPiece a = arc_piece(model, arc, ds0, ds1);
+  const SystemMatrix back = to_local(a.c1, a.sn1).transpose();
   Transfer t;
-  t.Phi = back * E.topLeftCorner<6, 6>() * to_local(th0);
-  t.p = back * (E.block<6, 1>(0, kCos) * std::cos(th0) + E.block<6, 1>(0, kSin) * std::sin(th0));
+  t.Phi = back * a.E.topLeftCorner<6, 6>() * to_local(a.c0, a.sn0);
+  t.p = back * (a.E.block<6, 1>(0, kCos) * a.c0 + a.E.block<6, 1>(0, kSin) * a.sn0);
   return t;
+}
+
+// The state at s1 from the state y at s0 (scaled, s0 <= s1): the arcs' transfers applied to the vector,
+// a matrix-vector product each instead of the 6 x 6 transfer's two matrix products.
+StateVector closed_form_state(const ArchModel& model, double s0, StateVector y, double s1) {
+  const double L = model.scales().length;
+  for (const CircularArc& arc : model.curve().arcs()) {
+    const double a0 = arc.s_start / L, a1 = (arc.s_start + arc.length) / L;
+    const double lo = std::max(s0, a0), hi = std::min(s1, a1);
+    if (hi <= lo) continue;
+    const ArcPiece a = arc_piece(model, arc, lo - a0, hi - a0);
+    Eigen::Matrix<double, 8, 1> local;
+    local << to_local(a.c0, a.sn0) * y, a.c0, a.sn0;
+    y = to_local(a.c1, a.sn1).transpose() * (a.E * local).head<6>();
+  }
+  return y;
 }
 
 // The closed form's field: exact state anywhere. Each station is reached from the start of its own piece
@@ -146,10 +173,7 @@ class ClosedFormField final : public PiecewiseField {
  protected:
   void propagate(double s_k, const StateVector& y_k, std::span<const double> s,
                  std::span<StateVector> out) const override {
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      const Transfer t = closed_form_transfer(*model_, s_k, s[i]);
-      out[i] = t.Phi * y_k + t.p;
-    }
+    for (std::size_t i = 0; i < s.size(); ++i) out[i] = closed_form_state(*model_, s_k, y_k, s[i]);
   }
 
  private:
