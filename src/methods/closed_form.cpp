@@ -173,7 +173,29 @@ class ClosedFormField final : public PiecewiseField {
  protected:
   void propagate(double s_k, const StateVector& y_k, std::span<const double> s,
                  std::span<StateVector> out) const override {
-    for (std::size_t i = 0; i < s.size(); ++i) out[i] = closed_form_state(*model_, s_k, y_k, s[i]);
+    // The piece's start in local components once (its sine and cosine among them), then each station a
+    // matrix-vector product: the same arithmetic as closed_form_state's on one arc.
+    const ArchModel& model = *model_;
+    const double L = model.scales().length;
+    const auto arcs = model.curve().arcs();
+    const auto arc = std::find_if(arcs.begin(), arcs.end(), [&](const CircularArc& a) {
+      return a.s_start / L <= s_k && s_k < (a.s_start + a.length) / L;
+    });
+    std::size_t i = 0;
+    if (arc != arcs.end()) {
+      const double a0 = arc->s_start / L, a1 = (arc->s_start + arc->length) / L;
+      const double th0 = arc->theta_start + arc->kappa * (s_k - a0) * L;
+      const double c0 = std::cos(th0), sn0 = std::sin(th0);
+      Eigen::Matrix<double, 8, 1> local;
+      local << to_local(c0, sn0) * y_k, c0, sn0;
+      for (; i < s.size() && s[i] <= a1; ++i) {
+        const double th1 = arc->theta_start + arc->kappa * (s[i] - a0) * L;
+        const ArcMatrix E = arc_exponential(arc->kappa * L, s[i] - s_k, model.a_N(), model.a_V(), model.self_weight(),
+                                            model.acceleration() * model.self_weight());
+        out[i] = s[i] > s_k ? to_local(std::cos(th1), std::sin(th1)).transpose() * (E * local).head<6>() : y_k;
+      }
+    }
+    for (; i < s.size(); ++i) out[i] = closed_form_state(model, s_k, y_k, s[i]);
   }
 
  private:
