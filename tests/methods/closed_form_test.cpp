@@ -7,8 +7,11 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <random>
 #include <string>
 #include <vector>
+
+#include <unsupported/Eigen/MatrixFunctions>
 
 #include "methods/closed_form.hpp"
 #include "ogive/solve/solve.hpp"
@@ -142,4 +145,64 @@ TEST_CASE("closed form on a non-circular curve is not applicable - with a reason
   CHECK(sol.status == Status::not_applicable);
   CHECK(sol.message.find("piecewise-circular") != std::string::npos);
   CHECK(std::isnan(sol.H_over_V));
+}
+
+namespace {
+
+// A8 of closed_form.cpp's arc_exponential, in any precision.
+template <typename T>
+Eigen::Matrix<T, 8, 8> arc_matrix(T k, T aN, T aV, T b, T h) {
+  Eigen::Matrix<T, 8, 8> A = Eigen::Matrix<T, 8, 8>::Zero();
+  A(0, 1) = k;  A(0, 3) = aN;                 // u'   = k v + a_N N
+  A(1, 0) = -k; A(1, 2) = 1; A(1, 4) = aV;    // v'   = -k u + psi + a_V V
+  A(2, 5) = 1;                                // psi' = M
+  A(3, 4) = k;  A(3, 7) = b; A(3, 6) = -h;    // N'   = k V + b sn - h c
+  A(4, 3) = -k; A(4, 6) = b; A(4, 7) = h;     // V'   = -k N + b c + h sn
+  A(5, 4) = -1;                               // M'   = -V
+  A(6, 7) = -k;                               // c'   = -k sn
+  A(7, 6) = k;                                // sn'  = k c
+  return A;
+}
+
+}  // namespace
+
+TEST_CASE("closed form: the arc's analytic transfer is exp(A8 l), from a straight piece to a full turn") {
+  // Against Eigen's Pade exponential in long double (64-bit mantissa: its own error near 1e-19), and in
+  // double (what the closed form used before): within round-off of each column's largest entry (the
+  // measure of a matrix function's accuracy: an entry may pass through zero, or be a difference of
+  // physical terms that nearly cancel, such as a_V l - l^3 / 6, in either computation).
+  constexpr double kRoundOff = 1e-14;
+  std::mt19937_64 rng(20261127);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  // x = k l: exactly zero (a straight piece), tiny, small, moderate and up to a full turn, both signs,
+  // across |x| = 3, where trig_phi changes from series to recurrence.
+  const std::vector<double> turns = {0.0, 1e-14, 1e-9, 1e-5, 1e-3, 0.05, 0.5, 1.0, 2.0, 2.9, 3.0, 3.1, 4.0, 6.0,
+                                     2 * std::numbers::pi};
+  double worst_column = 0, worst_eigen = 0;
+  for (int trial = 0; trial < 200; ++trial)
+    for (double turn : turns) {
+      const double l = std::pow(10.0, -3 + 3.5 * unit(rng));  // 1e-3 .. 3 spans
+      const double x = (unit(rng) < 0.5 ? -1 : 1) * turn * (turn < 2 * std::numbers::pi ? 0.9 + 0.1 * unit(rng) : 1);
+      const double k = x / l;
+      const double aN = 1e-5 * std::pow(10.0, 3 * unit(rng)), aV = aN * (1 + 3 * unit(rng));
+      const double b = 0.5 + unit(rng), h = unit(rng) - 0.5;
+      CAPTURE(x);
+      CAPTURE(l);
+      const ArcMatrix E = arc_exponential(k, l, aN, aV, b, h);
+      using Long = long double;
+      const Eigen::Matrix<Long, 8, 8> ref = (arc_matrix<Long>(k, aN, aV, b, h) * static_cast<Long>(l)).exp();
+      const ArcMatrix eigen = (arc_matrix<double>(k, aN, aV, b, h) * l).exp();
+      for (int j = 0; j < 8; ++j) {
+        const double column = static_cast<double>(ref.col(j).cwiseAbs().maxCoeff());
+        for (int i = 0; i < 8; ++i) {
+          const double r = static_cast<double>(ref(i, j));
+          worst_column = std::max(worst_column, std::abs(E(i, j) - r) / column);
+          worst_eigen = std::max(worst_eigen, std::abs(E(i, j) - eigen(i, j)) / column);
+        }
+      }
+    }
+  MESSAGE("largest difference of an entry in its column's largest entry: ", worst_column,
+          " (against the double Pade: ", worst_eigen, ")");
+  CHECK(worst_column <= kRoundOff);
+  CHECK(worst_eigen <= kRoundOff);
 }
