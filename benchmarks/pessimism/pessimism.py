@@ -123,7 +123,7 @@ def reaction_error(row, ref, thickness):
         worst = max(worst, abs(f(row[k]) - ref[k]) / max(abs(ref[k]), F / 100))
     for k in ["M_left", "M_right"]:
         worst = max(worst, abs(f(row[k]) - ref[k]) / couple)
-    return worst
+    return worst if not any(math.isnan(f(row[k])) for k in REACTIONS) else math.inf
 
 
 def profile_error(rows, ref_profile, ref_hv, thickness):
@@ -134,6 +134,8 @@ def profile_error(rows, ref_profile, ref_hv, thickness):
     F = max(math.hypot(r["N"], r["shear_force"]) for r in ref_profile)
     M = max(max(abs(r["M"]) for r in ref_profile), max(abs(r["N"]) for r in ref_profile) * thickness / 6)
     for a, r in zip(rows, ref_profile):
+        if any(math.isnan(f(a[k])) for k in STATE):
+            return math.inf  # a station without numbers (max() would drop a NaN)
         worst = max(worst,
                     math.hypot(f(a["Ux"]) - r["Ux"], f(a["Uy"]) - r["Uy"]) / U,
                     abs(f(a["psi"]) - r["psi"]) / psi,

@@ -152,6 +152,11 @@ double profile_difference(const std::vector<ArchState>& profile, const std::vect
   for (std::size_t k = 0; k < reference.size(); ++k) {
     const ArchState& a = profile[k];
     const ArchState& r = reference[k];
+    // A station without a number (a non-finite state) is no agreement: std::max would drop its NaN.
+    for (const ArchState* x : {&a, &r})
+      if (!std::isfinite(x->Ux) || !std::isfinite(x->Uy) || !std::isfinite(x->psi) || !std::isfinite(x->N) ||
+          !std::isfinite(x->V) || !std::isfinite(x->M))
+        return kNaN;
     dU = std::max(dU, std::hypot(a.Ux - r.Ux, a.Uy - r.Uy));
     dpsi = std::max(dpsi, std::abs(a.psi - r.psi));
     dF = std::max(dF, std::hypot(a.N - r.N, a.V - r.V));

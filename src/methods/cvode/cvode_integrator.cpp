@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numeric>
 #include <stdexcept>
@@ -185,6 +186,16 @@ CvodeIntegrator::~CvodeIntegrator() {
   if (impl_ && impl_->workspace) return_workspace(std::move(impl_->workspace));
 }
 
+namespace {
+
+// Whether t lies too close to t0 for CVODE to take a step to it: CVODE returns CV_TOO_CLOSE when
+// |t - t0| < 2 uround max(|t0|, |t|); a margin of 2 on that.
+bool too_close_to_step(double t0, double t) {
+  return std::abs(t - t0) <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(t0), std::abs(t));
+}
+
+}  // namespace
+
 std::optional<IntegrationError> CvodeIntegrator::integrate(double s0, const Matrix& Y0,
                                                            std::span<const double> s_out,
                                                            const Observer& observer) {
@@ -232,12 +243,17 @@ std::optional<IntegrationError> CvodeIntegrator::integrate(double s0, const Matr
       current = Y;
       return true;
     };
+    // An output within a few ulps of the span's start (a station that rounds just past a segment's knot
+    // or a breakpoint) is the start's state: CVODE refuses a tout that close (CV_TOO_CLOSE, within 2
+    // round-offs of t0), and the state cannot change by more than round-off over that distance.
+    while (next < s_out.size() && s_out[next] <= b && too_close_to_step(a, s_out[next])) observer(next++, current);
     while (next < s_out.size() && s_out[next] <= b) {
       if (!advance(s_out[next])) break;
       observer(next++, current);
     }
-    // No output left in this span: run to the breakpoint so that the next span starts there.
-    if (!failure && reached < b) advance(b);
+    // No output left in this span: run to the breakpoint so that the next span starts there (a span too
+    // short to step, an output just past a breakpoint, carries its start's state).
+    if (!failure && reached < b && !too_close_to_step(reached, b)) advance(b);
     // Counters restart with every CVodeReInit: collect them span by span.
     long steps = 0, rhs = 0, etf = 0, jacs = 0, ncf = 0;
     check(CVodeGetNumSteps(mem, &steps), "CVodeGetNumSteps");
