@@ -136,10 +136,28 @@ double roundoff_bound(const Solution& sol) {
   return std::isfinite(bound) ? bound : kRoundoffProfile * base;
 }
 
+namespace {
+
+// H/V is printed beside the reactions and the profile: its error combines H's and V's (up to twice
+// either one's measure), so it is measured itself, relative to max(|H/V|, 1/100) as H is to F / 100.
+// Where V_left is below F / 100 (a load at the right springing, carried by it alone) H/V is the ratio
+// of two numbers of the order of round-off, and the reactions' measure is the only one.
+double thrust_difference(const Solution& a, const Solution& b) {
+  const Reactions& r = b.reactions;
+  const double F = std::max({std::abs(r.H_left), std::abs(r.V_left), std::abs(r.V_right)});
+  if (!(std::abs(r.V_left) >= F / 100)) return 0;
+  const double d = std::abs(a.H_over_V - b.H_over_V) / std::max(std::abs(b.H_over_V), 0.01);
+  return std::isfinite(d) ? d : std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace
+
 double solution_difference(const Solution& a, const Solution& b) {
   if (!a.field || !b.field) return std::numeric_limits<double>::quiet_NaN();
   const double thickness = b.model->scene().thickness;
-  const double reactions = reaction_difference(a.reactions, b.reactions, thickness);
+  const double thrust = thrust_difference(a, b);
+  if (std::isnan(thrust)) return thrust;
+  const double reactions = std::max(reaction_difference(a.reactions, b.reactions, thickness), thrust);
   if (b.profile.empty()) return reactions;
   return std::max(reactions, profile_difference(a.profile, b.profile, thickness));
 }

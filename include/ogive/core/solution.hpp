@@ -112,9 +112,9 @@ struct Diagnostics {
   double boundary_residual = std::numeric_limits<double>::quiet_NaN();
   double equilibrium_residual = std::numeric_limits<double>::quiet_NaN(); // relative to the domain's load
   // Estimated relative error of the printed numbers, never smaller than condition_estimate times
-  // round-off. CVODE methods (verified): the difference between a solve at rtol and one at rtol / 16, of
-  // the reactions (reaction_difference) and, with a profile, profile_difference; the tighter solution is the one returned, so its own error is smaller still
-  // whenever the second solve is at least twice as accurate as the first. The quadrature method: the
+  // round-off. CVODE methods (verified): the differences between solves at rtol, rtol / 16 and tighter
+  // (solution_difference: the reactions, H/V and, with a profile, profile_difference; solve.cpp,
+  // solve_verified, says how they are combined and which solve is returned). The quadrature method: the
   // same difference between its last two degrees (quadrature.hpp). The closed form: its round-off
   // bound alone. NaN when not estimated (status unverified, or a failed solve).
   double error_estimate = std::numeric_limits<double>::quiet_NaN();
@@ -211,8 +211,9 @@ inline constexpr double kRoundoffProfileIntegrated = 1.25 * kRoundoffProfile;
 inline constexpr double kRoundoffQuadrature = 10;
 double roundoff_bound(const Solution& solution);
 
-// The larger of the relative differences of the reactions and of the profiles (when both carry one):
-// the error estimate of a solution a against a tighter one b. NaN when either has no field.
+// The largest of the relative differences of the reactions, of H/V (relative to max(|H/V|, 1/100)) and
+// of the profiles (when both carry one): the error estimate of a solution a against a tighter one b. NaN
+// when either has no field.
 double solution_difference(const Solution& a, const Solution& b);
 
 // The error measure of a profile against a reference at the same stations: the largest difference of
