@@ -247,7 +247,20 @@ std::optional<IntegrationError> CvodeIntegrator::integrate(double s0, const Matr
     // or a breakpoint) is the start's state: CVODE refuses a tout that close (CV_TOO_CLOSE, within 2
     // round-offs of t0), and the state cannot change by more than round-off over that distance.
     while (next < s_out.size() && s_out[next] <= b && too_close_to_step(a, s_out[next])) observer(next++, current);
-    while (next < s_out.size() && s_out[next] <= b) {
+    // The first step toward the span's end, whatever the outputs: CVODE sizes its first step from the
+    // distance to the first tout, so a first output nearer the start would change every later step, and a
+    // profile's numbers with the number of stations asked (the printed profile would not be the one its
+    // error was estimated on). The outputs behind that step are interpolated, as all others.
+    if (next < s_out.size() && !too_close_to_step(a, b)) {
+      sunrealtype t = a;
+      const int flag = CVode(mem, b, w.y.get(), &t, CV_ONE_STEP);
+      if (flag < 0) {
+        sunrealtype t_now = a;
+        check(CVodeGetCurrentTime(mem, &t_now), "CVodeGetCurrentTime");
+        failure = IntegrationError{flag, flag_name(flag), t_now, m.last_message};
+      }
+    }
+    while (!failure && next < s_out.size() && s_out[next] <= b) {
       if (!advance(s_out[next])) break;
       observer(next++, current);
     }
