@@ -108,30 +108,19 @@ class ShootingField final : public PiecewiseField {
  public:
   ShootingField(std::shared_ptr<const ArchModel> model, const Options& options, std::vector<double> knots,
                 std::vector<StateVector> starts)
-      : PiecewiseField(knots, std::move(starts)), knots_(std::move(knots)), model_(std::move(model)),
-        system_(*model_), options_(options) {}
+      : PiecewiseField(std::move(knots), std::move(starts)), model_(std::move(model)), system_(*model_),
+        options_(options) {}
 
  protected:
-  // Integrates to the piece's end whatever the last station (CVODE sizes its steps toward the end of
-  // the span it is given): a station's numbers do not depend on which other stations are asked, so the
-  // printed profile is the one whose error the verification estimated.
   void propagate(double s_k, const StateVector& y_k, std::span<const double> s,
                  std::span<StateVector> out) const override {
     const CvodeTolerances tol = cvode_tolerances(options_);
     CvodeIntegrator integrator(system_, options_.integrator, tol.rtol, tol.atol, options_.max_steps, 1,
                                options_.restart_at_breakpoints);
-    std::vector<double> outputs(s.begin(), s.end());
-    const auto next_knot = std::upper_bound(knots_.begin(), knots_.end(), s_k);
-    if (next_knot != knots_.end() && *next_knot > outputs.back()) outputs.push_back(*next_knot);
-    const auto failure = integrator.integrate(s_k, y_k, outputs, [&](std::size_t n, const CvodeIntegrator::Matrix& Y) {
-      if (n < out.size()) out[n] = Y.col(0);
-    });
-    if (failure)  // Marked, never plausible: the caller sees non-finite states.
-      for (StateVector& y : out) y.setConstant(std::numeric_limits<double>::quiet_NaN());
+    integrate_field(integrator, s_k, y_k, s, piece_end(s_k), out);
   }
 
  private:
-  std::vector<double> knots_;
   std::shared_ptr<const ArchModel> model_;
   ArchSystem system_;
   Options options_;

@@ -322,6 +322,20 @@ TEST_CASE("sharp status: CVODE's estimate covers the round-off its verifying sol
   }
 }
 
+namespace {
+
+// The options of a verified CVODE solve with a profile.
+Options cvode_options(Method method, Integrator integrator, double rtol, int stations) {
+  Options o;
+  o.method = method;
+  o.integrator = integrator;
+  o.rtol = rtol;
+  o.stations = stations;
+  return o;
+}
+
+}  // namespace
+
 TEST_CASE("sharp status: every station of a verified multiple-shooting profile has a number") {
   // The equally spaced verification stations fall on the segments' knots (129 stations, 8 segments over
   // the half), some of them rounded one ulp past a knot, where CVODE refused to start: a third of the
@@ -334,12 +348,7 @@ TEST_CASE("sharp status: every station of a verified multiple-shooting profile h
   scene.set_support_displacement(0.006711);
   for (Integrator integrator : {Integrator::adams, Integrator::bdf}) {
     for (int stations : {41, kVerificationStations}) {
-      Options o;
-      o.method = Method::multiple_shooting;
-      o.integrator = integrator;
-      o.rtol = 1e-9;
-      o.stations = stations;
-      const Solution sol = solve(scene, o);
+      const Solution sol = solve(scene, cvode_options(Method::multiple_shooting, integrator, 1e-9, stations));
       CAPTURE(to_string(integrator));
       CAPTURE(stations);
       REQUIRE(sol.status == Status::success);
@@ -416,14 +425,8 @@ TEST_CASE("sharp status: a station's numbers do not depend on how many stations 
   scene.set_support_displacement(0.002059);
   for (Method method : {Method::shooting, Method::multiple_shooting}) {
     for (Integrator integrator : {Integrator::adams, Integrator::bdf}) {
-      Options o;
-      o.method = method;
-      o.integrator = integrator;
-      o.rtol = 1e-10;
-      o.stations = 41;
-      const Solution few = solve(scene, o);
-      o.stations = 81;
-      const Solution many = solve(scene, o);
+      const Solution few = solve(scene, cvode_options(method, integrator, 1e-10, 41));
+      const Solution many = solve(scene, cvode_options(method, integrator, 1e-10, 81));
       CAPTURE(to_string(method));
       CAPTURE(to_string(integrator));
       REQUIRE(few.field);
@@ -441,4 +444,64 @@ TEST_CASE("sharp status: a station's numbers do not depend on how many stations 
       }
     }
   }
+}
+
+TEST_CASE("sharp status: CVODE's estimate covers errors its differences fell short of (random arches)") {
+  // Two random arches of benchmarks/pessimism/calibration.py whose verified estimates lay below their
+  // true errors, with their reactions in 40-digit decimal arithmetic (reference.py): the left
+  // springing's H, V, M (the right's mirror them).
+  auto symmetric = [](double H, double V, double M) {
+    Reactions r;
+    r.H_left = r.H_right = H;
+    r.V_left = r.V_right = V;
+    r.M_left = M;
+    r.M_right = -M;
+    return r;
+  };
+  // (a) Seed 2, multiple shooting with BDF at rtol 1e-9 (thousands of steps): the differences 8.8e-13
+  // for a true error of 1.1e-12, round-off that the three solves share; BDF's integration round-off
+  // (8 condition eps sqrt(steps), solve.cpp) covers it.
+  Scene pointed;
+  pointed.curve = make_pointed(10.0, 0.972);
+  pointed.thickness = 0.9612;
+  pointed.set_support_displacement(0.005588);
+  const Reactions pointed_reference = symmetric(4340.0688237041495, 276868.9535096663, 213751.17037145913);
+  // (b) Seed 1, single shooting with Adams at rtol 1e-10 on a segmental arch: e1 = 1.60e-12, e2 =
+  // 1.73e-12, e3 = 0.89e-12, so 2 d2 was 0.97 of the true error; 3 d2 covers it (x3 1.5 times as good).
+  Scene segmental;
+  segmental.curve = make_segmental(10.0, 0.193);
+  segmental.thickness = 1.151;
+  segmental.set_support_displacement(1.792e-4);
+  const Reactions segmental_reference = symmetric(11430.890769568647, 145358.03599098313, 209198.98464751735);
+  struct Row {
+    const Scene* scene;
+    const Reactions* reference;
+    Method method;
+    Integrator integrator;
+    double rtol;
+  };
+  for (const Row& row : {Row{&pointed, &pointed_reference, Method::multiple_shooting, Integrator::bdf, 1e-9},
+                         Row{&segmental, &segmental_reference, Method::shooting, Integrator::adams, 1e-10}}) {
+    const Solution sol = solve(*row.scene, cvode_options(row.method, row.integrator, row.rtol, 0));
+    CAPTURE(to_string(row.method));
+    REQUIRE(sol.status == Status::success);
+    const double error = reaction_difference(sol.reactions, *row.reference, row.scene->thickness);
+    CAPTURE(error);
+    CAPTURE(sol.diagnostics.error_estimate);
+    CHECK(error <= sol.diagnostics.error_estimate);
+  }
+}
+
+TEST_CASE("sharp status: the no-tension section's tighter CVODE solve runs 16 times above CVODE's floor, or no estimate") {
+  // The pessimism table's cracked semicircle (t/L 0.08, each springing moved out by 2e-4 L): Newton
+  // shooting with BDF at rtol 1e-10 verified itself by a solve at CVODE rtol 6.25e-15, near the floor,
+  // where round-off sets the error: estimate 3.1e-11 for a profile off by 5.3e-11. It is now
+  // unverified, and the message names the tightest rtol it can verify.
+  Scene scene = paper_scene(0.0, 0.08, 2e-4);
+  scene.section = SectionKind::no_tension;
+  const Solution sol = solve(scene, cvode_options(Method::shooting, Integrator::bdf, 1e-10, 41));
+  CHECK(sol.status == Status::unverified);
+  CHECK(sol.message.find("floor") != std::string::npos);
+  CHECK(sol.message.find("2.56e-10") != std::string::npos);
+  CHECK(std::isnan(sol.diagnostics.error_estimate));
 }

@@ -229,16 +229,21 @@ std::optional<IntegrationError> CvodeIntegrator::integrate(double s0, const Matr
     check(CVodeSetStopTime(mem, b), "CVodeSetStopTime");
     std::optional<IntegrationError> failure;
     double reached = a;
-    // One CVode call to tout; a failure is recorded with the arc length CVODE had reached.
-    auto advance = [&](double tout) {
-      sunrealtype t = a;
-      const int flag = CVode(mem, tout, w.y.get(), &t, CV_NORMAL);
+    // One CVode call to tout (task CV_NORMAL or CV_ONE_STEP); a failure is recorded with the arc length
+    // CVODE had reached.
+    auto call = [&](double tout, int task, sunrealtype& t) {
+      const int flag = CVode(mem, tout, w.y.get(), &t, task);
       if (flag < 0) {
         sunrealtype t_now = a;
         check(CVodeGetCurrentTime(mem, &t_now), "CVodeGetCurrentTime");
         failure = IntegrationError{flag, flag_name(flag), t_now, m.last_message};
         return false;
       }
+      return true;
+    };
+    auto advance = [&](double tout) {
+      sunrealtype t = a;
+      if (!call(tout, CV_NORMAL, t)) return false;
       reached = t;
       current = Y;
       return true;
@@ -253,12 +258,7 @@ std::optional<IntegrationError> CvodeIntegrator::integrate(double s0, const Matr
     // error was estimated on). The outputs behind that step are interpolated, as all others.
     if (next < s_out.size() && !too_close_to_step(a, b)) {
       sunrealtype t = a;
-      const int flag = CVode(mem, b, w.y.get(), &t, CV_ONE_STEP);
-      if (flag < 0) {
-        sunrealtype t_now = a;
-        check(CVodeGetCurrentTime(mem, &t_now), "CVodeGetCurrentTime");
-        failure = IntegrationError{flag, flag_name(flag), t_now, m.last_message};
-      }
+      call(b, CV_ONE_STEP, t);
     }
     while (!failure && next < s_out.size() && s_out[next] <= b) {
       if (!advance(s_out[next])) break;
@@ -282,6 +282,17 @@ std::optional<IntegrationError> CvodeIntegrator::integrate(double s0, const Matr
     if (failure) return failure;
   }
   return std::nullopt;
+}
+
+void integrate_field(CvodeIntegrator& integrator, double s0, const StateVector& y0, std::span<const double> s,
+                     double end, std::span<StateVector> out) {
+  std::vector<double> outputs(s.begin(), s.end());
+  if (outputs.empty() || end > outputs.back()) outputs.push_back(end);
+  const auto failure = integrator.integrate(s0, y0, outputs, [&](std::size_t n, const CvodeIntegrator::Matrix& Y) {
+    if (n < out.size()) out[n] = Y.col(0);
+  });
+  if (failure)
+    for (StateVector& y : out) y.setConstant(std::numeric_limits<double>::quiet_NaN());
 }
 
 }  // namespace ogive
