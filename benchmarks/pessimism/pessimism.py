@@ -21,7 +21,8 @@ References, none of them the method measured:
   closed   the closed form (round-off, ~1e-14) on circular arcs with point loads, pins, hinges and
            settlements: the CVODE methods and auto's CVODE rows only
   cracked  the no-tension section: quadrature Newton at rtol 1e-12 for the shooting rows, multiple
-           shooting at rtol 1e-10 for the quadrature rows (at 1e-11 it cannot be verified)
+           shooting (BDF) at rtol 3e-10 for the quadrature rows (below 2.56e-10 its tighter solve would
+           run within 16 times CVODE's floor, and it is unverified)
 
 A row is a false alarm when it says tolerance_not_met with a true error within rtol, a false success
 when it says success with a true error above rtol. The ratio is error_estimate / true error (rows with
@@ -123,7 +124,7 @@ def reaction_error(row, ref, thickness):
         worst = max(worst, abs(f(row[k]) - ref[k]) / max(abs(ref[k]), F / 100))
     for k in ["M_left", "M_right"]:
         worst = max(worst, abs(f(row[k]) - ref[k]) / couple)
-    return worst
+    return worst if not any(math.isnan(f(row[k])) for k in REACTIONS) else math.inf
 
 
 def profile_error(rows, ref_profile, ref_hv, thickness):
@@ -134,6 +135,8 @@ def profile_error(rows, ref_profile, ref_hv, thickness):
     F = max(math.hypot(r["N"], r["shear_force"]) for r in ref_profile)
     M = max(max(abs(r["M"]) for r in ref_profile), max(abs(r["N"]) for r in ref_profile) * thickness / 6)
     for a, r in zip(rows, ref_profile):
+        if any(math.isnan(f(a[k])) for k in STATE):
+            return math.inf  # a station without numbers (max() would drop a NaN)
         worst = max(worst,
                     math.hypot(f(a["Ux"]) - r["Ux"], f(a["Uy"]) - r["Uy"]) / U,
                     abs(f(a["psi"]) - r["psi"]) / psi,
@@ -214,7 +217,7 @@ def main():
     if not a.quick:
         for label, opts in CRACKED:
             by_quadrature = ogive_ref(a.ogive, opts, "quadrature", "1e-12")
-            by_shooting = ogive_ref(a.ogive, opts, "multiple-shooting", "1e-10")
+            by_shooting = ogive_ref(a.ogive, opts, "multiple-shooting", "3e-10")
             crack_rtols = [r for r in rtols if float(r) >= 1e-10]
             rows += measure(a.ogive, label, "cracked", opts, ["quadrature", "shooting"], ["bdf"], crack_rtols,
                             lambda m: by_shooting if m == "quadrature" else by_quadrature)

@@ -136,10 +136,28 @@ double roundoff_bound(const Solution& sol) {
   return std::isfinite(bound) ? bound : kRoundoffProfile * base;
 }
 
+namespace {
+
+// H/V is printed beside the reactions and the profile: its error combines H's and V's (up to twice
+// either one's measure), so it is measured itself, relative to max(|H/V|, 1/100) as H is to F / 100.
+// Where V_left is below F / 100 (a load at the right springing, carried by it alone) H/V is the ratio
+// of two numbers of the order of round-off, and the reactions' measure is the only one.
+double thrust_difference(const Solution& a, const Solution& b) {
+  const Reactions& r = b.reactions;
+  const double F = std::max({std::abs(r.H_left), std::abs(r.V_left), std::abs(r.V_right)});
+  if (!(std::abs(r.V_left) >= F / 100)) return 0;
+  const double d = std::abs(a.H_over_V - b.H_over_V) / std::max(std::abs(b.H_over_V), 0.01);
+  return std::isfinite(d) ? d : std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace
+
 double solution_difference(const Solution& a, const Solution& b) {
   if (!a.field || !b.field) return std::numeric_limits<double>::quiet_NaN();
   const double thickness = b.model->scene().thickness;
-  const double reactions = reaction_difference(a.reactions, b.reactions, thickness);
+  const double thrust = thrust_difference(a, b);
+  if (std::isnan(thrust)) return thrust;
+  const double reactions = std::max(reaction_difference(a.reactions, b.reactions, thickness), thrust);
   if (b.profile.empty()) return reactions;
   return std::max(reactions, profile_difference(a.profile, b.profile, thickness));
 }
@@ -152,6 +170,11 @@ double profile_difference(const std::vector<ArchState>& profile, const std::vect
   for (std::size_t k = 0; k < reference.size(); ++k) {
     const ArchState& a = profile[k];
     const ArchState& r = reference[k];
+    // A station without a number (a non-finite state) is no agreement: std::max would drop its NaN.
+    for (const ArchState* x : {&a, &r})
+      if (!std::isfinite(x->Ux) || !std::isfinite(x->Uy) || !std::isfinite(x->psi) || !std::isfinite(x->N) ||
+          !std::isfinite(x->V) || !std::isfinite(x->M))
+        return kNaN;
     dU = std::max(dU, std::hypot(a.Ux - r.Ux, a.Uy - r.Uy));
     dpsi = std::max(dpsi, std::abs(a.psi - r.psi));
     dF = std::max(dF, std::hypot(a.N - r.N, a.V - r.V));

@@ -236,6 +236,11 @@ void finish_solution(Solution& sol, const BvpSolution& bvp, std::shared_ptr<cons
   sol.message.clear();
 }
 
+double PiecewiseField::piece_end(double s_k) const {
+  const auto next = std::upper_bound(knots_.begin(), knots_.end(), s_k);
+  return next == knots_.end() ? knots_.back() : *next;
+}
+
 void PiecewiseField::sample(std::span<const double> s, std::span<StateVector> out) const {
   std::size_t i = 0;
   const std::size_t K = starts_.size();

@@ -97,6 +97,8 @@ class PiecewiseField : public StateField {
   // The states at s (ascending, inside the piece that starts at s_k) from the piece's start state y_k.
   virtual void propagate(double s_k, const StateVector& y_k, std::span<const double> s,
                          std::span<StateVector> out) const = 0;
+  // The end of the piece that starts at s_k.
+  double piece_end(double s_k) const;
 
  private:
   std::vector<double> knots_;

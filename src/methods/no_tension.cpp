@@ -343,11 +343,7 @@ class NoTensionField final : public PiecewiseField {
                  std::span<StateVector> out) const override {
     const CvodeTolerances tol = cvode_tolerances(options_);
     CvodeIntegrator integrator(system_, options_.integrator, tol.rtol, tol.atol, options_.max_steps, 1, true);
-    const auto failure = integrator.integrate(s_k, y_k, s, [&](std::size_t n, const CvodeIntegrator::Matrix& Y) {
-      out[n] = Y.col(0);
-    });
-    if (failure)
-      for (StateVector& y : out) y.setConstant(std::numeric_limits<double>::quiet_NaN());
+    integrate_field(integrator, s_k, y_k, s, piece_end(s_k), out);
   }
 
  private:

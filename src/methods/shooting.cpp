@@ -117,11 +117,7 @@ class ShootingField final : public PiecewiseField {
     const CvodeTolerances tol = cvode_tolerances(options_);
     CvodeIntegrator integrator(system_, options_.integrator, tol.rtol, tol.atol, options_.max_steps, 1,
                                options_.restart_at_breakpoints);
-    const auto failure = integrator.integrate(s_k, y_k, s, [&](std::size_t n, const CvodeIntegrator::Matrix& Y) {
-      out[n] = Y.col(0);
-    });
-    if (failure)  // Marked, never plausible: the caller sees non-finite states.
-      for (StateVector& y : out) y.setConstant(std::numeric_limits<double>::quiet_NaN());
+    integrate_field(integrator, s_k, y_k, s, piece_end(s_k), out);
   }
 
  private:

@@ -42,9 +42,12 @@ enum class Status {
   singular_system,     // the boundary-value system is singular to working precision
   ill_conditioned,     // solved, but condition * unit round-off exceeds rtol: digits may be lost
   tolerance_not_met,   // solved, but the error estimate, or the boundary or equilibrium residual, exceeds rtol
+                       // (CVODE near its floor, rtol below 2.56e-12 with Adams or 2.56e-10 with BDF: the
+                       // tightest verifying solve cannot confirm that the errors fall; the message says so)
   unverified,          // solved by CVODE without an error estimate: Options::verify was off, or rtol lies
                        // below what a second, 16 times tighter CVODE solve can reach (kCvodeRtolFloor),
-                       // or (no-tension section) that second solve did not converge
+                       // or (no-tension section) that second solve did not converge or would run within 16
+                       // times CVODE's floor (rtol below 2.56e-12 with Adams, 2.56e-10 with BDF)
   not_converged,       // no-tension section: Newton did not reach the boundary conditions (the iterations
                        // are in Diagnostics::newton_iterations, the message says where it stopped)
   inadmissible,        // no-tension section: no state keeps the resultant inside every section (the arch
@@ -112,9 +115,9 @@ struct Diagnostics {
   double boundary_residual = std::numeric_limits<double>::quiet_NaN();
   double equilibrium_residual = std::numeric_limits<double>::quiet_NaN(); // relative to the domain's load
   // Estimated relative error of the printed numbers, never smaller than condition_estimate times
-  // round-off. CVODE methods (verified): the difference between a solve at rtol and one at rtol / 16, of
-  // the reactions (reaction_difference) and, with a profile, profile_difference; the tighter solution is the one returned, so its own error is smaller still
-  // whenever the second solve is at least twice as accurate as the first. The quadrature method: the
+  // round-off. CVODE methods (verified): the differences between solves at rtol, rtol / 16 and tighter
+  // (solution_difference: the reactions, H/V and, with a profile, profile_difference; solve.cpp,
+  // solve_verified, says how they are combined and which solve is returned). The quadrature method: the
   // same difference between its last two degrees (quadrature.hpp). The closed form: its round-off
   // bound alone. NaN when not estimated (status unverified, or a failed solve).
   double error_estimate = std::numeric_limits<double>::quiet_NaN();
@@ -194,8 +197,9 @@ inline constexpr double kRoundoffProfile = 4;
 // (benchmarks/pessimism/calibration.py, seed 1) its error at rtol 1e-12 that the three verifying solves'
 // differences did not see reached the closed form's bound itself (single shooting with Adams: 1.0 of
 // it), where the closed form's own stays below 1 / 2.8 of it; its own factor keeps the margin the
-// reactions' bound has over the closed form's worst (1.2). (On thin pointed arches, seed 2, one such
-// row reached 1.9 times the closed form's bound: not covered.)
+// reactions' bound has over the closed form's worst (1.2). (On a thin pointed arch, seed 2, one row
+// reached 1.9 times the closed form's bound: the tightest solve, held by CVODE's floor, returned on a
+// difference that round-off made small; solve.cpp no longer returns it there.)
 inline constexpr double kRoundoffProfileIntegrated = 1.25 * kRoundoffProfile;
 // The quadrature's (elastic section) is of its own arithmetic, whose round-off has two sources that add
 // rather than multiply: the boundary-value solve (condition x eps in the springing's forces; the solved
@@ -211,8 +215,9 @@ inline constexpr double kRoundoffProfileIntegrated = 1.25 * kRoundoffProfile;
 inline constexpr double kRoundoffQuadrature = 10;
 double roundoff_bound(const Solution& solution);
 
-// The larger of the relative differences of the reactions and of the profiles (when both carry one):
-// the error estimate of a solution a against a tighter one b. NaN when either has no field.
+// The largest of the relative differences of the reactions, of H/V (relative to max(|H/V|, 1/100)) and
+// of the profiles (when both carry one): the error estimate of a solution a against a tighter one b. NaN
+// when either has no field.
 double solution_difference(const Solution& a, const Solution& b);
 
 // The error measure of a profile against a reference at the same stations: the largest difference of

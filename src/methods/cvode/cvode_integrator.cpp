@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numeric>
 #include <stdexcept>
@@ -185,6 +186,16 @@ CvodeIntegrator::~CvodeIntegrator() {
   if (impl_ && impl_->workspace) return_workspace(std::move(impl_->workspace));
 }
 
+namespace {
+
+// Whether t lies too close to t0 for CVODE to take a step to it: CVODE returns CV_TOO_CLOSE when
+// |t - t0| < 2 uround max(|t0|, |t|); a margin of 2 on that.
+bool too_close_to_step(double t0, double t) {
+  return std::abs(t - t0) <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(t0), std::abs(t));
+}
+
+}  // namespace
+
 std::optional<IntegrationError> CvodeIntegrator::integrate(double s0, const Matrix& Y0,
                                                            std::span<const double> s_out,
                                                            const Observer& observer) {
@@ -218,26 +229,44 @@ std::optional<IntegrationError> CvodeIntegrator::integrate(double s0, const Matr
     check(CVodeSetStopTime(mem, b), "CVodeSetStopTime");
     std::optional<IntegrationError> failure;
     double reached = a;
-    // One CVode call to tout; a failure is recorded with the arc length CVODE had reached.
-    auto advance = [&](double tout) {
-      sunrealtype t = a;
-      const int flag = CVode(mem, tout, w.y.get(), &t, CV_NORMAL);
+    // One CVode call to tout (task CV_NORMAL or CV_ONE_STEP); a failure is recorded with the arc length
+    // CVODE had reached.
+    auto call = [&](double tout, int task, sunrealtype& t) {
+      const int flag = CVode(mem, tout, w.y.get(), &t, task);
       if (flag < 0) {
         sunrealtype t_now = a;
         check(CVodeGetCurrentTime(mem, &t_now), "CVodeGetCurrentTime");
         failure = IntegrationError{flag, flag_name(flag), t_now, m.last_message};
         return false;
       }
+      return true;
+    };
+    auto advance = [&](double tout) {
+      sunrealtype t = a;
+      if (!call(tout, CV_NORMAL, t)) return false;
       reached = t;
       current = Y;
       return true;
     };
-    while (next < s_out.size() && s_out[next] <= b) {
+    // An output within a few ulps of the span's start (a station that rounds just past a segment's knot
+    // or a breakpoint) is the start's state: CVODE refuses a tout that close (CV_TOO_CLOSE, within 2
+    // round-offs of t0), and the state cannot change by more than round-off over that distance.
+    while (next < s_out.size() && s_out[next] <= b && too_close_to_step(a, s_out[next])) observer(next++, current);
+    // The first step toward the span's end, whatever the outputs: CVODE sizes its first step from the
+    // distance to the first tout, so a first output nearer the start would change every later step, and a
+    // profile's numbers with the number of stations asked (the printed profile would not be the one its
+    // error was estimated on). The outputs behind that step are interpolated, as all others.
+    if (next < s_out.size() && !too_close_to_step(a, b)) {
+      sunrealtype t = a;
+      call(b, CV_ONE_STEP, t);
+    }
+    while (!failure && next < s_out.size() && s_out[next] <= b) {
       if (!advance(s_out[next])) break;
       observer(next++, current);
     }
-    // No output left in this span: run to the breakpoint so that the next span starts there.
-    if (!failure && reached < b) advance(b);
+    // No output left in this span: run to the breakpoint so that the next span starts there (a span too
+    // short to step, an output just past a breakpoint, carries its start's state).
+    if (!failure && reached < b && !too_close_to_step(reached, b)) advance(b);
     // Counters restart with every CVodeReInit: collect them span by span.
     long steps = 0, rhs = 0, etf = 0, jacs = 0, ncf = 0;
     check(CVodeGetNumSteps(mem, &steps), "CVodeGetNumSteps");
@@ -253,6 +282,17 @@ std::optional<IntegrationError> CvodeIntegrator::integrate(double s0, const Matr
     if (failure) return failure;
   }
   return std::nullopt;
+}
+
+void integrate_field(CvodeIntegrator& integrator, double s0, const StateVector& y0, std::span<const double> s,
+                     double end, std::span<StateVector> out) {
+  std::vector<double> outputs(s.begin(), s.end());
+  if (outputs.empty() || end > outputs.back()) outputs.push_back(end);
+  const auto failure = integrator.integrate(s0, y0, outputs, [&](std::size_t n, const CvodeIntegrator::Matrix& Y) {
+    if (n < out.size()) out[n] = Y.col(0);
+  });
+  if (failure)
+    for (StateVector& y : out) y.setConstant(std::numeric_limits<double>::quiet_NaN());
 }
 
 }  // namespace ogive

@@ -97,4 +97,11 @@ class CvodeIntegrator {
   IntegratorStats stats_;
 };
 
+// A field's states at the ascending outputs s (>= s0) from y0 at s0, integrated on to `end` (a piece's
+// end, >= s.back()): CVODE sizes its steps toward the end of the span it is given, so every output is
+// the same whichever others are asked (a printed profile is the one whose error was estimated at other
+// stations). Non-finite states, never plausible ones, where the integration fails.
+void integrate_field(CvodeIntegrator& integrator, double s0, const StateVector& y0, std::span<const double> s,
+                     double end, std::span<StateVector> out);
+
 }  // namespace ogive
