@@ -44,13 +44,23 @@ class Scan {
 
   Probe probe(double s, const StateVector& y) const {
     const double L = model_.scales().length;
-    const CurvePoint p = model_.curve().at(s * L);
-    const double c = std::cos(p.theta), sn = std::sin(p.theta);
+    ArchState state = model_.to_physical(s, y);
+    const double c = std::cos(state.theta), sn = std::sin(state.theta);
     StateVector dy;
     model_.derivative(c, sn, y.data(), dy.data(), model_.load(s), model_.horizontal_load(s));
     const double N = c * y[kFx] + sn * y[kFy], V = -sn * y[kFx] + c * y[kFy];
-    const double dN = c * dy[kFx] + sn * dy[kFy] + p.kappa * L * V;
-    return {s, model_.to_physical(s, y), dy[kM] * N - y[kM] * dN};
+    const double dN = c * dy[kFx] + sn * dy[kFy] + curvature(s * L) * L * V;
+    return {s, std::move(state), dy[kM] * N - y[kM] * dN};
+  }
+
+  // 1/m at arc length x (m, inside a piece): a circular arc's own constant, read without evaluating the
+  // curve's point there (the ArchState has done that once).
+  double curvature(double x) const {
+    const auto arcs = model_.curve().arcs();
+    if (arcs.empty()) return model_.curve().at(x).kappa;
+    const auto next = std::upper_bound(arcs.begin(), arcs.end(), x,
+                                       [](double v, const CircularArc& a) { return v < a.s_start; });
+    return (next == arcs.begin() ? arcs.front() : *(next - 1)).kappa;
   }
 
   Probe probe(double s) const {
