@@ -6,12 +6,12 @@
 namespace ogive {
 namespace {
 
-// One point of the domain (scaled arc length s): its state, and the slope M' N - M N' (scaled), whose
-// sign is that of d(M/N)/ds.
+// One point of the domain (scaled arc length s): its state, the slope M' N - M N' (scaled), whose sign
+// is that of d(M/N)/ds, and N' (scaled).
 struct Probe {
   double s = 0;
   ArchState state;
-  double slope = 0;
+  double slope = 0, dN = 0;
 };
 
 // The field's smooth pieces and their probes.
@@ -50,7 +50,7 @@ class Scan {
     model_.derivative(c, sn, y.data(), dy.data(), model_.load(s), model_.horizontal_load(s));
     const double N = c * y[kFx] + sn * y[kFy], V = -sn * y[kFx] + c * y[kFy];
     const double dN = c * dy[kFx] + sn * dy[kFy] + curvature(s * L) * L * V;
-    return {s, std::move(state), dy[kM] * N - y[kM] * dN};
+    return {s, std::move(state), dy[kM] * N - y[kM] * dN, dN};
   }
 
   // 1/m at arc length x (m, inside a piece): a circular arc's own constant, read without evaluating the
@@ -96,10 +96,11 @@ struct Largest {
   }
 };
 
-// The zero of the slope between two probes of opposite signs, to `tol` in s: Brent's method (inverse
-// quadratic interpolation or the secant where it steps well inside the bracket, else bisection).
-void refine(const Scan& scan, const Probe& lo, const Probe& hi, double tol, Largest& largest) {
-  double a = lo.s, b = hi.s, fa = lo.slope, fb = hi.slope;
+// The zero of f (the slope, or N') between two probes where it has opposite signs, to `tol` in s: Brent's
+// method (inverse quadratic interpolation or the secant where it steps well inside the bracket, else
+// bisection). Every probe is seen by `largest`.
+void refine(const Scan& scan, const Probe& lo, const Probe& hi, double Probe::*f, double tol, Largest& largest) {
+  double a = lo.s, b = hi.s, fa = lo.*f, fb = hi.*f;
   double c = a, fc = fa, d = b - a, e = d;
   for (int iteration = 0; iteration < 100 && largest.compressed; ++iteration) {
     if ((fb > 0) == (fc > 0)) {
@@ -144,7 +145,7 @@ void refine(const Scan& scan, const Probe& lo, const Probe& hi, double tol, Larg
     b += std::abs(d) > 0.5 * tol ? d : std::copysign(0.5 * tol, half);
     const Probe q = scan.probe(b);
     largest.see(q.state);
-    fb = q.slope;
+    fb = q.*f;
   }
 }
 
@@ -173,10 +174,15 @@ ThrustLineSummary summarize_thrust_line(const Solution& sol) {
   const double tol = 1e-9 * (sol.model->half() ? 2 * S : S);
   // Neighbours of one piece (a piece's last probe and the next one's first share no interval: their s
   // differ by the two insides only, and the slope jumps there).
-  for (std::size_t i = 0; i + 1 < probes.size(); ++i)
-    if (probes[i + 1].s - probes[i].s > 1e-12 * S && (probes[i].slope < 0) != (probes[i + 1].slope < 0) &&
-        probes[i].slope != 0 && probes[i + 1].slope != 0)
-      refine(scan, probes[i], probes[i + 1], tol, largest);
+  // Besides the extrema of e, the largest N where N' falls through zero: a normal force that turns
+  // tensile between two bracketing points would leave e's slope without a sign change.
+  for (std::size_t i = 0; i + 1 < probes.size(); ++i) {
+    const Probe &p = probes[i], &q = probes[i + 1];
+    if (q.s - p.s <= 1e-12 * S) continue;
+    if ((p.slope < 0) != (q.slope < 0) && p.slope != 0 && q.slope != 0)
+      refine(scan, p, q, &Probe::slope, tol, largest);
+    if (p.dN > 0 && q.dN < 0) refine(scan, p, q, &Probe::dN, tol, largest);
+  }
   if (!largest.compressed) return out;  // N reached zero between the bracketing points
   out.max_abs_e = largest.e;
   out.max_abs_e_at = largest.at;

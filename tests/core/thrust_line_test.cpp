@@ -1,8 +1,8 @@
 // The thrust line's summary (include/ogive/core/thrust_line.hpp) against a dense resampling of the same
 // field: 10 001 stations over the whole arch, the best refined by golden-section search between its
 // neighbours to 1e-12 of the arch's length. Over every kind of piece the summary meets: circular arcs,
-// a pointed crown, point loads, pins and a hinge, a fill, a horizontal acceleration, the no-tension
-// section, CVODE's and the quadrature's fields, and an arch whose crown is in tension (no bound).
+// a pointed crown, point loads (upward ones too), pins and a hinge, a fill, a horizontal acceleration,
+// the no-tension section, CVODE's and the quadrature's fields, and arches in tension in part (no bound).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -97,6 +97,8 @@ std::vector<Case> cases() {
   out.push_back({"point load", with_point_load(paper_scene(0.25), 2e4, 0.3)});
   out.push_back({"point load at the crown", with_point_load(paper_scene(0.5, 0.1), 5e4, 0.5)});
   out.push_back({"two point loads", with_point_load(with_point_load(paper_scene(0.0, 0.15), 1e4, 0.2), 3e4, 0.7)});
+  out.push_back({"upward point load", with_point_load(paper_scene(0.25), -8e4, 0.3)});
+  out.push_back({"upward point load, tension before it", with_point_load(paper_scene(0.25), -1.1e5, 0.3)});
   out.push_back({"pinned", pinned(paper_scene(0.5, 0.1), false)});
   out.push_back({"three hinges", pinned(paper_scene(0.5, 0.1), true)});
   out.push_back({"three hinges, point load", with_point_load(pinned(paper_scene(0.0, 0.12), true), 1e4, 0.25)});

@@ -27,7 +27,9 @@ struct ThrustLineSummary {
 //   d(M/N)/ds ~ M' N - M N',  M' = -V,  N' = kappa V + c Fx' + sn Fy'  (the model's equations).
 // That slope is bracketed at points at most kScanTurn of tangent turn apart (at least kScanIntervals
 // intervals a piece) and each sign change refined to 1e-9 of the arch's length by Brent's method
-// (interpolation safeguarded by bisection). Every value compared is a true |e| of the field, so the printed maximum is never
+// (interpolation safeguarded by bisection); so is each fall of N' through zero (the largest N, which
+// must be a compression too: between bracketing points e's slope need not change sign where N turns
+// tensile). Every value compared is a true |e| of the field, so the printed maximum is never
 // above the truth. Over a half model the left half is summarised (the right is its mirror image).
 ThrustLineSummary summarize_thrust_line(const Solution& solution);
 
