@@ -172,10 +172,10 @@ ThrustLineSummary summarize_thrust_line(const Solution& sol) {
   if (!largest.compressed) return out;
   const double S = sol.model->length();
   const double tol = 1e-9 * (sol.model->half() ? 2 * S : S);
-  // Neighbours of one piece (a piece's last probe and the next one's first share no interval: their s
-  // differ by the two insides only, and the slope jumps there).
-  // Besides the extrema of e, the largest N where N' falls through zero: a normal force that turns
-  // tensile between two bracketing points would leave e's slope without a sign change.
+  // Each interval between neighbours of one piece (a piece's last probe and the next one's first are
+  // the two insides apart, across a jump): the extrema of e where the slope changes sign, and the largest
+  // N where N' falls through zero (a normal force that turns tensile between two bracketing points need
+  // not change the sign of e's slope).
   for (std::size_t i = 0; i + 1 < probes.size(); ++i) {
     const Probe &p = probes[i], &q = probes[i + 1];
     if (q.s - p.s <= 1e-12 * S) continue;
