@@ -100,6 +100,8 @@ std::vector<Case> cases() {
   out.push_back({"point load at the crown", with_point_load(paper_scene(0.5, 0.1), 5e4, 0.5)});
   out.push_back({"two point loads", with_point_load(with_point_load(paper_scene(0.0, 0.15), 1e4, 0.2), 3e4, 0.7)});
   out.push_back({"upward point load", with_point_load(paper_scene(0.25), -8e4, 0.3)});
+  // The peak at the load's one-sided limit, away from 129 stations' best (which the old search refined).
+  out.push_back({"upward point load, peak at the load", with_point_load(paper_scene(0.7), -5e4, 0.2)});
   out.push_back({"upward point load, tension before it", with_point_load(paper_scene(0.25), -1.1e5, 0.3)});
   out.push_back({"pinned", pinned(paper_scene(0.5, 0.1), false)});
   out.push_back({"three hinges", pinned(paper_scene(0.5, 0.1), true)});
