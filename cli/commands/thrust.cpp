@@ -34,13 +34,13 @@ Columns thrust_columns() {
        "H_right", "V_right", "M_right", "max_thrust_eccentricity", "max_thrust_eccentricity_at", "thrust_in_kern",
        "thrust_in_section", "steps", "rhs_evaluations", "segments", "newton_iterations", "condition_estimate",
        "error_estimate", "boundary_residual", "equilibrium_residual", "message"},
-      // The thrust line's summary is asked for by name (or --all-columns): it samples the whole field,
-      // about 50 times the cost of the reactions in closed form, which a sweep of 10^6 scenes would feel.
+      // The thrust line's summary is asked for by name (or --all-columns): it scans the whole field,
+      // a few times the cost of the reactions in closed form, which a sweep of 10^6 scenes would feel.
       {"method", "status", "domain", "H", "V", "H_over_V", "H_left", "V_left", "M_left", "H_right", "V_right",
        "M_right", "error_estimate", "message"});
 }
 
-// Stations at which a verified solve checks the profile when the thrust line is summarised.
+// The profile's stations when the thrust line is summarised (unprinted: the estimate covers the field).
 constexpr int kSummaryStations = 65;
 
 // "half" or "whole": the model a solution used (empty without one).
@@ -82,9 +82,13 @@ int run_thrust(ThrustOptions& to, const CLI::App& cmd, std::ostream& out) {
   columns.select(to.columns, plan.varying_inputs(), sweep.varying);
   const bool summary = columns.selected("max_thrust_eccentricity") || columns.selected("max_thrust_eccentricity_at") ||
                        columns.selected("thrust_in_kern") || columns.selected("thrust_in_section");
-  // The summary prints eccentricities: their accuracy must be part of the error estimate.
+  // The summary prints eccentricities: their accuracy must be part of the error estimate (the profile
+  // itself is not printed).
   if (summary)
-    for (Options& o : sweep.combinations) o.stations = kSummaryStations;
+    for (Options& o : sweep.combinations) {
+      o.stations = kSummaryStations;
+      o.unprinted_profile = true;
+    }
   // No-tension scenes are traced in order, each from the previous one (continuation): one thread.
   const bool continued = plan.no_tension();
   std::vector<Solution> previous(sweep.combinations.size());

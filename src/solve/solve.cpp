@@ -17,6 +17,7 @@
 #include "methods/no_tension.hpp"
 #include "methods/quadrature.hpp"
 #include "methods/shooting.hpp"
+#include "ogive/core/thrust_line.hpp"
 
 namespace ogive {
 
@@ -46,7 +47,10 @@ Solution solve_once(const std::shared_ptr<const ArchModel>& model, const Options
   }
   Solution sol = method == Method::closed_form ? solve_closed_form(model, options)
                                                : solve_shooting(model, options, segments);
-  if (sol.field && options.stations > 0) sample_profile(sol, kVerificationStations);
+  if (sol.field && options.stations > 0) {
+    if (sol.method == Method::closed_form && options.unprinted_profile) sol.profile = field_scan(sol);
+    else sample_profile(sol, kVerificationStations);
+  }
   return sol;
 }
 
@@ -222,8 +226,10 @@ Solution solve_with(const std::shared_ptr<const ArchModel>& model, const Options
     sol.message = "stepped across the breakpoints (--ignore-breakpoints): the error estimate does not hold across "
                   "a jump of curvature or load";
   }
-  // The profile was compared at kVerificationStations; the printed one has the stations asked for.
-  if (sol.field && options.stations > 0 && options.stations != kVerificationStations)
+  // The profile was compared at kVerificationStations; the printed one has the stations asked for (an
+  // unprinted one is dropped: its work is done).
+  if (sol.field && options.stations > 0 && options.unprinted_profile) sol.profile.clear();
+  else if (sol.field && options.stations > 0 && options.stations != kVerificationStations)
     sample_profile(sol, options.stations);
   return sol;
 }
@@ -499,7 +505,8 @@ Solution solve_no_tension_scene(const Scene& scene, const Options& options, cons
     set_work(sol.diagnostics, spent);
     judge_solution(sol, options.rtol);
     const bool at_floor = name_the_floor(sol, options.rtol);
-    if (sol.field && options.stations > 0 && static_cast<int>(sol.profile.size()) != options.stations)
+    if (sol.field && options.stations > 0 && options.unprinted_profile) sol.profile.clear();
+    else if (sol.field && options.stations > 0 && static_cast<int>(sol.profile.size()) != options.stations)
       sample_profile(sol, options.stations);
     if (best.status == Status::not_applicable || better(sol, best)) best = std::move(sol);
     if (best.ok() || at_floor || best.status == Status::inadmissible) break;

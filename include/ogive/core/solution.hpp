@@ -79,6 +79,11 @@ struct Options {
   // Profile stations over the whole arch, springing to springing (0: none, else >= 2). With a profile,
   // its error is part of the estimate, compared at kVerificationStations stations whatever this number.
   int stations = 0;
+  // The profile is asked for only so that the estimate covers the whole field, which a summary then reads
+  // (summarize_thrust_line), and is not printed. The closed form, whose estimate is its round-off bound,
+  // then takes the field's largest force and couple from field_scan's few states a piece instead of
+  // kVerificationStations stations, and every method returns no profile.
+  bool unprinted_profile = false;
   // Estimate the global error of a CVODE solve by a second solve at rtol / 16 (about 2.5x the time):
   // CVODE controls local errors only, and the stability map (docs/methods.md) measured unverified solves at up
   // to 67 rtol (single shooting, a rough survey) and 37 rtol (BDF). Off (for benchmarks of the raw

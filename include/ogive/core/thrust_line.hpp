@@ -5,6 +5,7 @@
 #pragma once
 
 #include <limits>
+#include <vector>
 
 #include "ogive/core/solution.hpp"
 
@@ -20,11 +21,24 @@ struct ThrustLineSummary {
   bool ok = false;          // false when the solution has no field to summarise
 };
 
-// From the solution's field: `stations` equally spaced stations over the whole arch (odd, so that the
-// crown is one), then the largest |e| refined by golden-section search between the neighbours of the
-// best station, to 1e-9 of the arch's length in position (e is smooth there, so its value is then
-// exact to the field's accuracy). Its error is the profile's (profile_difference measures e in units
-// of the kern): solve with Options::stations > 0 so that verification covers it.
-ThrustLineSummary summarize_thrust_line(const Solution& solution, int stations = 129);
+// Where the field is not smooth (the domain's ends, the curve's breakpoints, point loads, a hinge, a live
+// load's ends, a fill's breaks) it is cut into pieces; on each, e = 600 M / (N t) is smooth, and its
+// extrema are the piece's ends (each side's own limit) and the zeros of
+//   d(M/N)/ds ~ M' N - M N',  M' = -V,  N' = kappa V + c Fx' + sn Fy'  (the model's equations).
+// That slope is bracketed at points at most kScanTurn of tangent turn apart (at least kScanIntervals
+// intervals a piece) and each sign change refined to 1e-9 of the arch's length by Brent's method
+// (interpolation safeguarded by bisection); so is each fall of N' through zero (the largest N, which
+// must be a compression too: between bracketing points e's slope need not change sign where N turns
+// tensile). Every value compared is a true |e| of the field, so the printed maximum is never
+// above the truth. Over a half model the left half is summarised (the right is its mirror image).
+ThrustLineSummary summarize_thrust_line(const Solution& solution);
+
+// The states at the scan's bracketing points (the pieces' ends and the points between): a few dozen
+// states that show the field's size (its largest force and couple) without sampling it densely.
+std::vector<ArchState> field_scan(const Solution& solution);
+
+// The bracketing points' spacing in tangent turn, and the fewest intervals a piece is cut into.
+inline constexpr double kScanTurn = 3.14159265358979323846 / 24;
+inline constexpr int kScanIntervals = 4;
 
 }  // namespace ogive
