@@ -1,6 +1,7 @@
 // The whole public API of ogive in one include: a scene (the arch's geometry, section, material, loads
 // and supports), solve() with its Options, the Solution with its field and summary, the limit analysis,
-// and the CSV and SVG writers. Each header below says its units, invariants and what each status means.
+// the arch on spreading walls, and the CSV and SVG writers. Each header below says its units, invariants
+// and what each status means.
 #pragma once
 
 #include "ogive/version.hpp"
@@ -17,6 +18,7 @@
 #include "ogive/core/thrust_line.hpp"
 
 #include "ogive/limit/limit.hpp"
+#include "ogive/limit/spreading.hpp"
 #include "ogive/solve/solve.hpp"
 
 #include "ogive/output/csv.hpp"
