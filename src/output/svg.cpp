@@ -358,23 +358,17 @@ std::string title_svg(const Scene& scene, const TitleText& t, const DrawingOptio
   line(title, {axis_x, legend_y + 0.3 * font}, {axis_x + 2 * font, legend_y + 0.3 * font}, axis_style(frame.stroke));
   text(title, {axis_x + 2.5 * font, legend_y}, 0.8 * font, "start", fmt::format("axis; section t = {:g} m", scene.thickness));
   y = legend_y;
-  for (const ExtraThrustLine& extra : options.extra_lines) {
+  // One more legend line below the last: a stroke in `style`, then its label.
+  auto legend_line = [&](const std::string& style, const std::string& label) {
     y -= 1.3 * font;
-    line(title, {x0, y + 0.3 * font}, {x0 + 2 * font, y + 0.3 * font}, extra_line_style(extra, frame.stroke));
-    text(title, {x0 + 2.5 * font, y}, 0.8 * font, "start", extra.label);
-  }
-  for (const CollapseMechanism& m : options.mechanisms) {
-    y -= 1.3 * font;
-    line(title, {x0, y + 0.3 * font}, {x0 + 2 * font, y + 0.3 * font},
-         fmt::format("stroke=\"{}\" stroke-width=\"{}\"", m.colour, 3 * frame.stroke));
-    text(title, {x0 + 2.5 * font, y}, 0.8 * font, "start", m.label);
-  }
-  for (const SpreadStageDrawing& stage : options.spread_stages) {
-    y -= 1.3 * font;
-    line(title, {x0, y + 0.3 * font}, {x0 + 2 * font, y + 0.3 * font},
-         fmt::format("stroke=\"{}\" stroke-width=\"{}\"", stage.colour, 3 * frame.stroke));
-    text(title, {x0 + 2.5 * font, y}, 0.8 * font, "start", stage.label);
-  }
+    line(title, {x0, y + 0.3 * font}, {x0 + 2 * font, y + 0.3 * font}, style);
+    text(title, {x0 + 2.5 * font, y}, 0.8 * font, "start", label);
+  };
+  for (const ExtraThrustLine& extra : options.extra_lines) legend_line(extra_line_style(extra, frame.stroke), extra.label);
+  for (const CollapseMechanism& m : options.mechanisms)
+    legend_line(fmt::format("stroke=\"{}\" stroke-width=\"{}\"", m.colour, 3 * frame.stroke), m.label);
+  for (const SpreadStageDrawing& stage : options.spread_stages)
+    legend_line(fmt::format("stroke=\"{}\" stroke-width=\"{}\"", stage.colour, 3 * frame.stroke), stage.label);
   if (!t.load_scale.empty()) text(title, {x0, y - 1.3 * font}, 0.8 * font, "start", t.load_scale);
   title += "</g>\n";
   return title;
