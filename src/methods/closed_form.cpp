@@ -125,13 +125,20 @@ struct ArcPiece {
   double c0, sn0, c1, sn1;
 };
 
+// The tangent's angle at distance ds (scaled) from the arc's start.
+double tangent_angle(const ArchModel& model, const CircularArc& arc, double ds) {
+  return arc.theta_start + arc.kappa * ds * model.scales().length;
+}
+
+// exp(A8 l) of a piece of the arc of length l (scaled), with the model's compliances and loads.
+ArcMatrix arc_exponential(const ArchModel& model, const CircularArc& arc, double l) {
+  return ogive::arc_exponential(arc.kappa * model.scales().length, l, model.a_N(), model.a_V(), model.self_weight(),
+                                model.acceleration() * model.self_weight());
+}
+
 ArcPiece arc_piece(const ArchModel& model, const CircularArc& arc, double ds0, double ds1) {
-  const double L = model.scales().length;
-  const double th0 = arc.theta_start + arc.kappa * ds0 * L;
-  const double th1 = arc.theta_start + arc.kappa * ds1 * L;
-  return {arc_exponential(arc.kappa * L, ds1 - ds0, model.a_N(), model.a_V(), model.self_weight(),
-                          model.acceleration() * model.self_weight()),
-          std::cos(th0), std::sin(th0), std::cos(th1), std::sin(th1)};
+  const double th0 = tangent_angle(model, arc, ds0), th1 = tangent_angle(model, arc, ds1);
+  return {arc_exponential(model, arc, ds1 - ds0), std::cos(th0), std::sin(th0), std::cos(th1), std::sin(th1)};
 }
 
 // Transfer over [ds0, ds1] of one arc.
@@ -184,14 +191,13 @@ class ClosedFormField final : public PiecewiseField {
     std::size_t i = 0;
     if (arc != arcs.end()) {
       const double a0 = arc->s_start / L, a1 = (arc->s_start + arc->length) / L;
-      const double th0 = arc->theta_start + arc->kappa * (s_k - a0) * L;
+      const double th0 = tangent_angle(model, *arc, s_k - a0);
       const double c0 = std::cos(th0), sn0 = std::sin(th0);
       Eigen::Matrix<double, 8, 1> local;
       local << to_local(c0, sn0) * y_k, c0, sn0;
       for (; i < s.size() && s[i] <= a1; ++i) {
-        const double th1 = arc->theta_start + arc->kappa * (s[i] - a0) * L;
-        const ArcMatrix E = arc_exponential(arc->kappa * L, s[i] - s_k, model.a_N(), model.a_V(), model.self_weight(),
-                                            model.acceleration() * model.self_weight());
+        const double th1 = tangent_angle(model, *arc, s[i] - a0);
+        const ArcMatrix E = arc_exponential(model, *arc, s[i] - s_k);
         out[i] = s[i] > s_k ? to_local(std::cos(th1), std::sin(th1)).transpose() * (E * local).head<6>() : y_k;
       }
     }
