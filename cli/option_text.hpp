@@ -2,6 +2,7 @@
 // of the options, suggestions for misspelt names, and CLI11 validators for numeric options.
 #pragma once
 
+#include <array>
 #include <map>
 #include <span>
 #include <string>
@@ -59,6 +60,18 @@ struct Inapplicable {
 };
 void hide_inapplicable(CLI::App& cmd, std::span<const Inapplicable> options);
 void refuse_inapplicable(const CLI::App& cmd, const char* command, std::span<const Inapplicable> options);
+
+// The scene options that move the springings, each with the same reason: for an analysis that moves them
+// itself (spread, and draw's spreading stage).
+constexpr std::array<Inapplicable, 7> springing_movements(const char* why) {
+  return {{{"--support-displacement-ratio", why},
+           {"--left-spread-ratio", why},
+           {"--right-spread-ratio", why},
+           {"--left-settlement-ratio", why},
+           {"--right-settlement-ratio", why},
+           {"--left-rotation", why},
+           {"--right-rotation", why}}};
+}
 
 // CLI11 would read "" as 0 and saturate huge integers: numeric options must be what parse_number
 // accepts (the whole text, finite), and counts whole numbers within what an int holds.

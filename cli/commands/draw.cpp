@@ -72,15 +72,8 @@ void add_limit_drawing(const Scene& scene, DrawingOptions& drawing) {
 
 // The options a spreading stage does not take: it starts from the arch at d = 0, both springings moving
 // apart, vertical loads only.
-constexpr const char* kStageMovesWhy = "the rigid voussoirs' springings move apart from d = 0";
+constexpr auto kStageMoves = springing_movements("the rigid voussoirs' springings move apart from d = 0");
 constexpr Inapplicable kNotForSpreadStage[] = {
-    {"--support-displacement-ratio", kStageMovesWhy},
-    {"--left-spread-ratio", kStageMovesWhy},
-    {"--right-spread-ratio", kStageMovesWhy},
-    {"--left-settlement-ratio", kStageMovesWhy},
-    {"--right-settlement-ratio", kStageMovesWhy},
-    {"--left-rotation", kStageMovesWhy},
-    {"--right-rotation", kStageMovesWhy},
     {"--horizontal-acceleration", "the mechanism of rigid voussoirs carries vertical loads only"},
 };
 
@@ -264,6 +257,7 @@ int run_draw(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
   if (to.spread_stage) {
     if (!(*to.spread_stage >= 0 && *to.spread_stage <= 1))
       throw UsageError(fmt::format("--spread-stage: must lie in [0, 1] (0: d = 0, 1: collapse), got {}", *to.spread_stage));
+    refuse_inapplicable(cmd, "draw --spread-stage", kStageMoves);
     refuse_inapplicable(cmd, "draw --spread-stage", kNotForSpreadStage);
   }
   const ScenePlan plan(d.scene, cmd);

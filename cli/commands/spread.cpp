@@ -62,16 +62,10 @@ struct SpreadCommandOptions {
   ColumnText columns;
 };
 
-// The scene options whose values spread sets itself: refused when given, and left out of its --help.
-constexpr const char* kSpreadMovesWhy = "spread moves the springings itself: --moving chooses which";
+// The scene options whose values spread sets itself, and those it cannot take: refused when given, and
+// left out of its --help.
+constexpr auto kSpreadMoves = springing_movements("spread moves the springings itself: --moving chooses which");
 constexpr Inapplicable kNotForSpread[] = {
-    {"--support-displacement-ratio", kSpreadMovesWhy},
-    {"--left-spread-ratio", kSpreadMovesWhy},
-    {"--right-spread-ratio", kSpreadMovesWhy},
-    {"--left-settlement-ratio", kSpreadMovesWhy},
-    {"--right-settlement-ratio", kSpreadMovesWhy},
-    {"--left-rotation", kSpreadMovesWhy},
-    {"--right-rotation", kSpreadMovesWhy},
     {"--section", "spread solves the elastic section at d = 0 and the no-tension section along the spread"},
     {"--horizontal-acceleration", "the mechanism of rigid voussoirs carries vertical loads only"},
 };
@@ -117,6 +111,7 @@ struct SpreadSetup {
 };
 
 SpreadSetup spread_setup(const SpreadText& t, const CLI::App& cmd) {
+  refuse_inapplicable(cmd, "spread", kSpreadMoves);
   refuse_inapplicable(cmd, "spread", kNotForSpread);
   SpreadSetup s;
   s.limit.weight = lookup(weight_models(), t.weight, "--weight");
@@ -305,6 +300,7 @@ int run_spread(SpreadCommandOptions& so, const CLI::App& cmd, std::ostream& out)
 Run add_spread_options(CLI::App& cmd) {
   auto options = std::make_shared<SpreadCommandOptions>();
   add_scene_options(cmd, options->scene);
+  hide_inapplicable(cmd, kSpreadMoves);
   hide_inapplicable(cmd, kNotForSpread);
   add_spread_analysis_options(cmd, options->text);
   add_column_options(cmd, options->columns);
