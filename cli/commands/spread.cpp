@@ -157,7 +157,8 @@ Columns spread_columns(bool path) {
 }
 
 void add_setup(CsvRow& row, const SpreadText& t, const SpreadSetup& s) {
-  row.add(t.moving).add(s.spread.left_settlement_share).add(s.spread.right_settlement_share).add(to_string(s.limit.joints)).add(to_string(s.limit.weight)).add(s.limit.joints_count).add(s.spread.steps);
+  row.add(t.moving).add(s.spread.left_settlement_share).add(s.spread.right_settlement_share);
+  row.add(to_string(s.limit.joints)).add(to_string(s.limit.weight)).add(s.limit.joints_count).add(s.spread.steps);
 }
 
 // The crown's drop (m, downwards positive) of a solved elastic or cracking arch; NaN without a field.

@@ -33,13 +33,12 @@ struct DenseLpAnswer {
 };
 
 // Maximises objective . z over z (the unknowns `free`, k = free.size() <= 5; the objective's other
-// entries are ignored) subject to the rows, whose right-hand sides are `b` (one per row). `start`: k rows whose vertex is
-// dual feasible for this objective (the caps of the unknowns, say); `warm`: a better start to try first
+// entries are ignored) subject to the rows, whose right-hand sides are `b` (one per row). `start`: k
+// rows whose vertex is dual feasible for this objective (the caps of the unknowns, say); `warm`: a better start to try first
 // (the previous program's optimal basis), used when it is a nonsingular, dual-feasible basis.
 // `tolerance`: how far a row may be violated at the optimum (absolute, in the rows' units).
 DenseLpAnswer solve_dense_lp(const std::vector<DenseRow>& rows, const std::vector<double>& b,
                              const std::vector<int>& free, const std::array<double, kDenseUnknowns>& objective,
-                             const std::vector<int>& start,
-                             const std::vector<int>* warm, double tolerance);
+                             const std::vector<int>& start, const std::vector<int>* warm, double tolerance);
 
 }  // namespace ogive::limit_detail

@@ -247,8 +247,8 @@ LimitLp::Answer LimitLp::Impl::optimise(const Objective& objective, const std::a
 
 LimitLp::Answer LimitLp::Impl::dense(const Held& h, const std::array<double, kUnknowns>& fixed,
                                      const Objective& objective, const std::vector<int>* warm) const {
-  // The start: the caps of the free unknowns, the target's on the side it is pushed to (its dual 1, the
-  // others' 0): a vertex no worse than the optimum, whatever the rows.
+  // The start: the caps of the free unknowns, each on the side the objective pushes it (its dual the
+  // objective's coefficient): a vertex no worse than the optimum, whatever the rows.
   const int caps = static_cast<int>(rows.size()) - kCapRows;
   std::vector<int> start;
   for (int c : h.free) start.push_back(caps + 2 * c + (objective[c] < 0 ? 1 : 0));

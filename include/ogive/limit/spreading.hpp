@@ -1,5 +1,6 @@
 // The arch of rigid voussoirs on spreading supports, with large displacements: the mechanism part of the
-// path from the limit analysis' minimum-thrust state (d = 0) to collapse.
+// path from the limit analysis' minimum-thrust state at d = 0 (the least-work state, below, with
+// settling springings) to collapse.
 //
 // The movement: the left springing moves by (-left_share, -left_settlement_share) d, the right one by
 // (+right_share, -right_settlement_share) d (x right, y up: the settlements downwards positive), d
@@ -9,8 +10,8 @@
 // voussoirs where they are now, every joint free (no hinge is imposed), for the state that does the least
 // work on the movement: the smallest H (left_share + right_share) + V_left (left_settlement_share -
 // right_settlement_share) (V_left the left springing's vertical reaction; the smallest H when neither
-// settles; a settling springing sheds load to the other). The joints
-// where its thrust line touches a face (or crosses a pin) are the hinges of the increment's mechanism;
+// settles; where the arch leaves room, a settling springing sheds load to the other). The joints where
+// its thrust line touches a face (or crosses a pin) are the hinges of the increment's mechanism;
 // from one increment to the next they may move to other joints (hinge migration), and an abandoned
 // hinge's opening stays in the voussoirs' places.
 //
