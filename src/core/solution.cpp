@@ -142,23 +142,27 @@ namespace {
 // either one's measure), so it is measured itself, relative to max(|H/V|, 1/100) as H is to F / 100.
 // Where V_left is below F / 100 (a load at the right springing, carried by it alone) H/V is the ratio
 // of two numbers of the order of round-off, and the reactions' measure is the only one.
-double thrust_difference(const Solution& a, const Solution& b) {
-  const Reactions& r = b.reactions;
+double thrust_difference(const Reactions& a, const Reactions& r) {
   const double F = std::max({std::abs(r.H_left), std::abs(r.V_left), std::abs(r.V_right)});
   if (!(std::abs(r.V_left) >= F / 100)) return 0;
-  const double d = std::abs(a.H_over_V - b.H_over_V) / std::max(std::abs(b.H_over_V), 0.01);
+  const double HV = r.H_left / r.V_left;  // Solution::H_over_V
+  const double d = std::abs(a.H_left / a.V_left - HV) / std::max(std::abs(HV), 0.01);
   return std::isfinite(d) ? d : std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace
 
+double reaction_and_thrust_difference(const Reactions& a, const Reactions& reference, double thickness) {
+  const double thrust = thrust_difference(a, reference);
+  if (std::isnan(thrust)) return thrust;
+  return std::max(reaction_difference(a, reference, thickness), thrust);
+}
+
 double solution_difference(const Solution& a, const Solution& b) {
   if (!a.field || !b.field) return std::numeric_limits<double>::quiet_NaN();
   const double thickness = b.model->scene().thickness;
-  const double thrust = thrust_difference(a, b);
-  if (std::isnan(thrust)) return thrust;
-  const double reactions = std::max(reaction_difference(a.reactions, b.reactions, thickness), thrust);
-  if (b.profile.empty()) return reactions;
+  const double reactions = reaction_and_thrust_difference(a.reactions, b.reactions, thickness);
+  if (std::isnan(reactions) || b.profile.empty()) return reactions;
   return std::max(reactions, profile_difference(a.profile, b.profile, thickness));
 }
 

@@ -324,31 +324,36 @@ Reactions ArchModel::reactions(const StateVector& y0, const StateVector& yS) con
   return r;
 }
 
-ArchState ArchModel::to_physical(double s, const StateVector& y, bool mirrored) const {
-  const double L = scales_.length;
-  const CurvePoint on_domain = curve_->at(s * L);
-  mirrored = mirrored && half_;
-  const CurvePoint p = mirrored ? mirror(on_domain, L) : on_domain;
+ArchState ArchModel::section_state(double c, double sn, const StateVector& y) const {
   ArchState st;
-  st.s = mirrored ? 2.0 * curve_->length() - s * L : s * L;
-  st.x = p.x;
-  st.y = p.y;
-  st.theta = p.theta;
   st.Ux = y[kUx] * scales_.displacement;
   st.Uy = y[kUy] * scales_.displacement;
   st.psi = y[kPsi] * scales_.rotation;
   st.Fx = y[kFx] * scales_.force;
   st.Fy = y[kFy] * scales_.force;
   st.M = y[kM] * scales_.moment;
-  if (mirrored) {
-    // Reflection about x = L/2, with "beyond" and "before" swapped on the right half.
-    st.Ux = -st.Ux;
-    st.psi = -st.psi;
-    st.Fy = -st.Fy;
-  }
-  const double c = std::cos(st.theta), sn = std::sin(st.theta);
   st.N = c * st.Fx + sn * st.Fy;
   st.V = -sn * st.Fx + c * st.Fy;
+  return st;
+}
+
+ArchState ArchModel::to_physical(double s, const StateVector& y, bool mirrored) const {
+  const double L = scales_.length;
+  const CurvePoint on_domain = curve_->at(s * L);
+  mirrored = mirrored && half_;
+  const CurvePoint p = mirrored ? mirror(on_domain, L) : on_domain;
+  StateVector z = y;
+  if (mirrored) {
+    // Reflection about x = L/2, with "beyond" and "before" swapped on the right half.
+    z[kUx] = -z[kUx];
+    z[kPsi] = -z[kPsi];
+    z[kFy] = -z[kFy];
+  }
+  ArchState st = section_state(std::cos(p.theta), std::sin(p.theta), z);
+  st.s = mirrored ? 2.0 * curve_->length() - s * L : s * L;
+  st.x = p.x;
+  st.y = p.y;
+  st.theta = p.theta;
   const double t = scene_.thickness;
   // Where the normal force vanishes there is no eccentricity: NaN, never an unbounded number that reads
   // as a result. (Under tension, N > 0, e is the tensile force's eccentricity; the CLI flags it.)

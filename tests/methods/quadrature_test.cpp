@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "methods/quadrature.hpp"
+#include "ogive/core/thrust_line.hpp"
 #include "ogive/geometry/curve_families.hpp"
 #include "ogive/solve/solve.hpp"
 #include "support/scenes.hpp"
@@ -109,6 +110,64 @@ TEST_CASE("quadrature: verified CVODE multiple shooting's H/V and profile on smo
       CHECK(error <= sol.diagnostics.error_estimate + ref_error);
     }
   }
+}
+
+TEST_CASE("quadrature: a summary's estimate from the nodes bounds the field's, H/V's and the largest e's true errors") {
+  // Asked for an unprinted profile (thrust's summary columns), the quadrature compares two degrees at the
+  // finer one's nodes instead of at 129 stations. Its estimate must still bound what the summary reads:
+  // the whole field (sampled afterwards at 41 stations), H/V and the largest eccentricity, here against
+  // the closed form (circular curves) and verified multiple shooting (the others), from rtol 1e-4 on.
+  struct Case {
+    Scene scene;
+    bool circular;
+  };
+  const std::vector<Case> cases = {
+      {scene_of(make_pointed(10.0, 0.0)), true},           {scene_of(make_pointed(10.0, 1.0), 0.03), true},
+      {scene_of(make_segmental(10.0, 0.3)), true},         {scene_of(make_four_centred(10.0, 0.42)), true},
+      {scene_of(make_catenary(10.0, 0.5)), false},         {scene_of(make_catenary(10.0, 0.2), 0.02), false},
+      {scene_of(make_parabolic(10.0, 0.3)), false},        {scene_of(make_elliptical(10.0, 0.7), 0.1, 2e-4), false},
+      {scene_of(read_points_curve(OGIVE_DATA_DIR "/curves/parabola-40.csv")), false},
+  };
+  int compared = 0;
+  for (const Case& c : cases) {
+    Options r;
+    r.method = c.circular ? Method::closed_form : Method::multiple_shooting;
+    r.rtol = 1e-12;
+    r.segments = 32;
+    r.stations = kStations;
+    const Solution ref = solve(c.scene, r);
+    REQUIRE(ref.field);
+    const double ref_error = std::max(c.circular ? 0.0 : ref.diagnostics.error_estimate, roundoff_bound(ref));
+    REQUIRE(ref_error <= 1e-10);
+    const ThrustLineSummary ref_line = summarize_thrust_line(ref);
+    REQUIRE(ref_line.ok);
+    for (double rtol : {1e-4, 1e-6, 1e-8, 1e-10}) {
+      Options o;
+      o.method = Method::quadrature;
+      o.rtol = rtol;
+      o.stations = 65;  // any count: the estimate is at the nodes
+      o.unprinted_profile = true;
+      Solution sol = solve(c.scene, o);
+      CAPTURE(c.scene.curve->family());
+      CAPTURE(rtol);
+      REQUIRE(sol.ok());
+      CHECK(sol.profile.empty());
+      const double estimate = sol.diagnostics.error_estimate;
+      CHECK(estimate <= rtol);
+      // The same degree's sampled estimate: the same status.
+      o.unprinted_profile = false;
+      CHECK(solve(c.scene, o).status == sol.status);
+      const ThrustLineSummary line = summarize_thrust_line(sol);
+      REQUIRE(line.ok);
+      sample_profile(sol, kStations);
+      CHECK(true_error(sol, ref, c.scene) <= estimate + ref_error);
+      // e = 600 M / (N t): its error in units of max(|e|, 100 %) combines M's (in kern units) and N's.
+      CHECK(std::abs(line.max_abs_e - ref_line.max_abs_e) / std::max(ref_line.max_abs_e, 100.0) <=
+            2 * (estimate + ref_error));
+      ++compared;
+    }
+  }
+  CHECK(compared == 36);
 }
 
 TEST_CASE("quadrature: the catenary tends to its funicular H/V = 1/sinh(L/2a) as t/L falls") {

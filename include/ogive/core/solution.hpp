@@ -220,6 +220,10 @@ inline constexpr double kRoundoffProfileIntegrated = 1.25 * kRoundoffProfile;
 inline constexpr double kRoundoffQuadrature = 10;
 double roundoff_bound(const Solution& solution);
 
+// The larger of reaction_difference and the relative difference of H/V (relative to max(|H/V|, 1/100);
+// 0 where V_left is below F / 100): solution_difference without the profiles. NaN where H/V is not finite.
+double reaction_and_thrust_difference(const Reactions& a, const Reactions& reference, double thickness);
+
 // The largest of the relative differences of the reactions, of H/V (relative to max(|H/V|, 1/100)) and
 // of the profiles (when both carry one): the error estimate of a solution a against a tighter one b. NaN
 // when either has no field.

@@ -153,6 +153,11 @@ class ArchModel {
   // left's mirror image.
   Reactions reactions(const StateVector& y0, const StateVector& yS) const;
 
+  // The SI displacements, rotation, forces and couple of the scaled state y, with N and V for a section
+  // whose tangent is (c, sn): the part of to_physical that needs no point of the curve (s, x, y, theta,
+  // e and the thrust point stay 0; compressed_depth NaN).
+  ArchState section_state(double c, double sn, const StateVector& y) const;
+
   // The SI state at scaled arc length s of the domain; mirrored = true maps it onto the right half
   // (at s_whole = 2S - s) using the scene's symmetry (half() only).
   ArchState to_physical(double s, const StateVector& y, bool mirrored = false) const;
