@@ -18,6 +18,10 @@
 // the tail d1 q / (1 - q) (spectral convergence shrinks them faster still, so it errs on the safe side),
 // else d1 (finer_error_bound). solve() floors it at the solution's round-off bound (roundoff_bound: for
 // this method its own, kRoundoffQuadrature x eps x (condition + A), in core/solution.hpp).
+// With Options::unprinted_profile (a summary reads the field; no profile is printed) the fields of two
+// degrees are compared at the finer one's nodes (its own states there, the coarser one's interpolant at
+// the nodes between its own), with the reactions and H/V, as profile_difference measures them; no
+// station of either field is sampled. The same degree is returned as with the 129 stations.
 // The field (Solution::at, profiles) interpolates the nodes' states per panel (barycentric formula),
 // accurate to the method's tolerance at any station.
 #pragma once
