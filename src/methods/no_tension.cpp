@@ -331,25 +331,29 @@ class Shooter {
   std::optional<CvodeIntegrator> carried_, fresh_;
 };
 
-// The field: integrates the solved state from the start of its piece (column 0 only).
+// The field: integrates the solved state from the start of its piece (column 0 only); kept as CVODE's
+// dense output when a summary will search it (Options::unprinted_profile).
 class NoTensionField final : public PiecewiseField {
  public:
   NoTensionField(std::shared_ptr<const ArchModel> model, const Options& options, std::vector<double> knots,
                  std::vector<StateVector> starts)
-      : PiecewiseField(std::move(knots), std::move(starts)), model_(std::move(model)), system_(*model_), options_(options) {}
+      : PiecewiseField(std::move(knots), std::move(starts)), model_(std::move(model)), system_(*model_), options_(options), pieces_(options.unprinted_profile) {}
 
  protected:
   void propagate(double s_k, const StateVector& y_k, std::span<const double> s,
                  std::span<StateVector> out) const override {
-    const CvodeTolerances tol = cvode_tolerances(options_);
-    CvodeIntegrator integrator(system_, options_.integrator, tol.rtol, tol.atol, options_.max_steps, 1, true);
-    integrate_field(integrator, s_k, y_k, s, piece_end(s_k), out);
+    pieces_.sample(s_k, y_k, piece_end(s_k), s, out, [&] {
+      const CvodeTolerances tol = cvode_tolerances(options_);
+      return std::make_unique<CvodeIntegrator>(system_, options_.integrator, tol.rtol, tol.atol, options_.max_steps, 1,
+                                               true);
+    });
   }
 
  private:
   std::shared_ptr<const ArchModel> model_;
   NoTensionSystem system_;
   Options options_;
+  FieldPieces pieces_;
 };
 
 }  // namespace

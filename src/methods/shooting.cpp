@@ -103,27 +103,30 @@ std::string failure_message(const IntegrationError& e, const ArchModel& model, s
   return text;
 }
 
-// The shooting solution's field: integrates the solved state from the start of its piece.
+// The shooting solution's field: integrates the solved state from the start of its piece; kept as
+// CVODE's dense output when a summary will search it (Options::unprinted_profile).
 class ShootingField final : public PiecewiseField {
  public:
   ShootingField(std::shared_ptr<const ArchModel> model, const Options& options, std::vector<double> knots,
                 std::vector<StateVector> starts)
       : PiecewiseField(std::move(knots), std::move(starts)), model_(std::move(model)), system_(*model_),
-        options_(options) {}
+        options_(options), pieces_(options.unprinted_profile) {}
 
  protected:
   void propagate(double s_k, const StateVector& y_k, std::span<const double> s,
                  std::span<StateVector> out) const override {
-    const CvodeTolerances tol = cvode_tolerances(options_);
-    CvodeIntegrator integrator(system_, options_.integrator, tol.rtol, tol.atol, options_.max_steps, 1,
-                               options_.restart_at_breakpoints);
-    integrate_field(integrator, s_k, y_k, s, piece_end(s_k), out);
+    pieces_.sample(s_k, y_k, piece_end(s_k), s, out, [&] {
+      const CvodeTolerances tol = cvode_tolerances(options_);
+      return std::make_unique<CvodeIntegrator>(system_, options_.integrator, tol.rtol, tol.atol, options_.max_steps, 1,
+                                               options_.restart_at_breakpoints);
+    });
   }
 
  private:
   std::shared_ptr<const ArchModel> model_;
   ArchSystem system_;
   Options options_;
+  FieldPieces pieces_;
 };
 
 // A later segment of multiple shooting integrates the columns of unit psi, Fx, Fy, M and the load's.

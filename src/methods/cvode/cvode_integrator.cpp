@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include <cvode/cvode.h>
+#include <fmt/format.h>
 
 #include "methods/cvode/block_linear_solver.hpp"
 #include "methods/cvode/fixed_point_solver.hpp"
@@ -116,6 +117,7 @@ struct CvodeIntegrator::Impl {
   double span_start = 0, span_end = 0;  // the span being integrated
   double first_inside = 0, last_inside = 0;  // the numbers next to its ends, inside it
   double rtol = 0, atol = 0;  // CVODE's, as given (atol > 0)
+  std::int64_t max_steps = 0;  // CVODE's step limit between outputs; integrate_dense's per span
   vector::ErrorWeights error_weights = nullptr;  // the kernel for the workspace's vector, chosen once
 
   Impl(const OdeSystem& s, int cols, bool restart_at_breakpoints)
@@ -152,6 +154,33 @@ struct CvodeIntegrator::Impl {
     return 0;
   }
 
+  // CVODE restarted at a, to stop at b, from the state in the workspace's vector.
+  void start_span(double a, double b) {
+    span_start = a;
+    span_end = b;
+    first_inside = std::nextafter(a, b);
+    last_inside = std::nextafter(b, a);
+    void* mem = workspace->cvode.get();
+    check(CVodeReInit(mem, a, workspace->y.get()), "CVodeReInit");
+    check(CVodeSetStopTime(mem, b), "CVodeSetStopTime");
+  }
+
+  // The span's counters into `stats` (they restart with every CVodeReInit: collected span by span).
+  void count_span(IntegratorStats& stats) const {
+    void* mem = workspace->cvode.get();
+    long steps = 0, rhs = 0, etf = 0, jacs = 0, ncf = 0;
+    check(CVodeGetNumSteps(mem, &steps), "CVodeGetNumSteps");
+    check(CVodeGetNumRhsEvals(mem, &rhs), "CVodeGetNumRhsEvals");
+    check(CVodeGetNumErrTestFails(mem, &etf), "CVodeGetNumErrTestFails");
+    check(CVodeGetNumNonlinSolvConvFails(mem, &ncf), "CVodeGetNumNonlinSolvConvFails");
+    if (workspace->jacobian) check(CVodeGetNumJacEvals(mem, &jacs), "CVodeGetNumJacEvals");
+    stats.steps += steps;
+    stats.rhs_evaluations += rhs;
+    stats.error_test_failures += etf;
+    stats.jacobian_evaluations += jacs;
+    stats.convergence_failures += ncf;
+  }
+
   static void error_handler(int, const char*, const char* function, char* msg, void* data) {
     static_cast<Impl*>(data)->last_message = std::string(function) + ": " + msg;
   }
@@ -179,6 +208,7 @@ CvodeIntegrator::CvodeIntegrator(const OdeSystem& system, Integrator kind, doubl
   m.atol = atol;
   m.error_weights = vector::error_weights_for(m.workspace->y.get());
   check(CVodeWFtolerances(mem, &Impl::weights), "CVodeWFtolerances");
+  m.max_steps = max_steps;
   check(CVodeSetMaxNumSteps(mem, static_cast<long>(max_steps)), "CVodeSetMaxNumSteps");
 }
 
@@ -221,12 +251,7 @@ std::optional<IntegrationError> CvodeIntegrator::integrate(double s0, const Matr
     const double a = knots[k], b = knots[k + 1];
     if (b <= a) continue;
     Y = current;
-    m.span_start = a;
-    m.span_end = b;
-    m.first_inside = std::nextafter(a, b);
-    m.last_inside = std::nextafter(b, a);
-    check(CVodeReInit(mem, a, w.y.get()), "CVodeReInit");
-    check(CVodeSetStopTime(mem, b), "CVodeSetStopTime");
+    m.start_span(a, b);
     std::optional<IntegrationError> failure;
     double reached = a;
     // One CVode call to tout (task CV_NORMAL or CV_ONE_STEP); a failure is recorded with the arc length
@@ -267,32 +292,133 @@ std::optional<IntegrationError> CvodeIntegrator::integrate(double s0, const Matr
     // No output left in this span: run to the breakpoint so that the next span starts there (a span too
     // short to step, an output just past a breakpoint, carries its start's state).
     if (!failure && reached < b && !too_close_to_step(reached, b)) advance(b);
-    // Counters restart with every CVodeReInit: collect them span by span.
-    long steps = 0, rhs = 0, etf = 0, jacs = 0, ncf = 0;
-    check(CVodeGetNumSteps(mem, &steps), "CVodeGetNumSteps");
-    check(CVodeGetNumRhsEvals(mem, &rhs), "CVodeGetNumRhsEvals");
-    check(CVodeGetNumErrTestFails(mem, &etf), "CVodeGetNumErrTestFails");
-    check(CVodeGetNumNonlinSolvConvFails(mem, &ncf), "CVodeGetNumNonlinSolvConvFails");
-    if (w.jacobian) check(CVodeGetNumJacEvals(mem, &jacs), "CVodeGetNumJacEvals");
-    stats_.steps += steps;
-    stats_.rhs_evaluations += rhs;
-    stats_.error_test_failures += etf;
-    stats_.jacobian_evaluations += jacs;
-    stats_.convergence_failures += ncf;
+    m.count_span(stats_);
     if (failure) return failure;
   }
   return std::nullopt;
 }
 
-void integrate_field(CvodeIntegrator& integrator, double s0, const StateVector& y0, std::span<const double> s,
-                     double end, std::span<StateVector> out) {
-  std::vector<double> outputs(s.begin(), s.end());
-  if (outputs.empty() || end > outputs.back()) outputs.push_back(end);
-  const auto failure = integrator.integrate(s0, y0, outputs, [&](std::size_t n, const CvodeIntegrator::Matrix& Y) {
-    if (n < out.size()) out[n] = Y.col(0);
-  });
-  if (failure)
-    for (StateVector& y : out) y.setConstant(std::numeric_limits<double>::quiet_NaN());
+std::optional<IntegrationError> CvodeIntegrator::integrate_dense(double s0, const StateVector& y0, double end,
+                                                                 DenseTrajectory& out) {
+  Impl& m = *impl_;
+  if (m.columns != 1) throw std::logic_error("CvodeIntegrator::integrate_dense integrates one state");
+  Workspace& w = *m.workspace;
+  void* mem = w.cvode.get();
+  Eigen::Map<Matrix> Y(N_VGetArrayPointer(w.y.get()), kStateSize, 1);
+  out = DenseTrajectory{};
+  out.end_ = end;
+  // The spans and the first step of each as integrate() takes them, so that every step, and with it the
+  // polynomial an output there would be interpolated from, is the same.
+  std::vector<double> knots{s0};
+  if (m.restart)
+    for (double b : m.system.breakpoints())
+      if (b > s0 && b < end) knots.push_back(b);
+  knots.push_back(end);
+  StateVector current = y0;
+  VectorHandle dky(N_VClone(w.y.get()));
+  if (!dky) throw std::runtime_error("N_VClone failed");
+  Eigen::Map<const Matrix> D(N_VGetArrayPointer(dky.get()), kStateSize, 1);
+  for (std::size_t k = 0; k + 1 < knots.size(); ++k) {
+    const double a = knots[k], b = knots[k + 1];
+    out.spans_.push_back({a, current, out.steps_.size()});
+    if (!(b > a) || too_close_to_step(a, b)) continue;  // no step: the span's end keeps its start's state
+    Y = current;
+    m.start_span(a, b);
+    std::optional<IntegrationError> failure;
+    sunrealtype t = a;
+    for (std::int64_t taken = 0;; ++taken) {
+      // CVODE counts its step limit per call, and here every call is one step: the limit is the span's.
+      if (taken == m.max_steps) {
+        failure = IntegrationError{CV_TOO_MUCH_WORK, flag_name(CV_TOO_MUCH_WORK), t,
+                                   fmt::format("{} steps taken before reaching the span's end", m.max_steps)};
+        break;
+      }
+      const int flag = CVode(mem, b, w.y.get(), &t, CV_ONE_STEP);
+      if (flag < 0) {
+        sunrealtype t_now = a;
+        check(CVodeGetCurrentTime(mem, &t_now), "CVodeGetCurrentTime");
+        failure = IntegrationError{flag, flag_name(flag), t_now, m.last_message};
+        break;
+      }
+      // The step just taken: its polynomial y(s) = sum_j z_j ((s - s_n) / h)^j, z_j = h^j y^(j)(s_n) / j!
+      // (CVODE's Nordsieck array), valid over [s_n - h, s_n].
+      DenseTrajectory::Step step;
+      int order = 0;
+      check(CVodeGetCurrentTime(mem, &step.s_end), "CVodeGetCurrentTime");
+      check(CVodeGetLastStep(mem, &step.h), "CVodeGetLastStep");
+      check(CVodeGetLastOrder(mem, &order), "CVodeGetLastOrder");
+      step.order = order;
+      step.first = out.coefficients_.size();
+      double scale = 1;  // h^j / j!
+      for (int j = 0; j <= order; ++j) {
+        if (j > 0) scale *= step.h / j;
+        check(CVodeGetDky(mem, step.s_end, j, dky.get()), "CVodeGetDky");
+        out.coefficients_.push_back(j == 0 ? StateVector(D.col(0)) : StateVector(scale * D.col(0)));
+      }
+      out.steps_.push_back(step);
+      if (flag == CV_TSTOP_RETURN || !(t < b) || too_close_to_step(t, b)) break;
+    }
+    m.count_span(stats_);
+    if (failure) {
+      out.failed_ = true;
+      return failure;
+    }
+    current = Y.col(0);  // at b: CVODE's state at its stop time
+  }
+  return std::nullopt;
+}
+
+StateVector DenseTrajectory::at(double s) const {
+  if (failed_ || spans_.empty()) return StateVector::Constant(std::numeric_limits<double>::quiet_NaN());
+  // The span that holds s: the last one starting before it (a station at a breakpoint belongs to the
+  // span that ends there).
+  auto span = std::lower_bound(spans_.begin(), spans_.end(), s, [](const Span& x, double v) { return x.start < v; });
+  if (span == spans_.begin()) return spans_.front().y_start;  // at or before the piece's start
+  --span;
+  const std::size_t first = span->first_step;
+  const std::size_t last = span + 1 == spans_.end() ? steps_.size() : (span + 1)->first_step;
+  if (too_close_to_step(span->start, s) || first == last) return span->y_start;
+  // The first step of the span that ends at or after s (the last one for s just past the span's end).
+  auto step = std::lower_bound(steps_.begin() + static_cast<std::ptrdiff_t>(first),
+                               steps_.begin() + static_cast<std::ptrdiff_t>(last), s,
+                               [](const Step& x, double v) { return x.s_end < v; });
+  if (step == steps_.begin() + static_cast<std::ptrdiff_t>(last)) --step;
+  // CVodeGetDky's sum: the highest power first, each power by repeated products.
+  const double x = (s - step->s_end) / step->h;
+  StateVector y = StateVector::Zero();
+  for (int j = step->order; j >= 0; --j) {
+    double c = 1;
+    for (int i = 0; i < j; ++i) c *= x;
+    y += c * coefficients_[step->first + static_cast<std::size_t>(j)];
+  }
+  return y;
+}
+
+void FieldPieces::sample(double s_k, const StateVector& y_k, double end, std::span<const double> s,
+                         std::span<StateVector> out, const MakeIntegrator& make) const {
+  if (!keep_) {
+    const std::unique_ptr<CvodeIntegrator> integrator = make();
+    std::vector<double> outputs(s.begin(), s.end());
+    if (outputs.empty() || end > outputs.back()) outputs.push_back(end);
+    const auto failure = integrator->integrate(s_k, y_k, outputs, [&](std::size_t n, const CvodeIntegrator::Matrix& Y) {
+      if (n < out.size()) out[n] = Y.col(0);
+    });
+    if (failure)
+      for (StateVector& y : out) y.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
+  std::shared_ptr<const DenseTrajectory> piece;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    auto& slot = pieces_[s_k];
+    if (!slot) {
+      auto made = std::make_shared<DenseTrajectory>();
+      make()->integrate_dense(s_k, y_k, end, *made);
+      slot = std::move(made);
+    }
+    piece = slot;
+  }
+  for (std::size_t i = 0; i < s.size() && i < out.size(); ++i) out[i] = piece->at(s[i]);
 }
 
 }  // namespace ogive

@@ -13,7 +13,9 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <span>
 #include <string>
@@ -57,6 +59,38 @@ class OdeSystem {
   virtual const std::vector<double>& breakpoints() const = 0;
 };
 
+// One state's trajectory over a piece as CVODE integrated it (CvodeIntegrator::integrate_dense): for
+// every step its end s_n, its size h and order q and its interpolating polynomial (CVODE's Nordsieck
+// array, from CVodeGetDky), so that the state anywhere in the piece is CVODE's own interpolant there, as
+// an integration to that output would give it (its steps do not depend on the outputs), to round-off,
+// with no second integration.
+class DenseTrajectory {
+ public:
+  // The state at s in [start, end] of the piece (clamped to it): s within a few ulps of a span's start
+  // (the piece's start or a breakpoint after which CVODE restarted) takes that start's state, as
+  // integrate() gives it. Non-finite after a failed integration: never a plausible number.
+  StateVector at(double s) const;
+  bool failed() const { return failed_; }
+
+ private:
+  friend class CvodeIntegrator;
+  struct Span {
+    double start;
+    StateVector y_start;
+    std::size_t first_step;  // index of its first step in steps_
+  };
+  struct Step {
+    double s_end, h;
+    int order;
+    std::size_t first;  // its coefficients z_0 .. z_q (y = sum z_j ((s - s_end) / h)^j) from coefficients_[first]
+  };
+  std::vector<Span> spans_;
+  std::vector<Step> steps_;
+  std::vector<StateVector> coefficients_;
+  double end_ = 0;
+  bool failed_ = false;
+};
+
 class CvodeIntegrator {
  public:
   using Matrix = OdeMatrix;
@@ -88,6 +122,11 @@ class CvodeIntegrator {
   std::optional<IntegrationError> integrate(double s0, const Matrix& Y0, std::span<const double> s_out,
                                             const Observer& observer);
 
+  // One state (an integrator of 1 column) from y0 at s0 to end, restarting at the breakpoints as
+  // integrate() does and with the same steps (the first sized toward each span's end), every step's
+  // interpolating polynomial kept in `out`.
+  std::optional<IntegrationError> integrate_dense(double s0, const StateVector& y0, double end, DenseTrajectory& out);
+
   // Accumulated over every integrate() call.
   const IntegratorStats& stats() const { return stats_; }
 
@@ -97,11 +136,29 @@ class CvodeIntegrator {
   IntegratorStats stats_;
 };
 
-// A field's states at the ascending outputs s (>= s0) from y0 at s0, integrated on to `end` (a piece's
-// end, >= s.back()): CVODE sizes its steps toward the end of the span it is given, so every output is
-// the same whichever others are asked (a printed profile is the one whose error was estimated at other
-// stations). Non-finite states, never plausible ones, where the integration fails.
-void integrate_field(CvodeIntegrator& integrator, double s0, const StateVector& y0, std::span<const double> s,
-                     double end, std::span<StateVector> out);
+// A field's pieces integrated by CVODE, each from its start state to its end (CVODE sizes its steps
+// toward the end of the span it is given, so every state is the same whichever others are asked: a
+// printed profile is the one whose error was estimated at other stations). Without `keep`, every request
+// integrates the piece through the states asked (a profile's stations: nothing kept); with it, each
+// piece is integrated once, on first use, and kept as CVODE's dense output (DenseTrajectory), for a
+// field searched point by point (a thrust-line summary's refinement), which would otherwise integrate
+// the piece again for every point. Both take the same steps: their states agree to round-off (an ulp),
+// and a field uses one or the other for all its states. Non-finite states, never plausible ones, where
+// the integration fails. Thread-safe.
+class FieldPieces {
+ public:
+  using MakeIntegrator = std::function<std::unique_ptr<CvodeIntegrator>()>;
+  explicit FieldPieces(bool keep) : keep_(keep) {}
+  // The states at the ascending s (inside the piece that starts at s_k with y_k and ends at end), by an
+  // integrator of one column that `make` builds when the piece must be integrated.
+  void sample(double s_k, const StateVector& y_k, double end, std::span<const double> s, std::span<StateVector> out,
+              const MakeIntegrator& make) const;
+
+ private:
+  bool keep_;
+  mutable std::mutex mutex_;
+  mutable std::map<double, std::shared_ptr<const DenseTrajectory>> pieces_;
+};
+
 
 }  // namespace ogive

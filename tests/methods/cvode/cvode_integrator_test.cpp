@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <limits>
 #include <span>
 #include <stdexcept>
 #include <vector>
@@ -134,4 +135,67 @@ TEST_CASE("CVODE wrapper: an output one ulp past the start or a breakpoint is th
                                             [&](std::size_t, const OdeMatrix& Y) { got = Y(0, 0); });
   REQUIRE_FALSE(failure);
   CHECK(std::abs(got - std::exp(-(end - start))) <= kShortSpanGlobalError * rtol);
+}
+
+TEST_CASE("CVODE wrapper: the dense output is CVODE's interpolant of the same steps, to round-off") {
+  // integrate_dense keeps every step's polynomial (from CVodeGetDky) instead of interpolating at
+  // outputs named in advance. Its steps are integrate()'s (the first sized toward each span's end), so
+  // at every output, across a breakpoint, one ulp past it and at the ends, the two agree to a few
+  // round-offs of the state (kDenseAgreement), and both meet the solver's tolerance against exp(-s).
+  constexpr double kDenseAgreement = 8 * std::numeric_limits<double>::epsilon();
+  constexpr double kGlobalError = 10;  // the global error on this smooth span, in units of rtol
+  const double rtol = 1e-10, breakpoint = 0.3, start = 0.1, end = 1.7;
+  StateVector k;
+  k << 1.0, 3.0, 0.5, 2.0, 5.0, 0.25;
+  const Decay system(k, {breakpoint});
+  std::vector<double> outputs = {start, std::nextafter(start, 1.0), 0.2, std::nextafter(breakpoint, 0.0), breakpoint,
+                                 std::nextafter(breakpoint, 1.0)};
+  for (int i = 1; i <= 37; ++i) outputs.push_back(breakpoint + (end - breakpoint) * i / 37.0);
+  const StateVector y0 = StateVector::Ones();
+  for (const Integrator kind : {Integrator::adams, Integrator::bdf}) {
+    CAPTURE(static_cast<int>(kind));
+    CvodeIntegrator stepping(system, kind, rtol, 1e-16, 100000, 1), keeping(system, kind, rtol, 1e-16, 100000, 1);
+    std::vector<StateVector> integrated(outputs.size());
+    REQUIRE_FALSE(stepping.integrate(start, y0, outputs, [&](std::size_t i, const OdeMatrix& Y) { integrated[i] = Y.col(0); }));
+    DenseTrajectory trajectory;
+    REQUIRE_FALSE(keeping.integrate_dense(start, y0, end, trajectory));
+    CHECK_FALSE(trajectory.failed());
+    CHECK(keeping.stats().steps == stepping.stats().steps);
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+      CAPTURE(outputs[i]);
+      const StateVector dense = trajectory.at(outputs[i]);
+      CHECK((dense - integrated[i]).cwiseAbs().maxCoeff() <= kDenseAgreement);
+      for (Eigen::Index r = 0; r < kStateSize; ++r)
+        CHECK(std::abs(dense[r] - std::exp(-k[r] * (outputs[i] - start))) <= kGlobalError * rtol);
+    }
+    // Before its start and beyond its end the piece's ends: no extrapolation.
+    CHECK((trajectory.at(start - 1) - y0).cwiseAbs().maxCoeff() == 0);
+    CHECK((trajectory.at(end) - integrated.back()).cwiseAbs().maxCoeff() <= kDenseAgreement);
+  }
+}
+
+TEST_CASE("CVODE wrapper: a dense integration that cannot go on fails whole, within the step limit") {
+  // A system whose right-hand side fails beyond s = 0.5: CVODE cannot pass it. Every state of the
+  // trajectory is then non-finite (no plausible number), and a step limit of 50 steps holds per span.
+  class Wall final : public OdeSystem {
+   public:
+    bool rhs(double s, const Eigen::Ref<const OdeMatrix>& Y, Eigen::Ref<OdeMatrix> dY) const override {
+      dY = -Y;
+      return s < 0.5;
+    }
+    SystemMatrix jacobian_block(double, const Eigen::Ref<const OdeMatrix>&) const override {
+      return -SystemMatrix::Identity();
+    }
+    const std::vector<double>& breakpoints() const override { return none_; }
+
+   private:
+    std::vector<double> none_;
+  } wall;
+  CvodeIntegrator integrator(wall, Integrator::adams, 1e-8, 1e-14, 50, 1);
+  DenseTrajectory trajectory;
+  const auto failure = integrator.integrate_dense(0.0, StateVector::Ones(), 1.0, trajectory);
+  REQUIRE(failure);
+  CHECK(trajectory.failed());
+  CHECK(integrator.stats().steps <= 50);
+  for (double s : {0.0, 0.25, 0.75}) CHECK_FALSE(trajectory.at(s).allFinite());
 }
