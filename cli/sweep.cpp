@@ -135,17 +135,36 @@ bool OrderedSweep::run(RowWriter& writer) {
       for (std::thread& t : pool) t.join();
     }
   } joiner{*this, pool};
-  for (int t = 0; t < threads_; ++t) pool.emplace_back([this] { work(); });
+  // The calling thread writes the chunks in order and, while the next one to write is still being
+  // solved, solves chunks itself: threads - 1 workers beside it, so that no thread waits on a core
+  // another one needs (three threads on two cores ran 1.8 times one thread's speed).
+  for (int t = 1; t < threads_; ++t) pool.emplace_back([this] { work(); });
   bool all_ok = true;
   for (std::size_t w = 0; w < chunks_; ++w) {
     Slot slot;
-    {
-      std::unique_lock lock(mutex_);
-      solved_.wait(lock, [&] { return slots_[w % window_].done || failure_; });
-      if (failure_) std::rethrow_exception(failure_);
-      slot = std::move(slots_[w % window_]);
-      slots_[w % window_] = Slot{};
-      ++next_to_write_;
+    for (;;) {
+      std::size_t mine = 0;
+      {
+        std::unique_lock lock(mutex_);
+        if (failure_) std::rethrow_exception(failure_);
+        if (slots_[w % window_].done) {
+          slot = std::move(slots_[w % window_]);
+          slots_[w % window_] = Slot{};
+          ++next_to_write_;
+          break;
+        }
+        if (next_to_take_ >= chunks_ || next_to_take_ >= next_to_write_ + window_) {
+          // Chunk w is a worker's: wait for it.
+          solved_.wait(lock, [&] { return slots_[w % window_].done || failure_; });
+          continue;
+        }
+        mine = next_to_take_++;
+      }
+      Slot result;
+      if (!solve_chunk(mine, result)) continue;  // failure_ is set: rethrown above
+      result.done = true;
+      std::lock_guard lock(mutex_);
+      slots_[mine % window_] = std::move(result);
     }
     space_.notify_all();
     all_ok = slot.ok && all_ok;

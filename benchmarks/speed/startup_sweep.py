@@ -24,6 +24,11 @@ gives the best and the median wall-clock time, the scenes per second of the best
 over one thread (of the best times). The files of every thread count must be byte-identical; a
 difference exits 1. With --chart, gnuplot draws the throughput against threads as a PNG.
 
+The summary columns: the same marginal time per scene with `--columns H,V` and with the thrust line's
+summary added (`max_thrust_eccentricity,thrust_in_kern,thrust_in_section`), a quarter of the scenes,
+and their ratio: what the largest eccentricity and the kern and section checks cost beside the
+reactions.
+
 The solve_bvp ratio: scipy's `solve_bvp` on the equilateral arch (benchmarks/peer/scipy_peer.py,
 --peer-tol, median of 5 solves, its H/V error against the closed form) against each method's marginal
 time above: how many times longer the general-purpose collocation solver takes per scene.
@@ -73,9 +78,12 @@ def startup(ogive, args, runs):
     return med(a, 0), med(a, 1), med(b, 0), med(b, 1), diff(0), diff(1)
 
 
-def marginal(ogive, method, scenes):
+SUMMARY_COLUMNS = "H,V,max_thrust_eccentricity,thrust_in_kern,thrust_in_section"
+
+
+def marginal(ogive, method, scenes, extra=()):
     """Seconds per scene beyond start-up, one thread."""
-    base = [ogive, "thrust", "--method", method, "--threads", "1"]
+    base = [ogive, "thrust", "--method", method, "--threads", "1", *extra]
     # Exit 3 (a row whose solve missed rtol: single shooting on a few eccentricities) is a solve all the same.
     one = min(run(base + ["--eccentricity", "0.5"], accepted=(0, 3))[0] for _ in range(5))
     many = min(run(base + ["--eccentricity", f"0:1:{scenes}"], accepted=(0, 3))[0] for _ in range(5))
@@ -172,6 +180,16 @@ def main():
         n = max(2, round(n * o.marginal_scale))
         per_scene[m] = marginal(ogive, m, n)
         print(f"| {m} | {n} | {1e6 * per_scene[m]:.2f} |")
+    print()
+
+    print("| method (one thread) | scenes | `--columns H,V` µs per scene | with the summary columns µs per scene "
+          "| ratio |")
+    print("|---|---:|---:|---:|---:|")
+    for m, n in METHODS:
+        n = max(2, round(n * o.marginal_scale / 4))
+        plain = marginal(ogive, m, n, ["--columns", "H,V"])
+        summary = marginal(ogive, m, n, ["--columns", SUMMARY_COLUMNS])
+        print(f"| {m} | {n} | {1e6 * plain:.2f} | {1e6 * summary:.2f} | {summary / plain:.2f} |")
     print()
 
     bvp, bvp_error = solve_bvp_seconds(ogive, o.peer_tol)
