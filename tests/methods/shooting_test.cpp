@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "methods/closed_form.hpp"
@@ -161,6 +163,44 @@ TEST_CASE("shooting: the profile matches the closed form's at every station") {
       CHECK(std::abs(sol.at(s).M - ref.at(s).M) <= 10 * rtol * sM);
     }
   }
+}
+
+TEST_CASE("shooting: a field kept as CVODE's dense output gives the states integrated to each station") {
+  // A field that a summary will search (Options::unprinted_profile) keeps each piece's steps instead of
+  // integrating it again for every state asked. The same steps, interpolated by the same polynomials:
+  // every state agrees with the field integrated through the stations, to a few round-offs of each
+  // quantity's largest size (kDenseAgreement), over a hinge, a point load and a breakpoint.
+  constexpr double kDenseAgreement = 16 * std::numeric_limits<double>::epsilon();
+  constexpr int kStations = 97;
+  Scene pointed = paper_scene(1.0, 0.1, 1e-4);
+  pointed.loads.points = {{2e4, 0.3}};
+  Scene hinged = paper_scene(0.5);
+  hinged.left.kind = hinged.right.kind = SupportKind::pinned;
+  hinged.crown_hinge = true;
+  for (const Scene& scene : {pointed, hinged})
+    for (Method m : {Method::shooting, Method::multiple_shooting})
+      for (Integrator i : {Integrator::adams, Integrator::bdf}) {
+        Options o;
+        o.method = m;
+        o.integrator = i;
+        o.verify = false;
+        o.stations = kStations;
+        const Solution stepped = solve(scene, o);
+        o.unprinted_profile = true;
+        Solution kept = solve(scene, o);
+        CAPTURE(std::string(to_string(m)));
+        CAPTURE(std::string(to_string(i)));
+        REQUIRE(stepped.field);
+        REQUIRE(kept.field);
+        CHECK(kept.profile.empty());
+        // The stations one at a time, in reverse: a search's order, not a profile's.
+        std::vector<ArchState> one_by_one;
+        for (int k = kStations; k-- > 0;) one_by_one.push_back(sample_stations(kept, kStations, k, 1).at(0));
+        std::reverse(one_by_one.begin(), one_by_one.end());
+        CHECK(profile_difference(one_by_one, stepped.profile, scene.thickness) <= kDenseAgreement);
+        sample_profile(kept, kStations);
+        CHECK(profile_difference(kept.profile, stepped.profile, scene.thickness) <= kDenseAgreement);
+      }
 }
 
 TEST_CASE("shooting: segment boundaries include the curve's breakpoints") {
