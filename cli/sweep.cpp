@@ -36,8 +36,8 @@ bool scene_rows(const ScenePlan& plan, const Columns& columns, const SceneRows& 
   return rows_of(p, *built.scene, emit);
 }
 
-// Scenes solved in parallel (each thread keeps its own SUNDIALS objects) and written in order: a
-// worker takes the next chunk of consecutive scenes (so that locking costs little against scenes of a
+// Scenes solved in parallel (each thread keeps its own SUNDIALS objects) and written in order: a thread
+// takes the next chunk of consecutive scenes (so that locking costs little against scenes of a
 // few microseconds) only while it lies within a window of 4 x threads chunks of the next one to be
 // written, so the output is byte-identical to one thread's. A chunk holds at most kChunkRows rows, so
 // what waits in the window stays within 5 x threads x kChunkRows rows whatever the sweep.
