@@ -370,6 +370,7 @@ std::optional<IntegrationError> CvodeIntegrator::integrate_dense(double s0, cons
 
 StateVector DenseTrajectory::at(double s) const {
   if (failed_ || spans_.empty()) return StateVector::Constant(std::numeric_limits<double>::quiet_NaN());
+  s = std::min(s, end_);
   // The span that holds s: the last one starting before it (a station at a breakpoint belongs to the
   // span that ends there).
   auto span = std::lower_bound(spans_.begin(), spans_.end(), s, [](const Span& x, double v) { return x.start < v; });

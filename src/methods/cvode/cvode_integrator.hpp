@@ -127,7 +127,7 @@ class CvodeIntegrator {
   // interpolating polynomial kept in `out`.
   std::optional<IntegrationError> integrate_dense(double s0, const StateVector& y0, double end, DenseTrajectory& out);
 
-  // Accumulated over every integrate() call.
+  // Accumulated over every integrate() and integrate_dense() call.
   const IntegratorStats& stats() const { return stats_; }
 
  private:

@@ -171,6 +171,7 @@ TEST_CASE("CVODE wrapper: the dense output is CVODE's interpolant of the same st
     // Before its start and beyond its end the piece's ends: no extrapolation.
     CHECK((trajectory.at(start - 1) - y0).cwiseAbs().maxCoeff() == 0);
     CHECK((trajectory.at(end) - integrated.back()).cwiseAbs().maxCoeff() <= kDenseAgreement);
+    CHECK((trajectory.at(end + 1) - trajectory.at(end)).cwiseAbs().maxCoeff() == 0);
   }
 }
 
