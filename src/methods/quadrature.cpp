@@ -4,6 +4,9 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -268,13 +271,47 @@ std::vector<ArchState> node_profile(const ArchModel& model, const std::vector<Pa
   return out;
 }
 
-// cos theta, sin theta, s - a and ds/dx at the nodes of degree `degree`, keeping those of degree / 2
-// (the even-numbered nodes).
-std::int64_t sample_nodes(const ArchModel& model, Panel& panel, int degree) {
+// The panels' nodes (sample_nodes' rows) depend on the domain's curve alone: its shape, its span (the
+// length scale) and whether the domain is its half. A thread keeps them for the last curve it solved on,
+// so that a sweep over one curve or survey (thickness, material, loads, supports) evaluates the curve
+// at each panel's nodes once per degree, not once per scene: the same rows, computed in the same order.
+struct NodeGeometry {
+  std::weak_ptr<const Curve> curve;
+  bool half = true;
+  double length_scale = 0;
+  std::vector<std::array<double, 4>> panels;  // each panel's a, b, pa, pb
+  std::map<std::pair<std::size_t, int>, Eigen::Matrix<double, Eigen::Dynamic, 4>> rows;  // (panel, degree)
+};
+
+// This thread's node geometry, emptied first unless it is for the model's curve and these panels.
+NodeGeometry& node_geometry(const ArchModel& model, const std::vector<Panel>& panels) {
+  thread_local NodeGeometry geometry;
+  std::vector<std::array<double, 4>> ends;
+  for (const Panel& p : panels) ends.push_back({p.a, p.b, p.pa, p.pb});
+  if (geometry.curve.lock() != model.scene().curve || geometry.half != model.half() ||
+      geometry.length_scale != model.scales().length || geometry.panels != ends) {
+    geometry.curve = model.scene().curve;
+    geometry.half = model.half();
+    geometry.length_scale = model.scales().length;
+    geometry.panels = std::move(ends);
+    geometry.rows.clear();
+  }
+  return geometry;
+}
+
+// cos theta, sin theta, s - a and ds/dx at the nodes of degree `degree` of panel k, keeping those of
+// degree / 2 (the even-numbered nodes); from `geometry` where this curve's were computed before. The
+// count of the curve's evaluations that the rows take (whether or not they were kept).
+std::int64_t sample_nodes(const ArchModel& model, Panel& panel, int degree, NodeGeometry& geometry, std::size_t k) {
+  auto& kept = geometry.rows[{k, degree}];
+  const bool refining = panel.nodes.rows() == degree / 2 + 1;
+  if (kept.rows() == degree + 1) {
+    panel.nodes = kept;
+    return refining ? degree / 2 : degree + 1;
+  }
   const ChebyshevRule& rule = chebyshev_rule(degree);
   Eigen::Matrix<double, Eigen::Dynamic, 4> coarse(degree + 1, 4);
   coarse.swap(panel.nodes);  // panel.nodes: degree + 1 rows now; coarse: the previous degree's, if any
-  const bool refining = coarse.rows() == degree / 2 + 1;
   const double L = model.scales().length;
   const double mid = 0.5 * (panel.pa + panel.pb), h = 0.5 * (panel.pb - panel.pa);
   std::int64_t evaluations = 0;
@@ -301,6 +338,7 @@ std::int64_t sample_nodes(const ArchModel& model, Panel& panel, int degree) {
     }
     ++evaluations;
   }
+  kept = panel.nodes;
   return evaluations;
 }
 
@@ -375,10 +413,11 @@ Solution solve_quadrature(std::shared_ptr<const ArchModel> model, const Options&
   std::vector<Panel> panels = make_panels(*model, knots);
 
   std::int64_t evaluations = 0;
+  NodeGeometry& geometry = node_geometry(*model, panels);
   // Short panels (a survey's, cut at every point) converge sooner: start lower there; a single long
   // panel starts higher, where it would otherwise spend one more level.
   int degree = kMinChebyshevDegree;
-  for (Panel& p : panels) evaluations += sample_nodes(*model, p, degree);
+  for (std::size_t k = 0; k < panels.size(); ++k) evaluations += sample_nodes(*model, panels[k], degree, geometry, k);
   // Without stations, a degree that is not returned needs no field: only its H (its Fx at the springing).
   const bool profiles = options.stations > 0;
   // A profile asked for only so that the estimate covers the field a summary reads (nothing printed):
@@ -398,7 +437,7 @@ Solution solve_quadrature(std::shared_ptr<const ArchModel> model, const Options&
   double previous_difference = std::numeric_limits<double>::quiet_NaN();
   while (true) {
     degree *= 2;
-    for (Panel& p : panels) evaluations += sample_nodes(*model, p, degree);
+    for (std::size_t k = 0; k < panels.size(); ++k) evaluations += sample_nodes(*model, panels[k], degree, geometry, k);
     Level fine = solve_level(*model, panels, degree);
     const double condition = fine.bvp.condition;
     if (node_estimate) fine_states = node_states(panels, fine);

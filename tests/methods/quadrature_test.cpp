@@ -8,6 +8,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "methods/quadrature.hpp"
@@ -168,6 +169,48 @@ TEST_CASE("quadrature: a summary's estimate from the nodes bounds the field's, H
     }
   }
   CHECK(compared == 36);
+}
+
+TEST_CASE("quadrature: a scene's numbers do not depend on what its thread solved before") {
+  // A thread keeps the panels' node geometry of the last curve it solved on (a sweep over one survey
+  // evaluates the curve once). The same scene solved on a fresh thread, after another thickness of the
+  // same survey, after other curves, over the whole arch and again: the same bits.
+  const auto survey = read_points_curve(OGIVE_DATA_DIR "/curves/parabola-40.csv");
+  const Scene scene = scene_of(survey, 0.08);
+  auto run = [&](const Scene& s) {
+    Options o;
+    o.method = Method::quadrature;
+    o.stations = kStations;
+    return solve(s, o);
+  };
+  Scene shaken = scene;  // solved over the whole arch
+  shaken.horizontal_acceleration = 0.1;
+  Solution fresh;
+  std::thread([&] { fresh = run(scene); }).join();
+  REQUIRE(fresh.ok());
+  std::vector<Solution> again;
+  again.push_back(run(scene_of(survey, 0.05)));  // the same curve: its geometry kept
+  again.push_back(run(scene));
+  again.push_back(run(scene_of(make_catenary(10.0, 0.5))));  // another curve: the geometry replaced
+  again.push_back(run(scene));
+  again.push_back(run(shaken));  // the same curve over the whole arch: other panels
+  again.push_back(run(scene));
+  CHECK(again[4].ok());
+  CHECK_FALSE(again[4].model->half());
+  for (std::size_t i : {1, 3, 5}) {
+    CAPTURE(i);
+    const Solution& sol = again[i];
+    REQUIRE(sol.ok());
+    CHECK(sol.H == fresh.H);
+    CHECK(sol.V == fresh.V);
+    CHECK(sol.diagnostics.error_estimate == fresh.diagnostics.error_estimate);
+    CHECK(sol.diagnostics.rhs_evaluations == fresh.diagnostics.rhs_evaluations);
+    REQUIRE(sol.profile.size() == fresh.profile.size());
+    for (std::size_t k = 0; k < sol.profile.size(); ++k) {
+      CHECK(sol.profile[k].M == fresh.profile[k].M);
+      CHECK(sol.profile[k].Uy == fresh.profile[k].Uy);
+    }
+  }
 }
 
 TEST_CASE("quadrature: the catenary tends to its funicular H/V = 1/sinh(L/2a) as t/L falls") {
