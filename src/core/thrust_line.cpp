@@ -57,10 +57,7 @@ class Scan {
   // curve's point there (the ArchState has done that once).
   double curvature(double x) const {
     const auto arcs = model_.curve().arcs();
-    if (arcs.empty()) return model_.curve().at(x).kappa;
-    const auto next = std::upper_bound(arcs.begin(), arcs.end(), x,
-                                       [](double v, const CircularArc& a) { return v < a.s_start; });
-    return (next == arcs.begin() ? arcs.front() : *(next - 1)).kappa;
+    return arcs.empty() ? model_.curve().at(x).kappa : arc_at(arcs, x).kappa;
   }
 
   Probe probe(double s) const {

@@ -165,20 +165,18 @@ PiecewiseCircularCurve::PiecewiseCircularCurve(std::string family, double span,
   }
 }
 
-const CircularArc& PiecewiseCircularCurve::arc_at(double s) const {
-  // s outside [0, S] extrapolates the end arcs.
-  auto it = std::upper_bound(arcs_.begin(), arcs_.end(), s,
-                             [](double v, const CircularArc& a) { return v < a.s_start; });
-  return it == arcs_.begin() ? arcs_.front() : *std::prev(it);
+const CircularArc& arc_at(std::span<const CircularArc> arcs, double s) {
+  auto it = std::upper_bound(arcs.begin(), arcs.end(), s, [](double v, const CircularArc& a) { return v < a.s_start; });
+  return it == arcs.begin() ? arcs.front() : *std::prev(it);
 }
 
 CurvePoint PiecewiseCircularCurve::at(double s) const {
-  const CircularArc& arc = arc_at(s);
+  const CircularArc& arc = arc_at(arcs_, s);
   return point_on_arc(arc, s - arc.s_start);
 }
 
 double PiecewiseCircularCurve::angle(double s) const {
-  const CircularArc& arc = arc_at(s);
+  const CircularArc& arc = arc_at(arcs_, s);
   return arc.theta_start + arc.kappa * (s - arc.s_start);  // as point_on_arc
 }
 

@@ -56,6 +56,10 @@ struct CircularArc {
   double kappa = 0;  // 1/m, constant on the arc
 };
 
+// The arc of `arcs` (ascending, not empty) that holds arc length s (m): the last one whose start is <= s,
+// the first for s before it (s outside the curve extrapolates its end arcs).
+const CircularArc& arc_at(std::span<const CircularArc> arcs, double s);
+
 enum class CurveExtent { half, whole };
 
 class Curve {
@@ -119,7 +123,6 @@ class PiecewiseCircularCurve final : public Curve {
   double span_;
   double length_;
   std::vector<CircularArc> arcs_;
-  const CircularArc& arc_at(double s) const;  // the last arc whose start is <= s (the first before it)
 };
 
 // The whole arch a curve stands for: a whole curve itself, a half joined to its mirror image (extent
