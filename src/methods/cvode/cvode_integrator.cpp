@@ -165,6 +165,24 @@ struct CvodeIntegrator::Impl {
     check(CVodeSetStopTime(mem, b), "CVodeSetStopTime");
   }
 
+  // The spans of an integration from s0 to end: s0, the breakpoints strictly inside (s0, end) unless
+  // steps may straddle them, end. Each span is integrated afresh.
+  std::vector<double> span_knots(double s0, double end) const {
+    std::vector<double> knots{s0};
+    if (restart)
+      for (double b : system.breakpoints())
+        if (b > s0 && b < end) knots.push_back(b);
+    knots.push_back(end);
+    return knots;
+  }
+
+  // CVODE's failure `flag`, with the arc length it had reached and its own message.
+  IntegrationError failure(int flag) const {
+    sunrealtype reached = span_start;
+    check(CVodeGetCurrentTime(workspace->cvode.get(), &reached), "CVodeGetCurrentTime");
+    return IntegrationError{flag, flag_name(flag), reached, last_message};
+  }
+
   // The span's counters into `stats` (they restart with every CVodeReInit: collected span by span).
   void count_span(IntegratorStats& stats) const {
     void* mem = workspace->cvode.get();
@@ -238,12 +256,7 @@ std::optional<IntegrationError> CvodeIntegrator::integrate(double s0, const Matr
   Matrix current = Y0;
   if (s_out.empty()) return std::nullopt;
   const double s_end = s_out.back();
-  // Knots: s0, the breakpoints strictly inside (s0, s_end), s_end. Each span is integrated afresh.
-  std::vector<double> knots{s0};
-  if (m.restart)
-    for (double b : m.system.breakpoints())
-      if (b > s0 && b < s_end) knots.push_back(b);
-  knots.push_back(s_end);
+  const std::vector<double> knots = m.span_knots(s0, s_end);
 
   std::size_t next = 0;
   while (next < s_out.size() && s_out[next] <= s0) observer(next++, current);
@@ -259,9 +272,7 @@ std::optional<IntegrationError> CvodeIntegrator::integrate(double s0, const Matr
     auto call = [&](double tout, int task, sunrealtype& t) {
       const int flag = CVode(mem, tout, w.y.get(), &t, task);
       if (flag < 0) {
-        sunrealtype t_now = a;
-        check(CVodeGetCurrentTime(mem, &t_now), "CVodeGetCurrentTime");
-        failure = IntegrationError{flag, flag_name(flag), t_now, m.last_message};
+        failure = m.failure(flag);
         return false;
       }
       return true;
@@ -309,11 +320,7 @@ std::optional<IntegrationError> CvodeIntegrator::integrate_dense(double s0, cons
   out.end_ = end;
   // The spans and the first step of each as integrate() takes them, so that every step, and with it the
   // polynomial an output there would be interpolated from, is the same.
-  std::vector<double> knots{s0};
-  if (m.restart)
-    for (double b : m.system.breakpoints())
-      if (b > s0 && b < end) knots.push_back(b);
-  knots.push_back(end);
+  const std::vector<double> knots = m.span_knots(s0, end);
   StateVector current = y0;
   VectorHandle dky(N_VClone(w.y.get()));
   if (!dky) throw std::runtime_error("N_VClone failed");
@@ -335,9 +342,7 @@ std::optional<IntegrationError> CvodeIntegrator::integrate_dense(double s0, cons
       }
       const int flag = CVode(mem, b, w.y.get(), &t, CV_ONE_STEP);
       if (flag < 0) {
-        sunrealtype t_now = a;
-        check(CVodeGetCurrentTime(mem, &t_now), "CVodeGetCurrentTime");
-        failure = IntegrationError{flag, flag_name(flag), t_now, m.last_message};
+        failure = m.failure(flag);
         break;
       }
       // The step just taken: its polynomial y(s) = sum_j z_j ((s - s_n) / h)^j, z_j = h^j y^(j)(s_n) / j!
