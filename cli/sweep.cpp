@@ -67,7 +67,11 @@ class OrderedSweep {
     bool ok = true, done = false;
   };
   void work();
-  bool solve_chunk(std::size_t chunk, Slot& result);
+  // Solves the chunk into its slot of the window; false (failure_ set, every thread told to stop) if a
+  // scene threw.
+  bool solve_chunk(std::size_t chunk);
+  // Whether a chunk is left to take within the window (under mutex_).
+  bool can_take() const { return next_to_take_ < chunks_ && next_to_take_ < next_to_write_ + window_; }
   void stop_workers();
 
   const std::size_t n_;
@@ -82,12 +86,12 @@ class OrderedSweep {
   std::exception_ptr failure_;
 };
 
-bool OrderedSweep::solve_chunk(std::size_t chunk, Slot& result) {
+bool OrderedSweep::solve_chunk(std::size_t chunk) {
+  Slot result;
   try {
     const Emit into_slot = [&](const std::string& text) { result.text += text; };
     for (std::size_t scene = chunk * chunk_; scene < std::min(n_, (chunk + 1) * chunk_); ++scene)
       result.ok = one_(scene, into_slot) && result.ok;
-    return true;
   } catch (...) {
     std::lock_guard lock(mutex_);
     if (!failure_) failure_ = std::current_exception();
@@ -96,6 +100,11 @@ bool OrderedSweep::solve_chunk(std::size_t chunk, Slot& result) {
     space_.notify_all();
     return false;
   }
+  result.done = true;
+  std::lock_guard lock(mutex_);
+  slots_[chunk % window_] = std::move(result);
+  solved_.notify_all();
+  return true;
 }
 
 void OrderedSweep::work() {
@@ -103,16 +112,11 @@ void OrderedSweep::work() {
     std::size_t i;
     {
       std::unique_lock lock(mutex_);
-      space_.wait(lock, [&] { return stop_ || next_to_take_ >= chunks_ || next_to_take_ < next_to_write_ + window_; });
+      space_.wait(lock, [&] { return stop_ || next_to_take_ >= chunks_ || can_take(); });
       if (stop_ || next_to_take_ >= chunks_) return;
       i = next_to_take_++;
     }
-    Slot result;
-    if (!solve_chunk(i, result)) return;
-    result.done = true;
-    std::lock_guard lock(mutex_);
-    slots_[i % window_] = std::move(result);
-    solved_.notify_all();
+    if (!solve_chunk(i)) return;
   }
 }
 
@@ -153,18 +157,14 @@ bool OrderedSweep::run(RowWriter& writer) {
           ++next_to_write_;
           break;
         }
-        if (next_to_take_ >= chunks_ || next_to_take_ >= next_to_write_ + window_) {
+        if (!can_take()) {
           // Chunk w is a worker's: wait for it.
           solved_.wait(lock, [&] { return slots_[w % window_].done || failure_; });
           continue;
         }
         mine = next_to_take_++;
       }
-      Slot result;
-      if (!solve_chunk(mine, result)) continue;  // failure_ is set: rethrown above
-      result.done = true;
-      std::lock_guard lock(mutex_);
-      slots_[mine % window_] = std::move(result);
+      solve_chunk(mine);  // on failure, failure_ is set: rethrown above
     }
     space_.notify_all();
     all_ok = slot.ok && all_ok;
