@@ -135,6 +135,15 @@ double thinnest(MarginFunction& f, double lo, double f_lo, double hi, double f_h
       if (below <= lo) break;
       const double f_below = f(below);
       if (f_below < 0) break;
+      if (f_below == 0) {
+        // Zero over an interval: a joint whose force vanishes (voussoirs that carry no load between
+        // loaded ones, with H = 0) leaves no margin to give at any thickness that stands. Bisect on
+        // whether it stands.
+        const double c = 0.5 * (lo + below), f_c = f(c);
+        if (f_c >= 0) hi = c, f_hi = f_c;
+        else lo = c, f_lo = f_c, hi = below, f_hi = f_below;
+        continue;
+      }
       hi = below;
       f_hi = f_below;
       continue;
@@ -325,6 +334,7 @@ Thinnest search_thinnest(MarginFunction& f, double t, double margin, bool admiss
 struct HorizontalCollapse {
   ThrustState state;
   double mechanism = kNaN;
+  std::vector<Hinge> mechanism_hinges;  // the mechanism's (limit_detail::least_mechanism); empty: none
 };
 
 bool horizontal_collapse(const Ring& ring, double friction, Work& work, HorizontalCollapse& r, int& lp_solves) {
@@ -344,8 +354,23 @@ bool horizontal_collapse(const Ring& ring, double friction, Work& work, Horizont
   shaken.acceleration = c.load_factor;
   r.state = thrust_state(shaken, c.H, c.V, c.M, 1.0);
   r.state.load_factor = c.load_factor;
-  r.mechanism = mechanism_horizontal_load_factor(ring, r.state.hinges);
+  limit_detail::LeastMechanism m = limit_detail::least_mechanism(ring, r.state.hinges, limit_detail::LiveKind::horizontal);
+  r.mechanism = m.factor;
+  r.mechanism_hinges = std::move(m.hinges);
   return true;
+}
+
+// Empty when the static multiplier of a collapse and the kinematic one of its hinges agree (or one is
+// absent); else why the status cannot be success. The two are the same number computed twice (the
+// thrust line passes through the mechanism's hinges, so the virtual work of its loads vanishes at the
+// static multiplier): a difference says that the program's answer is off by as much.
+std::string disagreement(const char* what, double static_factor, double kinematic_factor) {
+  if (std::isnan(static_factor) || std::isnan(kinematic_factor)) return {};
+  const double scale = std::max(std::abs(static_factor), std::abs(kinematic_factor));
+  if (std::abs(static_factor - kinematic_factor) <= kStaticKinematicTolerance * scale) return {};
+  return fmt::format("the {} of the linear program ({:.6g}) and the virtual work of its mechanism ({:.6g}) "
+                     "disagree: the program's answer is not to be trusted",
+                     what, static_factor, kinematic_factor);
 }
 
 // One analysis on the ring whose joints are `refined` and the loads' (fractions_at), and where the next
@@ -363,9 +388,22 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   limit_detail::make_ring_at(scene, options, fractions_at(scene, scene.thickness, options, refined), r.ring,
                              work.scratch);
   const Ring& ring = r.ring;
-  if (!(ring.total_dead() != 0.0 || ring.has_live_load()))
-    throw std::invalid_argument(
-        "loads: the ring carries no load (density 0, and the fills lie below the extrados over the whole span)");
+  if (!(ring.total_dead() != 0.0 || ring.has_live_load())) {
+    // Scene::validate lets density 0 pass with a fill; a fill whose level lies below the extrados over
+    // the whole span (it meets the extrados beyond the springing's vertical) loads nothing, and a ring
+    // that carries nothing has no thrust, no thinnest thickness and no mechanism to find. A fill that
+    // reaches the extrados over any part of the span is a scene: the unloaded voussoirs carry its thrust.
+    double level = 0;
+    for (const FillLoad& fill : scene.loads.fills)
+      if (fill.density > 0) level = std::max(level, fill.height_ratio);
+    if (!(level > 0))
+      throw std::invalid_argument("density, fill_density: with no self-weight and no fill's weight (both 0) and no "
+                                  "point or live load the ring carries nothing: nothing to analyse");
+    throw std::invalid_argument(fmt::format(
+        "fill_height_ratio: the fill's level ({} of the span) lies below the arch's extrados over the whole span, "
+        "so the fill loads nothing, and with density 0 the ring has no weight: nothing to analyse",
+        level));
+  }
   const bool live = ring.has_live_load();
   const double load_factor = live ? 1.0 : 0.0;  // the H range and t_min: under the loads as given
 
@@ -402,11 +440,13 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
       else unbounded_thrust = true;
     }
   }
+  limit_detail::LeastMechanism mechanism;
   if (live) {
     const LimitLp::Answer c = solve_warm(lp, work.collapse_basis, [&](Warm w) { return lp.collapse(w); });
     if (c.outcome == LimitLp::Outcome::optimal) {
       r.collapse_state = state(c);
-      r.load_factor_mechanism = mechanism_load_factor(ring, r.collapse_state.hinges);
+      mechanism = limit_detail::least_mechanism(ring, r.collapse_state.hinges, limit_detail::LiveKind::vertical);
+      r.load_factor_mechanism = mechanism.factor;
     } else if (c.outcome == LimitLp::Outcome::failure) {
       return fail("the collapse load");
     }
@@ -434,6 +474,16 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
     limit_detail::add_refinement(ring, st->hinges, round.refinement);
   if (!std::isnan(r.thickness_min))
     round.refinement.insert(round.refinement.end(), f.feasible_refinement.begin(), f.feasible_refinement.end());
+  // The next ring is refined next to every joint the collapse state touches; the result lists the
+  // mechanism's hinges (a thrust line along a face touches a run of joints, of which the mechanism needs
+  // one).
+  if (!mechanism.hinges.empty()) r.collapse_state.hinges = std::move(mechanism.hinges);
+  if (const std::string why = disagreement("collapse load factor", r.load_factor(), r.load_factor_mechanism);
+      !why.empty()) {
+    r.status = LimitStatus::lp_failure;
+    r.message = why;
+    return round;
+  }
   if (!admissible) {
     r.status = LimitStatus::inadmissible;
     const char* where = options.friction > 0 ? "inside the arch and its joints' friction cones" : "inside the arch";
@@ -589,6 +639,14 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
     r.horizontal_state = std::move(h.collapse.state);
     r.horizontal_load_factor_mechanism = h.collapse.mechanism;
     r.horizontal_ring = std::move(h.ring);
+    if (!h.collapse.mechanism_hinges.empty()) r.horizontal_state.hinges = std::move(h.collapse.mechanism_hinges);
+    if (const std::string why = disagreement("collapse acceleration", r.horizontal_load_factor(),
+                                             r.horizontal_load_factor_mechanism);
+        !why.empty()) {
+      r.status = LimitStatus::lp_failure;
+      r.message = r.message.empty() ? why : why + "; " + r.message;
+      return r;
+    }
     if (!h.converged) {
       if (r.status == LimitStatus::success) r.status = LimitStatus::not_converged;
       const std::string text = fmt::format("the collapse acceleration still moved by {:.3g} (relative) at the last "

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <compare>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -85,6 +86,15 @@ enum class LpSolver { dense, clp };
 // 1, pushed by Ring::acceleration), or the horizontal acceleration of the dead loads (the acceleration
 // a_c of collapse; every vertical load at factor 1, Ring::acceleration ignored).
 enum class LiveKind { vertical, horizontal };
+
+// The mechanism_load_factor (live == vertical) or mechanism_horizontal_load_factor (horizontal) of
+// the hinges, and the hinges of the mechanism that gives it: the given ones (sorted by joint) when they
+// are four or fewer, else the four of the least admissible mechanism; empty (and NaN) when none is one.
+struct LeastMechanism {
+  double factor = std::numeric_limits<double>::quiet_NaN();
+  std::vector<Hinge> hinges;
+};
+LeastMechanism least_mechanism(const Ring& ring, const std::vector<Hinge>& hinges, LiveKind live);
 
 // The linear programs of one ring and its loads. Unknowns: the thrust H, the left support's vertical
 // reaction V and moment M about the origin, the load factor lambda and the margin mu. Joint j carries

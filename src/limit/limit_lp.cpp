@@ -50,6 +50,11 @@ constexpr double kMaxMargin = 1.0;
 // Feasibility and optimality tolerances of the scaled programs (coefficients of order one).
 constexpr double kFeasibility = 1e-11;
 
+// The ratio of the live to the dead load (either way) beyond which the collapse program is solved in
+// units of the dead load (LimitLp::collapse): below it the two scales differ by less than this factor, and
+// the answers by far less than the limit tolerance.
+constexpr double kCollapseScaleRatio = 1e3;
+
 using Inequality = DenseRow;
 
 // LimitLp's rows end with the caps: unknown c's z_c <= cap at 2c and -z_c <= cap at 2c + 1 from there.
@@ -113,6 +118,10 @@ struct LimitLp::Impl {
   LiveKind live = LiveKind::vertical;
   std::vector<Inequality> rows;
   double weight = 1, span = 1;  // the scales: forces in W, lengths in L
+  double dead_weight = 0, live_weight = 0;  // the dead and the live loads in magnitude (W their sum)
+  int joint_rows = 0;  // the rows of the joints, before the sign and cap rows
+  // lambda = lambda_scale times the program's own unknown (1 but in the collapse at the loads' scale)
+  double lambda_scale = 1;
   mutable int fallbacks = 0;
   std::vector<RowKey> keys;  // each row's, ascending
   // Work areas kept from one program (and one ring) to the next.
@@ -146,8 +155,14 @@ LimitLp::LimitLp(const Ring& ring, double friction, LpWorkspace* workspace, LpSo
 
 void LimitLp::load(const Ring& ring, double friction) {
   // The force scale: every load in magnitude (1 for a ring loaded with nothing, where any scale will do).
-  double W = 0;
-  for (const Voussoir& v : ring.voussoirs) W += std::abs(v.dead().force) + std::abs(v.live.force);
+  double dead = 0, live = 0;
+  for (const Voussoir& v : ring.voussoirs) {
+    dead += std::abs(v.dead().force);
+    live += std::abs(v.live.force);
+  }
+  impl_->dead_weight = dead;
+  impl_->live_weight = live;
+  double W = dead + live;
   if (!(W > 0)) W = 1;
   const double L = ring.span;
   impl_->weight = W;
@@ -197,6 +212,7 @@ void LimitLp::load(const Ring& ring, double friction) {
     for (std::size_t r = first; r < rows.size(); ++r) keys.push_back({ring.joints[j].s, static_cast<int>(r - first)});
   }
   const std::size_t tail = rows.size();
+  impl_->joint_rows = static_cast<int>(tail);
   // The sign of H and lambda, and the caps. Under a horizontal acceleration the left springing may pull
   // (H < 0: the leeward side holds the arch), so H's row bounds it only beyond the caps.
   rows.push_back({{-1, 0, 0, 0, 0}, a == 0 && !horizontal ? 0.0 : 2 * kCap});
@@ -225,7 +241,7 @@ LimitLp::Answer LimitLp::Impl::unscaled(std::array<double, kUnknowns> z, const O
   a.H = z[kH] * weight;
   a.V = z[kV] * weight;
   a.M = z[kM] * weight * span;
-  a.load_factor = z[kLambda];
+  a.load_factor = z[kLambda] * lambda_scale;
   a.margin = z[kMu];
   a.outcome = Outcome::optimal;
   for (int c = 0; c < kUnknowns; ++c)
@@ -371,7 +387,38 @@ LimitLp::Answer LimitLp::margin(double load_factor, const std::vector<int>* warm
 LimitLp::Answer LimitLp::collapse(const std::vector<int>* warm) {
   ++solves_;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  return impl_->optimise(pushing(kLambda, true), {nan, nan, nan, nan, 0.0}, warm);
+  Impl& p = *impl_;
+  const double dead = p.dead_weight, live = p.live_weight;
+  // At collapse the live load is lambda_c times its value at factor 1, of the order of the dead load
+  // (the mechanism's work balances): when the two differ by orders of magnitude, the program in units of
+  // their sum sees the loads at collapse at the scale of its tolerances (a point load 1e10 times the
+  // self-weight gave a thrust line touching every joint and twice the true multiplier), or lambda_c
+  // beyond its cap. The collapse is then solved in units of the dead load, lambda in units of the dead
+  // over the live load: every joint row times W / dead (its right-hand side and lambda's coefficient;
+  // the geometric coefficients of H, V and M keep their value with H, V, M in the new unit), lambda's
+  // coefficient also times dead / live.
+  if (p.live == LiveKind::vertical && dead > 0 && live > 0 &&
+      (live > kCollapseScaleRatio * dead || dead > kCollapseScaleRatio * live)) {
+    const std::vector<Inequality> given = p.rows;
+    const double to_dead = p.weight / dead, per_lambda = dead / live;
+    for (int r = 0; r < p.joint_rows; ++r) {
+      Inequality& row = p.rows[static_cast<std::size_t>(r)];
+      row.b *= to_dead;
+      row.a[kLambda] *= to_dead * per_lambda;
+      double sum = 0;
+      for (double x : row.a) sum += x * x;
+      row.norm = std::sqrt(sum);
+    }
+    const double weight = p.weight;
+    p.weight = dead;
+    p.lambda_scale = per_lambda;
+    Answer a = p.optimise(pushing(kLambda, true), {nan, nan, nan, nan, 0.0}, warm);
+    p.rows = given;
+    p.weight = weight;
+    p.lambda_scale = 1;
+    return a;
+  }
+  return p.optimise(pushing(kLambda, true), {nan, nan, nan, nan, 0.0}, warm);
 }
 
 LimitLp::Answer LimitLp::least_work(double load_factor, double per_H, double per_V, const std::vector<int>* warm) {

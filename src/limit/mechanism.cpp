@@ -85,13 +85,22 @@ double one_mechanism(const Ring& ring, const std::vector<Hinge>& h, limit_detail
   return -dead_work / live_work;
 }
 
-double least_mechanism(const Ring& ring, const std::vector<Hinge>& hinges, limit_detail::LiveKind live) {
-  if (hinges.size() < 3) return kNaN;
+}  // namespace
+
+namespace limit_detail {
+
+LeastMechanism least_mechanism(const Ring& ring, const std::vector<Hinge>& hinges, LiveKind live) {
+  LeastMechanism out;
+  if (hinges.size() < 3) return out;
   std::vector<Hinge> sorted = hinges;
   std::sort(sorted.begin(), sorted.end(), [](const Hinge& a, const Hinge& b) { return a.joint < b.joint; });
   for (std::size_t i = 1; i < sorted.size(); ++i)
-    if (sorted[i].joint == sorted[i - 1].joint) return kNaN;
-  if (sorted.size() <= 4) return one_mechanism(ring, sorted, live);
+    if (sorted[i].joint == sorted[i - 1].joint) return out;
+  if (sorted.size() <= 4) {
+    out.factor = one_mechanism(ring, sorted, live);
+    if (!std::isnan(out.factor)) out.hinges = std::move(sorted);
+    return out;
+  }
   // A thrust line tangent to a face touches a run of consecutive joints on it (the finer the joints,
   // the longer the run): the first, middle and last of each run stand for it.
   std::vector<Hinge> h;
@@ -103,32 +112,35 @@ double least_mechanism(const Ring& ring, const std::vector<Hinge>& hinges, limit
     if (j - i > 1) h.push_back(sorted[j - 1]);
     i = j;
   }
-  if (h.size() > kMaxMechanismHinges) return kNaN;
+  if (h.size() > kMaxMechanismHinges) return out;
   // More hinges than a one-degree mechanism has (a degenerate optimum: e.g. the thrust line along an
   // intrados chord touches two adjacent joints): every admissible mechanism of four of them is an upper
   // bound (the kinematic theorem); the least is the multiplier of these hinges.
-  double best = kNaN;
   const std::size_t n = h.size();
   for (std::size_t a = 0; a < n; ++a)
     for (std::size_t b = a + 1; b < n; ++b)
       for (std::size_t c = b + 1; c < n; ++c)
         for (std::size_t d = c + 1; d < n; ++d) {
-          const double m = one_mechanism(ring, {h[a], h[b], h[c], h[d]}, live);
-          if (!std::isnan(m) && !(m >= best)) best = m;
+          std::vector<Hinge> four{h[a], h[b], h[c], h[d]};
+          const double m = one_mechanism(ring, four, live);
+          if (!std::isnan(m) && !(m >= out.factor)) {
+            out.factor = m;
+            out.hinges = std::move(four);
+          }
         }
-  return best;
+  return out;
 }
 
-}  // namespace
+}  // namespace limit_detail
 
 double mechanism_load_factor(const Ring& ring, const std::vector<Hinge>& hinges) {
   if (!ring.has_live_load()) return kNaN;
-  return least_mechanism(ring, hinges, limit_detail::LiveKind::vertical);
+  return limit_detail::least_mechanism(ring, hinges, limit_detail::LiveKind::vertical).factor;
 }
 
 double mechanism_horizontal_load_factor(const Ring& ring, const std::vector<Hinge>& hinges) {
   if (!(ring.total_dead() != 0.0)) return kNaN;
-  return least_mechanism(ring, hinges, limit_detail::LiveKind::horizontal);
+  return limit_detail::least_mechanism(ring, hinges, limit_detail::LiveKind::horizontal).factor;
 }
 
 }  // namespace ogive

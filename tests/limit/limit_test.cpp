@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "limit/limit_internal.hpp"
 #include "ogive/geometry/curve_families.hpp"
 #include "ogive/limit/limit.hpp"
 #include "support/scenes.hpp"
@@ -247,7 +248,14 @@ TEST_CASE("limit: misuse throws naming the field") {
   Scene empty = paper_scene(0.0, 0.1);
   empty.material.density = 0;
   empty.loads.fills.push_back({1800.0, 0.01});
-  CHECK_THROWS_WITH_AS(analyse_limit(empty, {}), doctest::Contains("loads"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(analyse_limit(empty, {}), doctest::Contains("fill_height_ratio"), std::invalid_argument);
+  // Just below the extrados' height over the springings (sqrt(0.55^2 - 0.5^2) L = 0.229 L at t = 0.1 L):
+  // the same; just above, the fill loads the springers alone, and the ring is solved (the weightless
+  // voussoirs between carry no force: they stand with H = 0).
+  empty.loads.fills.front().height_ratio = 0.228;
+  CHECK_THROWS_WITH_AS(analyse_limit(empty, {}), doctest::Contains("fill_height_ratio"), std::invalid_argument);
+  empty.loads.fills.front().height_ratio = 0.24;
+  CHECK(analyse_limit(empty, {}).status != LimitStatus::lp_failure);
   o = {};
   o.friction = -0.1;
   CHECK_THROWS_WITH_AS(analyse(0.0, 0.1, o), doctest::Contains("friction"), std::invalid_argument);
@@ -654,4 +662,34 @@ TEST_CASE("limit: a_c converges with the starting joints") {
     REQUIRE(coarse.status == LimitStatus::success);
     CHECK(acceleration_gap(coarse.horizontal_load_factor(), fine.horizontal_load_factor()) <= 2 * kConverged);
   }
+}
+
+TEST_CASE("limit: a ring over a pointed crown with radial joints has the joint through the intrados' crown point") {
+  // Beside the vertical crown joint, on each side: the radial joint that meets the intrados at the crown
+  // (fraction 1). A smooth crown, or vertical joints, have no other joint through that point.
+  LimitOptions o;
+  o.joints_count = 21;
+  const Ring pointed = make_ring(paper_scene(0.5, 0.15), o);
+  const int c = pointed.crown_joint();
+  CHECK(pointed.joints.size() == 23);
+  CHECK(pointed.joint_fractions.back() == 1.0);
+  for (int side : {-1, 1}) {
+    const Joint& beside = pointed.joints[static_cast<std::size_t>(c + side)];
+    CHECK((beside.intrados - pointed.joints[static_cast<std::size_t>(c)].intrados).norm() <= 1e-12 * pointed.span);
+    CHECK(side * (beside.extrados.x() - pointed.joints[static_cast<std::size_t>(c)].extrados.x()) > 0);
+    // The wedge between the two joints: its triangle and the sliver of ring between the triangle's
+    // extrados side and the extrados arc (a few per cent of it at most here).
+    const Voussoir& wedge = pointed.voussoirs[static_cast<std::size_t>(side < 0 ? c - 1 : c)];
+    const Eigen::Vector2d a = beside.extrados - beside.intrados,
+                          b = pointed.joints[static_cast<std::size_t>(c)].extrados - beside.intrados;
+    const double triangle = 0.5 * std::abs(a.x() * b.y() - a.y() * b.x()) * 2348.0 * 9.81;
+    CHECK(wedge.weight > triangle);
+    CHECK(wedge.weight < 1.05 * triangle);
+  }
+  // Its own fractions given again build the same ring.
+  const Ring again = limit_detail::make_ring_at(paper_scene(0.5, 0.15), o, pointed.joint_fractions);
+  CHECK(again.joints.size() == pointed.joints.size());
+  CHECK(make_ring(paper_scene(0.0, 0.15), o).joints.size() == 21);
+  o.joints = JointOrientation::vertical;
+  CHECK(make_ring(paper_scene(0.5, 0.15), o).joints.size() == 21);
 }

@@ -46,7 +46,8 @@ namespace ogive {
 // halves' axes meet inside the section, and a line that does not cut the arch in two is not a joint:
 // the crown joint is always vertical through the crown (Curve::crown; for a smooth crown that is also
 // the normal one), and on each side the radial joints are spaced over the axis only up to the point
-// whose normal meets the intrados below the crown.
+// whose normal meets the intrados below the crown, that point's joint (through the intrados' crown point)
+// included.
 enum class JointOrientation {
   radial,    // normal to the axis (default)
   vertical,  // vertical lines through equally spaced points of the intrados
@@ -134,9 +135,11 @@ struct Ring {
   // a (Scene::horizontal_acceleration): each voussoir's dead load also pushes a times itself towards +x,
   // at the same points (the self-weight at the centroid of its weight model, the fill where it bears).
   double acceleration = 0;
-  // Where each side's interior joints lie, ascending in (0, 1): joint i of a side (1 .. m-1, from its
+  // Where each side's interior joints lie, ascending in (0, 1]: joint i of a side (1 .. m-1, from its
   // springing; the same on both sides) has its intrados at fraction joint_fractions[i - 1] of the
-  // intrados' arc length from the springing to the crown's vertical.
+  // intrados' arc length from the springing to the crown's vertical. Fraction 1, at a pointed crown with
+  // radial joints only: the radial joint through the intrados' crown point, beside the vertical crown
+  // joint (the two meet there, and the wedge between them is a voussoir).
   std::vector<double> joint_fractions;
   int crown_joint() const { return static_cast<int>(joints.size() / 2); }
   double total_weight() const;  // N/m, the self-weight
@@ -151,7 +154,8 @@ struct Ring {
 // and unit weight gamma = rho g (N/m^3, >= 0) under its self-weight alone (no pins). Throws
 // std::invalid_argument naming the field for a thickness that does not fit the curve, invalid options,
 // or a whole curve whose crown is a kink that is not symmetric (the vertical crown joint would not
-// cut the arch in two). joints.size() == options.joints_count.
+// cut the arch in two). joints.size() == options.joints_count, plus two at a pointed crown with radial
+// joints (the radial joints through the intrados' crown point: Ring::joint_fractions).
 Ring make_ring(const Curve& curve, double thickness, double unit_weight, const LimitOptions& options);
 
 // The ring of the scene (its curve, thickness, density and gravity) with every load of Scene::loads
@@ -184,7 +188,8 @@ struct ThrustState {
   double load_factor = std::numeric_limits<double>::quiet_NaN();  // multiplier on the live load
   std::vector<Eigen::Vector2d> crossing;  // m, one per joint: the resultant's point on the joint
   std::vector<Hinge> hinges;              // by joint: the pins, and the joints where the crossing is at a
-                                          // face (to 1e-9 of the joint)
+                                          // face (to 1e-9 of the joint); of a collapse state in
+                                          // LimitResult, its mechanism's (see there)
   bool found() const { return !crossing.empty(); }
 };
 
@@ -193,7 +198,9 @@ enum class LimitStatus {
   inadmissible,  // no thrust line fits inside the arch under the given loads (t < t_min): H_min, H_max
                  // and their states are absent; t_min (the thickness at which it would stand) is given
                  // when one exists below the curve's largest thickness
-  lp_failure,    // the LP library stopped without an answer (the message says which problem)
+  lp_failure,    // the LP library stopped without an answer (the message says which problem), or the
+                 // static multiplier of a collapse (load factor, a_c) and the virtual work of its
+                 // mechanism differ by more than kStaticKinematicTolerance (the answer is not trusted)
   not_converged, // the numbers still moved by more than kLimitTolerance at the last refinement of the
                  // joints: the result of the finest ring is given, with the last change in the message
 };
@@ -203,6 +210,10 @@ enum class LimitStatus {
 inline constexpr double kLimitTolerance = 1e-4;
 // The refinements of the joints analyse_limit makes at the most.
 inline constexpr int kMaxLimitRefinements = 10;
+// The relative difference between the static multiplier of a collapse (load factor, a_c) and the
+// kinematic one of its hinges beyond which the result is an lp_failure: the two are one number computed
+// twice, equal to round-off when the program's answer is right.
+inline constexpr double kStaticKinematicTolerance = 1e-6;
 // The most hinges the mechanism check takes: beyond, the four-hinge subsets are too many to try.
 inline constexpr std::size_t kMaxMechanismHinges = 12;
 const char* to_string(LimitStatus s);
@@ -221,7 +232,10 @@ struct LimitResult {
   // With a live load: the largest multiplier of the live load that the arch carries (dead loads
   // times 1), its state with the collapse mechanism's hinges, and the kinematic multiplier of the same
   // hinges by virtual work (mechanism_load_factor); absent without a live load, or when the arch cannot
-  // carry its dead loads alone.
+  // carry its dead loads alone. The hinges (here and in horizontal_state) are the mechanism's: of the
+  // joints the thrust line touches (a run of them where it runs along a face), the four (pins included)
+  // of the least admissible one-degree mechanism; every touched joint when none is one (a joint slides,
+  // with friction) and the message says so.
   ThrustState collapse_state;
   double load_factor_mechanism = std::numeric_limits<double>::quiet_NaN();
   // The horizontal acceleration a_c (towards +x, a fraction of g) that turns the arch into a mechanism,
