@@ -360,6 +360,25 @@ bool horizontal_collapse(const Ring& ring, double friction, Work& work, Horizont
   return true;
 }
 
+// Throws std::invalid_argument when nothing loads the ring. Scene::validate lets density 0 pass with a
+// fill; a fill whose level lies below the extrados over the whole span (it meets the extrados beyond the
+// springing's vertical) loads nothing, and a ring that carries nothing has no thrust, no thinnest
+// thickness and no mechanism to find. A fill that reaches the extrados over any part of the span is a
+// scene: the unloaded voussoirs carry its thrust.
+void require_loaded(const Scene& scene, const Ring& ring) {
+  if (ring.total_dead() != 0.0 || ring.has_live_load()) return;
+  double level = 0;
+  for (const FillLoad& fill : scene.loads.fills)
+    if (fill.density > 0) level = std::max(level, fill.height_ratio);
+  if (!(level > 0))
+    throw std::invalid_argument("density, fill_density: with no self-weight and no fill's weight (both 0) and no "
+                                "point or live load the ring carries nothing: nothing to analyse");
+  throw std::invalid_argument(fmt::format(
+      "fill_height_ratio: the fill's level ({} of the span) lies below the arch's extrados over the whole span, "
+      "so the fill loads nothing, and with density 0 the ring has no weight: nothing to analyse",
+      level));
+}
+
 // Empty when the static multiplier of a collapse and the kinematic one of its hinges agree (or one is
 // absent); else why the status cannot be success. The two are the same number computed twice (the
 // thrust line passes through the mechanism's hinges, so the virtual work of its loads vanishes at the
@@ -388,22 +407,7 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   limit_detail::make_ring_at(scene, options, fractions_at(scene, scene.thickness, options, refined), r.ring,
                              work.scratch);
   const Ring& ring = r.ring;
-  if (!(ring.total_dead() != 0.0 || ring.has_live_load())) {
-    // Scene::validate lets density 0 pass with a fill; a fill whose level lies below the extrados over
-    // the whole span (it meets the extrados beyond the springing's vertical) loads nothing, and a ring
-    // that carries nothing has no thrust, no thinnest thickness and no mechanism to find. A fill that
-    // reaches the extrados over any part of the span is a scene: the unloaded voussoirs carry its thrust.
-    double level = 0;
-    for (const FillLoad& fill : scene.loads.fills)
-      if (fill.density > 0) level = std::max(level, fill.height_ratio);
-    if (!(level > 0))
-      throw std::invalid_argument("density, fill_density: with no self-weight and no fill's weight (both 0) and no "
-                                  "point or live load the ring carries nothing: nothing to analyse");
-    throw std::invalid_argument(fmt::format(
-        "fill_height_ratio: the fill's level ({} of the span) lies below the arch's extrados over the whole span, "
-        "so the fill loads nothing, and with density 0 the ring has no weight: nothing to analyse",
-        level));
-  }
+  require_loaded(scene, ring);
   const bool live = ring.has_live_load();
   const double load_factor = live ? 1.0 : 0.0;  // the H range and t_min: under the loads as given
 

@@ -155,14 +155,14 @@ LimitLp::LimitLp(const Ring& ring, double friction, LpWorkspace* workspace, LpSo
 
 void LimitLp::load(const Ring& ring, double friction) {
   // The force scale: every load in magnitude (1 for a ring loaded with nothing, where any scale will do).
-  double dead = 0, live = 0;
+  double W = 0, dead = 0, live = 0;
   for (const Voussoir& v : ring.voussoirs) {
+    W += std::abs(v.dead().force) + std::abs(v.live.force);
     dead += std::abs(v.dead().force);
     live += std::abs(v.live.force);
   }
   impl_->dead_weight = dead;
   impl_->live_weight = live;
-  double W = dead + live;
   if (!(W > 0)) W = 1;
   const double L = ring.span;
   impl_->weight = W;
