@@ -25,6 +25,10 @@ constexpr double kThinnestResolved = 1e-6;
 // The relative width of the bracket on t at which the root-finder stops.
 constexpr double kThicknessTolerance = 1e-10;
 
+// A margin this close below zero (the programs' feasibility tolerance, in the same units) may be the
+// round-off of a margin of zero: the thrust programs, which fix it at zero, decide.
+constexpr double kMarginTolerance = 1e-11;
+
 // The margin given to a program infeasible for every mu (friction can forbid every thrust line): a
 // negative number for the root-finder, which needs only the sign.
 constexpr double kNoMargin = -1.0;
@@ -38,6 +42,9 @@ std::vector<double> fractions_at(const Scene& scene, double t, const LimitOption
   f.insert(f.end(), at_loads.begin(), at_loads.end());
   return limit_detail::merged_fractions(std::move(f));
 }
+
+// A joint whose force is below this fraction of the ring's load carries none (ThrustState::forceless).
+constexpr double kForceless = 1e-9;
 
 // A joint whose crossing lies this close to a face (relative to the joint) is a hinge of the thinnest
 // arch: at t_min the margin is zero to the root-finder's tolerance, not to round-off.
@@ -191,6 +198,11 @@ ThrustState thrust_state(const Ring& ring, double H, double V_left, double M_lef
   st.load_factor = live ? load_factor : kNaN;
   st.V_right = ring.total_dead() + lambda * ring.total_live() - V_left;
   st.crossing.reserve(ring.joints.size());
+  // The scale below which a joint's force is none: the loads' (vanishing at no joint of a ring with
+  // weight, where the thrust is at least the weight's share).
+  const std::size_t last = ring.joints.size() - 1;
+  const double forceless = kForceless * (std::abs(left.dead[last].force) + std::abs(lambda * left.live[last].force) +
+                                         std::abs(ring.acceleration * left.dead[last].force));
   std::size_t pin = 0;
   for (std::size_t j = 0; j < ring.joints.size(); ++j) {
     const Joint& joint = ring.joints[j];
@@ -206,6 +218,10 @@ ThrustState thrust_state(const Ring& ring, double H, double V_left, double M_lef
     const Eigen::Vector2d d = joint.extrados - joint.intrados;
     const double u = (moment - cross(joint.intrados, F)) / cross(d, F);
     st.crossing.push_back(joint.intrados + u * d);
+    if (F.norm() <= forceless && !(pin < ring.pins.size() && ring.pins[pin] == static_cast<int>(j))) {
+      st.forceless = true;
+      continue;
+    }
     if (pin < ring.pins.size() && ring.pins[pin] == static_cast<int>(j)) {
       st.hinges.push_back({static_cast<int>(j), Face::axis, joint.axis});
       ++pin;
@@ -308,7 +324,9 @@ struct Thinnest {
 Thinnest search_thinnest(MarginFunction& f, double t, double margin, bool admissible, double floor, double cap,
                          double near) {
   Thinnest out;
-  if (!admissible && margin >= 0) {  // a zero margin whose thrust programs are infeasible: t is t_min to round-off
+  // A zero margin whose thrust programs are infeasible, or a margin below zero by round-off whose thrust
+  // programs are feasible: t is t_min to round-off.
+  if ((!admissible && margin >= 0) || (admissible && margin < 0)) {
     out.t_min = t;
     return out;
   }
@@ -426,7 +444,9 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   LimitLp::Answer margin = solve_warm(lp, work.margin_basis, [&](Warm w) { return lp.margin(load_factor, w); });
   if (margin.outcome == LimitLp::Outcome::infeasible) margin.margin = kNoMargin;
   else if (margin.outcome != LimitLp::Outcome::optimal) return fail("the feasibility margin");
-  bool admissible = margin.margin >= 0;
+  // A margin within the programs' tolerance of zero (the thrust vanishing at some joint leaves none to
+  // give) is decided by the thrust programs' feasibility below.
+  bool admissible = margin.margin >= -kMarginTolerance;
   bool unbounded_thrust = false;
   if (admissible) {
     const LimitLp::Answer lo =
@@ -463,10 +483,15 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
                    std::numeric_limits<double>::infinity(), {}, static_cast<int>(ring.joints.size())};
   const double t = scene.thickness;
   const double t_cap = 0.99 * max_thickness(curve);
+  // Where the thrust vanishes at some joint the margin is zero at every thickness that stands (no
+  // distance from the faces to give): its sign is the round-off's, and t_min is not searched.
+  const bool forceless = r.min_state.forceless || r.max_state.forceless;
   const Thinnest thinnest_arch =
-      search_thinnest(f, t, margin.margin, admissible, kThinnestResolved * curve.span(), t_cap, previous_t_min);
+      forceless ? Thinnest{}
+                : search_thinnest(f, t, margin.margin, admissible, kThinnestResolved * curve.span(), t_cap,
+                                  previous_t_min);
   r.thickness_min = thinnest_arch.t_min;
-  const bool bracketed = thinnest_arch.bracketed || !std::isnan(thinnest_arch.t_min);
+  const bool bracketed = forceless || thinnest_arch.bracketed || !std::isnan(thinnest_arch.t_min);
   const double hi = thinnest_arch.hi;
   r.lp_solves += f.solves;
   if (f.failed) {
@@ -499,6 +524,9 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   r.status = LimitStatus::success;
   if (!bracketed) r.message = fmt::format("t_min below {} m: not searched further", hi);
   auto note = [&](const std::string& text) { r.message += (r.message.empty() ? "" : "; ") + text; };
+  if (forceless)
+    note("the thrust vanishes at some joints (voussoirs without weight or load between loaded ones): no margin "
+         "there to search t_min by, and no hinge");
   if (unbounded_thrust) note("no largest thrust: a thrust line of any H fits inside the arch (H_max absent)");
   if (live && std::isnan(r.load_factor()))
     note("the live load cannot turn the arch into a mechanism (no finite load factor)");

@@ -189,7 +189,11 @@ struct ThrustState {
   std::vector<Eigen::Vector2d> crossing;  // m, one per joint: the resultant's point on the joint
   std::vector<Hinge> hinges;              // by joint: the pins, and the joints where the crossing is at a
                                           // face (to 1e-9 of the joint); of a collapse state in
-                                          // LimitResult, its mechanism's (see there)
+                                          // LimitResult, its mechanism's (see there). A joint that
+                                          // carries no force is none (forceless).
+  // Some joint carries no force (|F| below 1e-9 of the load): voussoirs without weight or load between
+  // loaded ones, with H = 0. Its crossing is undefined (where the round-off puts it).
+  bool forceless = false;
   bool found() const { return !crossing.empty(); }
 };
 
