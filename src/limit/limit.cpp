@@ -397,17 +397,20 @@ void require_loaded(const Scene& scene, const Ring& ring) {
       level));
 }
 
-// Empty when the static multiplier of a collapse and the kinematic one of its hinges agree (or one is
-// absent); else why the status cannot be success. The two are the same number computed twice (the
+// Makes r an lp_failure, and says why, when the static multiplier of a collapse and the kinematic one of
+// its hinges disagree (neither absent); true then. The two are the same number computed twice (the
 // thrust line passes through the mechanism's hinges, so the virtual work of its loads vanishes at the
 // static multiplier): a difference says that the program's answer is off by as much.
-std::string disagreement(const char* what, double static_factor, double kinematic_factor) {
-  if (std::isnan(static_factor) || std::isnan(kinematic_factor)) return {};
+bool fails_virtual_work(LimitResult& r, const char* what, double static_factor, double kinematic_factor) {
+  if (std::isnan(static_factor) || std::isnan(kinematic_factor)) return false;
   const double scale = std::max(std::abs(static_factor), std::abs(kinematic_factor));
-  if (std::abs(static_factor - kinematic_factor) <= kStaticKinematicTolerance * scale) return {};
-  return fmt::format("the {} of the linear program ({:.6g}) and the virtual work of its mechanism ({:.6g}) "
-                     "disagree: the program's answer is not to be trusted",
-                     what, static_factor, kinematic_factor);
+  if (std::abs(static_factor - kinematic_factor) <= kStaticKinematicTolerance * scale) return false;
+  const std::string why = fmt::format("the {} of the linear program ({:.6g}) and the virtual work of its mechanism "
+                                      "({:.6g}) disagree: the program's answer is not to be trusted",
+                                      what, static_factor, kinematic_factor);
+  r.status = LimitStatus::lp_failure;
+  r.message = r.message.empty() ? why : why + "; " + r.message;
+  return true;
 }
 
 // One analysis on the ring whose joints are `refined` and the loads' (fractions_at), and where the next
@@ -507,12 +510,7 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   // mechanism's hinges (a thrust line along a face touches a run of joints, of which the mechanism needs
   // one).
   if (!mechanism.hinges.empty()) r.collapse_state.hinges = std::move(mechanism.hinges);
-  if (const std::string why = disagreement("collapse load factor", r.load_factor(), r.load_factor_mechanism);
-      !why.empty()) {
-    r.status = LimitStatus::lp_failure;
-    r.message = why;
-    return round;
-  }
+  if (fails_virtual_work(r, "collapse load factor", r.load_factor(), r.load_factor_mechanism)) return round;
   if (!admissible) {
     r.status = LimitStatus::inadmissible;
     const char* where = options.friction > 0 ? "inside the arch and its joints' friction cones" : "inside the arch";
@@ -672,13 +670,8 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
     r.horizontal_load_factor_mechanism = h.collapse.mechanism;
     r.horizontal_ring = std::move(h.ring);
     if (!h.collapse.mechanism_hinges.empty()) r.horizontal_state.hinges = std::move(h.collapse.mechanism_hinges);
-    if (const std::string why = disagreement("collapse acceleration", r.horizontal_load_factor(),
-                                             r.horizontal_load_factor_mechanism);
-        !why.empty()) {
-      r.status = LimitStatus::lp_failure;
-      r.message = r.message.empty() ? why : why + "; " + r.message;
+    if (fails_virtual_work(r, "collapse acceleration", r.horizontal_load_factor(), r.horizontal_load_factor_mechanism))
       return r;
-    }
     if (!h.converged) {
       if (r.status == LimitStatus::success) r.status = LimitStatus::not_converged;
       const std::string text = fmt::format("the collapse acceleration still moved by {:.3g} (relative) at the last "
