@@ -386,14 +386,18 @@ Solution solve_quadrature(std::shared_ptr<const ArchModel> model, const Options&
     return still.symmetric();
   }();
   if (!(model->half() || shaken_symmetric) || !model->uniform_load() ||
-      model->scene().left.kind != SupportKind::clamped) {
+      model->scene().left.kind != SupportKind::clamped || model->curved()) {
     Solution sol;
     sol.method = Method::quadrature;
     sol.model = model;
     sol.status = Status::not_applicable;
-    sol.message = "the quadrature method treats the symmetric arch with clamped springings under its own weight "
-                  "alone (solved over the half; over the whole arch when a horizontal acceleration shakes it and no "
-                  "crown hinge divides it)";
+    // The curved bar: the nested integrals are those of psi' = M; its psi' = bending M + coupling N and
+    // its self-weight's couple would need the curvature at every node (shooting and the closed form solve it).
+    sol.message = model->curved() ? "the quadrature method solves the euler-bernoulli and timoshenko beams, not the "
+                                    "curved bar (shooting and the closed form do)"
+                                  : "the quadrature method treats the symmetric arch with clamped springings under its "
+                                    "own weight alone (solved over the half; over the whole arch when a horizontal "
+                                    "acceleration shakes it and no crown hinge divides it)";
     return sol;
   }
   std::vector<double> knots{0.0};
