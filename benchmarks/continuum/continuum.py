@@ -376,6 +376,35 @@ def summary():
         print(f"{m}: model_error_estimate >= error on {n} of {len(rows)} rows")
 
 
+def figure(out=os.path.join(TOP, "docs", "figures", "continuum.png")):
+    """Each beam model's H/V error against the continuum over t/L, one panel per arch (plane stress;
+    clamped solid, pinned dashed), drawn by gnuplot."""
+    rows = list(csv.DictReader(open(TABLE)))
+    with tempfile.TemporaryDirectory() as work:
+        script = ["set terminal pngcairo size 1100,820 font 'sans,11' background rgb 'white'", f"set output '{out}'",
+                  "set multiplot layout 2,2 title 'Error of H/V against the plane-stress arch (CalculiX CPS8): "
+                  "solid clamped, dashed pinned'",
+                  "set grid", "set xlabel 't / L'", "set ylabel 'error of H/V, %'", "set key top left font ',9'"]
+        for arch in ARCHES:
+            lines = []
+            for supports, dash in (("clamped", 1), ("pinned", 2)):
+                sel = [r for r in rows if r["arch"] == arch and r["supports"] == supports and r["plane"] == "stress"]
+                if not sel:
+                    continue
+                path = os.path.join(work, f"{arch}-{supports}.dat")
+                with open(path, "w") as f:
+                    for r in sel:
+                        f.write(" ".join([r["t_over_L"]] + [str(100 * float(r[f"{m}_error"])) for m in MODELS]) + "\n")
+                for j, (m, colour) in enumerate(zip(MODELS, ("#1f77b4", "#d62728", "#2ca02c"))):
+                    title = f"title '{m}'" if supports == "clamped" else "notitle"
+                    lines.append(f"'{path}' using 1:{j + 2} with linespoints dt {dash} lw 2 pt 7 ps 0.6 "
+                                 f"lc rgb '{colour}' {title}")
+            script += [f"set title '{arch}'", "plot " + ", ".join(lines) + ", 0 notitle lc rgb 'black'"]
+        script.append("unset multiplot")
+        subprocess.run(["gnuplot"], input="\n".join(script) + "\n", text=True, check=True)
+    print(out)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("what", choices=["check", "reference", "table", "summary", "figure"])
