@@ -212,15 +212,24 @@ TEST_CASE("curved bar: the closed form and shooting agree on it to the tolerance
   }
 }
 
-TEST_CASE("curved bar: the quadrature refuses it, auto solves it on smooth curves by shooting") {
-  const Scene scene = with(catenary_scene(0.1), BeamModel::curved);
-  const Solution q = run(scene, Method::quadrature);
-  CHECK(q.status == Status::not_applicable);
-  CHECK(q.message.find("curved") != std::string::npos);
-  const Solution a = run(scene, Method::automatic, 1e-8);
-  CHECK(a.status == Status::success);
-  CHECK(a.method == Method::shooting);
-  Scene cracking = scene;
+TEST_CASE("curved bar: the quadrature agrees with the closed form on circles and with shooting on a catenary") {
+  for (const Scene& plain : {paper_scene(0.0, 0.15), paper_scene(0.5, 0.2), catenary_scene(0.15)}) {
+    const Scene scene = with(plain, BeamModel::curved);
+    const bool circular = !scene.curve->arcs().empty();
+    CAPTURE(circular);
+    const Solution reference = circular ? run(scene, Method::closed_form) : run(scene, Method::shooting, 1e-11);
+    REQUIRE(reference.status == Status::success);
+    for (double rtol : {1e-6, 1e-10}) {
+      const Solution q = run(scene, Method::quadrature, rtol);
+      REQUIRE(q.status == Status::success);
+      CHECK(thrust_error(q.H_over_V, reference.H_over_V) <= rtol);
+      CHECK(close(q.reactions.M_left, reference.reactions.M_left,
+                  rtol * std::max(std::abs(reference.reactions.M_left), std::abs(reference.reactions.H_left))));
+    }
+    // auto takes the quadrature on the catenary, the closed form on the circles.
+    CHECK(run(scene, Method::automatic, 1e-8).method == (circular ? Method::closed_form : Method::quadrature));
+  }
+  Scene cracking = with(catenary_scene(0.1), BeamModel::curved);
   cracking.section = SectionKind::no_tension;
   CHECK_THROWS_WITH_AS(solve(cracking), doctest::Contains("beam_model"), std::invalid_argument);
 }
