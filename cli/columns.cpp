@@ -84,6 +84,8 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"newton_iterations", "", "no-tension section: Newton iterations, all solves of the row (0 for the elastic section)"},
     {"condition_estimate", "", "Skeel condition number of the boundary-value problem"},
     {"error_estimate", "", "estimated relative error of the row's numbers (thrust eccentricities in units of the kern)"},
+    {"beam_model", "", "the beam theory that produced the numbers: euler-bernoulli, timoshenko or curved (--beam-model; auto: the one it picked)"},
+    {"model_error_estimate", "", "estimated relative error of H_over_V that the beam model makes against the two-dimensional arch: the difference to the curved bar's plus its calibrated bound (docs/model.md); empty unless asked"},
     {"boundary_residual", "", "largest residual of the six boundary conditions (and a hinge's M = 0), scaled units"},
     {"equilibrium_residual", "", "largest residual of the domain's equilibrium (forces, moments) / its load"},
     {"message", "", "why the status is not success; empty on success"},

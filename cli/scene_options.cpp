@@ -162,6 +162,16 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
                  "elastic (linear) or no-tension (cracks where the resultant leaves the kern; Newton on explicit forces "
                  "by quadrature, or shooting; a sweep of support movements is traced in order)")
       ->capture_default_str();
+  cmd.add_option("--beam-model", o.beam_model,
+                 "the beam theory: euler-bernoulli (no shear strain), timoshenko (shear strain V / (k G A), the "
+                 "paper's), curved (a thick curved bar: Winkler-Bach's section, each slice's weight at its "
+                 "centroid; the elastic section) or auto (the least of the three whose model error estimate is "
+                 "within --model-tolerance)")
+      ->capture_default_str();
+  cmd.add_option("--model-tolerance", o.model_tolerance,
+                 "the relative error of H/V the beam model may make against the two-dimensional arch, in (0, 1): "
+                 "rows whose model_error_estimate exceeds it are tolerance_not_met (default: none; 0.01 with "
+                 "--beam-model auto)");
   cmd.add_flag("--crown-hinge", o.crown_hinge,
                "a hinge at the crown (M = 0): the three-hinged arch with --supports pinned");
   cmd.add_option("--loads-file", o.loads_file,

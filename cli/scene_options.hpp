@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <span>
 #include <string>
@@ -76,6 +77,8 @@ struct SceneOptions {
   std::shared_ptr<const Curve> points;  // read once from curve_file
   std::string supports = "clamped", left_support, right_support;
   std::string section = "elastic";
+  std::string beam_model = "timoshenko";
+  double model_tolerance = std::numeric_limits<double>::quiet_NaN();  // --model-tolerance; NaN: not given
   bool crown_hinge = false;
   std::string loads_file;
   Loads file_loads;  // read once from loads_file

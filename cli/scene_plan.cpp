@@ -26,6 +26,10 @@ const std::map<std::string, SupportKind> kSupportKinds = {{"clamped", SupportKin
                                                           {"pinned", SupportKind::pinned}};
 const std::map<std::string, SectionKind> kSectionKinds = {{"elastic", SectionKind::elastic},
                                                           {"no-tension", SectionKind::no_tension}};
+const std::map<std::string, BeamModel> kBeamModels = {{"euler-bernoulli", BeamModel::euler_bernoulli},
+                                                      {"timoshenko", BeamModel::timoshenko},
+                                                      {"curved", BeamModel::curved},
+                                                      {"auto", BeamModel::automatic}};
 
 const CurveFamily& find_family(const std::string& curve) {
   for (const CurveFamily& f : curve_families())
@@ -145,6 +149,15 @@ void ScenePlan::choose_supports(const SceneOptions& o, const CLI::App& cmd) {
                                         : lookup(kSupportKinds, o.right_support, "--right-support");
   if (!o.left_support.empty() || !o.right_support.empty()) lookup(kSupportKinds, o.supports, "--supports");
   section_ = lookup(kSectionKinds, o.section, "--section");
+  beam_model_ = lookup(kBeamModels, o.beam_model, "--beam-model");
+  if (given(cmd, "--model-tolerance") && !(o.model_tolerance > 0 && o.model_tolerance < 1))
+    throw UsageError(fmt::format("--model-tolerance: must lie in (0, 1) (a relative error of H/V), got {}",
+                                 o.model_tolerance));
+  model_tolerance_ = given(cmd, "--model-tolerance") ? o.model_tolerance
+                     : beam_model_ == BeamModel::automatic ? 0.01 : 0.0;
+  if (model_tolerance_ > 0 && section_ != SectionKind::elastic)
+    throw UsageError(fmt::format("{}: the model's error is estimated for --section elastic only",
+                                 beam_model_ == BeamModel::automatic ? "--beam-model auto" : "--model-tolerance"));
   for (const auto& [flag, kind] : {std::pair{"--left-rotation", left_kind_}, {"--right-rotation", right_kind_}})
     if (kind == SupportKind::pinned && given(cmd, flag))
       throw UsageError(fmt::format("{}: does not apply to a pinned springing (it turns freely: its rotation is a "
@@ -317,6 +330,8 @@ ScenePlan::Built ScenePlan::build(const SceneParameters& p) const {
     scene.crown_hinge = options_.crown_hinge;
     scene.horizontal_acceleration = p.horizontal_acceleration;
     scene.section = section_;
+    scene.beam_model = beam_model_;
+    scene.model_tolerance = model_tolerance_;
     scene.loads = options_.file_loads;
     // The force options in the unit of --units (the row echoes them as given).
     if (!std::isnan(p.point_load)) scene.loads.points.push_back({p.point_load * p.force_unit, p.point_load_at});

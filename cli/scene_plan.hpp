@@ -25,6 +25,9 @@ class ScenePlan {
 
   std::size_t size() const { return size_; }
   bool no_tension() const { return section_ == SectionKind::no_tension; }
+  // --beam-model auto or --model-tolerance: each row's model is judged (the beam_model and
+  // model_error_estimate columns are printed by default).
+  bool asks_model_error() const { return beam_model_ == BeamModel::automatic || model_tolerance_ > 0; }
 
   // The columns of the inputs that take more than one value.
   std::vector<std::string> varying_inputs() const;
@@ -53,6 +56,8 @@ class ScenePlan {
   const CurveFamily* family_ = nullptr;
   SupportKind left_kind_ = SupportKind::clamped, right_kind_ = SupportKind::clamped;
   SectionKind section_ = SectionKind::elastic;
+  BeamModel beam_model_ = BeamModel::timoshenko;
+  double model_tolerance_ = 0;
   std::size_t size_ = 1;
   std::string thickness_flag_;   // --thickness-ratio or --thickness: the one the user's thickness came by
   std::string shape_flag_;       // what set the pointed arch's shape: --eccentricity, --rise-ratio, --rise, --radius

@@ -225,6 +225,9 @@ std::string path_rows(const Columns& columns, const SceneParameters& p, const Sc
     const double move = each / most;  // no springing moves more than 1e-2 L either way
     Scene cracking = scene;
     cracking.section = SectionKind::no_tension;
+    // The no-tension section is a straight beam's (the curved bar takes the elastic section only).
+    if (cracking.beam_model != BeamModel::euler_bernoulli) cracking.beam_model = BeamModel::timoshenko;
+    cracking.model_tolerance = 0;
     cracking.left.spread = s.left_moves ? move * p.span : 0;
     cracking.right.spread = s.right_moves ? move * p.span : 0;
     cracking.left.settlement = o.left_settlement_share * move * p.span;

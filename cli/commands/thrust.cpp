@@ -33,7 +33,7 @@ Columns thrust_columns() {
       {"method", "integrator", "rtol", "status", "domain", "H", "V", "H_over_V", "H_left", "V_left", "M_left",
        "H_right", "V_right", "M_right", "max_thrust_eccentricity", "max_thrust_eccentricity_at", "thrust_in_kern",
        "thrust_in_section", "steps", "rhs_evaluations", "segments", "newton_iterations", "condition_estimate",
-       "error_estimate", "boundary_residual", "equilibrium_residual", "message"},
+       "error_estimate", "boundary_residual", "equilibrium_residual", "message", "beam_model", "model_error_estimate"},
       // The thrust line's summary is asked for by name (or --all-columns): it scans the whole field,
       // a few times the cost of the reactions in closed form, which a sweep of 10^6 scenes would feel.
       {"method", "status", "domain", "H", "V", "H_over_V", "H_left", "V_left", "M_left", "H_right", "V_right",
@@ -67,6 +67,7 @@ std::string thrust_row(const Columns& columns, const SceneParameters& p, const S
   row.add(d.steps).add(d.rhs_evaluations).add(d.segments).add(d.newton_iterations);
   row.add(d.condition_estimate).add(d.error_estimate);
   row.add(d.boundary_residual).add(d.equilibrium_residual).add(sol.message);
+  row.add(sol.model ? to_string(sol.model->beam_model()) : "").add(d.model_error_estimate);
   return row.take();
 }
 
@@ -79,7 +80,10 @@ int run_thrust(ThrustOptions& to, const CLI::App& cmd, std::ostream& out) {
   }
   SolverSweep sweep = solver_sweep(to.solver, to.solver_text);
   const ScenePlan plan(to.scene, cmd);
-  columns.select(to.columns, plan.varying_inputs(), sweep.varying);
+  std::vector<std::string> varying = plan.varying_inputs();
+  if (plan.asks_model_error()) varying.insert(varying.end(), {"beam_model", "model_error_estimate"});
+  columns.select(to.columns, varying, sweep.varying);
+  for (Options& o : sweep.combinations) o.estimate_model_error = columns.selected("model_error_estimate");
   const bool summary = columns.selected("max_thrust_eccentricity") || columns.selected("max_thrust_eccentricity_at") ||
                        columns.selected("thrust_in_kern") || columns.selected("thrust_in_section");
   // The summary prints eccentricities: their accuracy must be part of the error estimate (the profile

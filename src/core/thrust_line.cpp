@@ -47,7 +47,11 @@ class Scan {
     ArchState state = model_.to_physical(s, y);
     const double c = std::cos(state.theta), sn = std::sin(state.theta);
     StateVector dy;
-    model_.derivative(c, sn, y.data(), dy.data(), model_.load(s), model_.horizontal_load(s));
+    if (model_.curved())
+      model_.curved_derivative(c, sn, model_.curved_bar(model_.kappa(s)), y.data(), dy.data(), model_.load(s),
+                               model_.horizontal_load(s), true);
+    else
+      model_.derivative(c, sn, y.data(), dy.data(), model_.load(s), model_.horizontal_load(s));
     const double N = c * y[kFx] + sn * y[kFy], V = -sn * y[kFx] + c * y[kFy];
     const double dN = c * dy[kFx] + sn * dy[kFy] + curvature(s * L) * L * V;
     return {s, std::move(state), dy[kM] * N - y[kM] * dN, dN};

@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include <unsupported/Eigen/MatrixFunctions>
+
 #include "methods/bvp.hpp"
 
 namespace ogive {
@@ -130,8 +132,43 @@ double tangent_angle(const ArchModel& model, const CircularArc& arc, double ds) 
   return arc.theta_start + arc.kappa * ds * model.scales().length;
 }
 
+// The curved bar's exp(A8 l) (ArchModel::curved_bar): the same local system with the section's coupling
+// (u' gains coupling M, psi' = bending M + coupling N) and the self-weight's couple (M' gains
+// coupling (b sn - h c)). Its coefficients are constant on the arc too, but no closed formula is derived for
+// them: Eigen's Pade approximant with scaling and squaring takes the exponential to round-off (the matrix'
+// norm is of order |k| l <= 2 pi and a_N <= 1/12: a few squarings).
+ArcMatrix curved_arc_exponential(double k, double l, double aN, double aV, const ArchModel::CurvedBar& bar, double b,
+                                 double h) {
+  ArcMatrix A = ArcMatrix::Zero();
+  A(kUx, kUy) = k;
+  A(kUx, kFx) = aN;
+  A(kUx, kM) = bar.coupling;
+  A(kUy, kUx) = -k;
+  A(kUy, kPsi) = 1.0;
+  A(kUy, kFy) = aV;
+  A(kPsi, kM) = bar.bending;
+  A(kPsi, kFx) = bar.coupling;
+  A(kFx, kFy) = k;
+  A(kFx, kSin) = b;
+  A(kFx, kCos) = -h;
+  A(kFy, kFx) = -k;
+  A(kFy, kCos) = b;
+  A(kFy, kSin) = h;
+  A(kM, kFy) = -1.0;
+  A(kM, kSin) = bar.coupling * b;
+  A(kM, kCos) = -bar.coupling * h;
+  A(kCos, kSin) = -k;
+  A(kSin, kCos) = k;
+  return (A * l).exp();
+}
+
 // exp(A8 l) of a piece of the arc of length l (scaled), with the model's compliances and loads.
 ArcMatrix arc_exponential(const ArchModel& model, const CircularArc& arc, double l) {
+  if (model.curved()) {
+    const double k = arc.kappa * model.scales().length;
+    return curved_arc_exponential(k, l, model.a_N(), model.a_V(), model.curved_bar(k), model.self_weight(),
+                                  model.acceleration() * model.self_weight());
+  }
   return ogive::arc_exponential(arc.kappa * model.scales().length, l, model.a_N(), model.a_V(), model.self_weight(),
                                 model.acceleration() * model.self_weight());
 }

@@ -96,6 +96,40 @@ struct PanelColumns {
   auto component(int k) const { return node.middleCols<kColumns>(k * kColumns); }
 };
 
+// The curved bar (ArchModel::curved_bar) on one panel, from the straight beam's columns: M gains the
+// self-weight's couple on the load column, psi' = bending M + coupling N replaces psi' = M, and the
+// displacements' integrands take the coupled axis strain. Unlike the straight beam's nested integrals of
+// known functions, these read the curvature at every node, and psi takes one cumulative integral a column.
+void curve_panel(const ArchModel& model, const Panel& panel, const ChebyshevRule& rule, const Columns& Y,
+                 PanelColumns& out) {
+  const int n = rule.degree + 1;
+  const Eigen::MatrixXd& Q = rule.integration;
+  const auto c = panel.nodes.col(kCos), sn = panel.nodes.col(kSin), ds = panel.nodes.col(kDs);
+  const auto J = panel.nodes.col(kJacobian);
+  std::vector<ArchModel::CurvedBar> bars(n);
+  for (int i = 0; i < n; ++i) bars[i] = model.curved_bar(model.kappa(panel.a + ds[i]));
+  Eigen::VectorXd f(n), scaled(n), integral(n);
+  const double b = model.self_weight(), a = model.acceleration();
+  for (int i = 0; i < n; ++i) f[i] = bars[i].coupling * b * (sn[i] - a * c[i]);
+  cumulative(Q, J, f, scaled, integral);
+  out.component(kM).col(kLoad) += integral;
+  for (int j = 0; j < kColumns; ++j) {
+    const auto Fx = out.component(kFx).col(j), Fy = out.component(kFy).col(j), M = out.component(kM).col(j);
+    for (int i = 0; i < n; ++i) f[i] = bars[i].bending * M[i] + bars[i].coupling * (c[i] * Fx[i] + sn[i] * Fy[i]);
+    cumulative(Q, J, f, scaled, integral);
+    out.component(kPsi).col(j) = Y(kPsi, j) + integral.array();
+    for (int i = 0; i < n; ++i) {
+      StateVector y, dy;
+      y << 0.0, 0.0, out.component(kPsi)(i, j), Fx[i], Fy[i], M[i];
+      model.curved_derivative(c[i], sn[i], bars[i], y.data(), dy.data(), 0.0, 0.0, false);
+      out.component(kUx)(i, j) = dy[kUx];
+      out.component(kUy)(i, j) = dy[kUy];
+    }
+  }
+  for (int k : {kFx, kFy, kM, kPsi}) out.end.row(k) = out.component(k).row(n - 1);
+  for (int k : {kUx, kUy}) out.end.row(k) = Y.row(k) + Q.row(n - 1) * (J.asDiagonal() * out.component(k));
+}
+
 // The force method's nested integrals from the columns Y at the panel's start, in the order each needs
 // the one before: Fx, Fy, then M, psi, then Ux, Uy. Every column's M' = sn Fx - c Fy is a combination of
 // the same three functions sn, c and c (s - a) (Fx constant, Fy = Fy(a) + load (s - a)), so M and psi
@@ -158,6 +192,7 @@ PanelColumns integrate_panel(const ArchModel& model, const Panel& panel, const C
   // The last row of the integration matrix is the Clenshaw-Curtis rule over the whole panel.
   for (int k : {kUx, kUy})
     out.end.row(k) = Y.row(k) + Q.row(n - 1) * (J.asDiagonal() * out.component(k));
+  if (model.curved()) curve_panel(model, panel, rule, Y, out);
   return out;
 }
 

@@ -22,6 +22,7 @@ class ArchSystem final : public OdeSystem {
  public:
   explicit ArchSystem(const ArchModel& model) : model_(model) {}
   bool rhs(double s, const Eigen::Ref<const OdeMatrix>& Y, Eigen::Ref<OdeMatrix> dY) const override {
+    if (model_.curved()) return curved_rhs(s, Y, dY);
     const ArchModel::SystemEntries A = model_.system_entries(model_.theta(s));
     for (Eigen::Index j = 0; j < Y.cols(); ++j) ArchModel::apply_system_matrix(A, Y.col(j).data(), dY.col(j).data());
     dY(kFy, Y.cols() - 1) += model_.load(s);
@@ -29,11 +30,24 @@ class ArchSystem final : public OdeSystem {
     return true;
   }
   SystemMatrix jacobian_block(double s, const Eigen::Ref<const OdeMatrix>&) const override {
+    if (model_.curved()) return model_.curved_system_matrix(model_.theta(s), model_.curved_bar(model_.kappa(s)));
     return model_.system_matrix(model_.theta(s));
   }
   const std::vector<double>& breakpoints() const override { return model_.breakpoints(); }
 
  private:
+  // The curved bar (ArchModel::curved_bar): its section's terms at s; the self-weight's couple on the
+  // load column.
+  bool curved_rhs(double s, const Eigen::Ref<const OdeMatrix>& Y, Eigen::Ref<OdeMatrix> dY) const {
+    const double theta = model_.theta(s), c = std::cos(theta), sn = std::sin(theta);
+    const ArchModel::CurvedBar bar = model_.curved_bar(model_.kappa(s));
+    const Eigen::Index last = Y.cols() - 1;
+    for (Eigen::Index j = 0; j < last; ++j)
+      model_.curved_derivative(c, sn, bar, Y.col(j).data(), dY.col(j).data(), 0.0, 0.0, false);
+    model_.curved_derivative(c, sn, bar, Y.col(last).data(), dY.col(last).data(), model_.load(s),
+                             model_.horizontal_load(s), true);
+    return true;
+  }
   const ArchModel& model_;
 };
 
@@ -61,6 +75,15 @@ class SegmentsSystem final : public OdeSystem {
       const double s = std::clamp(g.start + tau * g.length, g.inside_start, g.inside_end);
       const double theta = model_.theta(s), c = std::cos(theta), sn = std::sin(theta);
       const Eigen::Index last = g.column + g.width - 1;
+      if (model_.curved()) {
+        const ArchModel::CurvedBar bar = model_.curved_bar(model_.kappa(s));
+        for (Eigen::Index j = g.column; j < last; ++j)
+          model_.curved_derivative(c, sn, bar, Y.col(j).data(), dY.col(j).data(), 0.0, 0.0, false);
+        model_.curved_derivative(c, sn, bar, Y.col(last).data(), dY.col(last).data(), model_.load(s),
+                                 model_.horizontal_load(s), true);
+        dY.middleCols(g.column, g.width) *= g.length;
+        continue;
+      }
       for (Eigen::Index j = g.column; j < last; ++j) model_.derivative(c, sn, Y.col(j).data(), dY.col(j).data(), 0.0);
       model_.derivative(c, sn, Y.col(last).data(), dY.col(last).data(), model_.load(s), model_.horizontal_load(s));
       dY.middleCols(g.column, g.width) *= g.length;

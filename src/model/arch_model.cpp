@@ -89,6 +89,9 @@ struct ArchModel::Extrados {
 };
 
 ArchModel::ArchModel(Scene scene, bool whole_arch_domain) : scene_(std::move(scene)) {
+  if (scene_.beam_model == BeamModel::automatic)
+    throw std::invalid_argument("beam_model: automatic is solve()'s choice; a model needs euler_bernoulli, "
+                                "timoshenko or curved");
   const Material& m = scene_.material;
   const double L = scene_.span();
   const double w = scene_.reference_load_per_length();
@@ -103,12 +106,91 @@ ArchModel::ArchModel(Scene scene, bool whole_arch_domain) : scene_(std::move(sce
   length_ = curve_->length() / L;
   // a_N = I / (A L^2) exactly: the same modulus stiffens bending and stretching.
   a_N_ = scene_.inertia() / (scene_.area() * L * L);
-  a_V_ = m.effective_modulus() / (m.shear_coefficient * m.shear_modulus()) * a_N_;
+  // Euler-Bernoulli: no shear strain, the limit k G A -> infinity.
+  a_V_ = scene_.beam_model == BeamModel::euler_bernoulli
+             ? 0.0
+             : m.effective_modulus() / (m.shear_coefficient * m.shear_modulus()) * a_N_;
   self_weight_ = scene_.weight_per_length() / w;
   uniform_ = scene_.loads.empty();
   place_loads();
   set_boundary_conditions();
   sum_loads();
+  if (curved()) sum_centroid_offset();
+}
+
+void ArchModel::sum_centroid_offset() {
+  // The self-weight acts t^2 |kappa| / 12 beyond the axis point along the extrados normal (-sn, c): its
+  // moment about the left springing (clockwise positive) changes by int b_self (-delta sn) + h_self delta c
+  // with delta = -a_N k (scaled), between the breakpoints where the curvature is smooth.
+  const double L = scales_.length, a = acceleration();
+  std::vector<double> knots{0.0};
+  knots.insert(knots.end(), breakpoints_.begin(), breakpoints_.end());
+  knots.push_back(length_);
+  for (std::size_t k = 0; k + 1 < knots.size(); ++k) {
+    constexpr int kPanels = 8;
+    for (int i = 0; i < kPanels; ++i) {
+      const double lo = knots[k] + (knots[k + 1] - knots[k]) * i / kPanels;
+      const double hi = knots[k] + (knots[k + 1] - knots[k]) * (i + 1) / kPanels;
+      load_moment_ += gauss_legendre_integral<16>(
+          [&](double s) {
+            const CurvePoint p = curve_->at(s * L);
+            const double delta = -a_N_ * p.kappa * L;
+            return self_weight_ * delta * (-std::sin(p.theta) + a * std::cos(p.theta));
+          },
+          lo, hi);
+    }
+  }
+}
+
+double ArchModel::kappa(double s) const { return curve_->at(s * scales_.length).kappa * scales_.length; }
+
+ArchModel::CurvedBar ArchModel::curved_bar(double k) const {
+  CurvedBar bar;
+  if (!curved()) return bar;
+  bar.coupling = a_N_ * k;
+  // rho = |kappa| t / 2 = |k| t~ / 2, t~ = sqrt(12 a_N).
+  const double rho = 0.5 * std::abs(k) * std::sqrt(12.0 * a_N_);
+  if (rho == 0) return bar;
+  // T = sum_{n >= 1} rho^(2n - 2) / (2n + 1) without the cancellation of (S - 1) / rho^2 for small rho.
+  double S, T;
+  if (rho < 0.5) {
+    const double r2 = rho * rho;
+    double term = 1.0;
+    T = 0;
+    for (int n = 1; n < 64 && term > 1e-18; ++n, term *= r2) T += term / (2 * n + 1);
+    S = 1 + r2 * T;
+  } else {
+    S = std::atanh(rho) / rho;
+    T = (S - 1) / (rho * rho);
+  }
+  bar.bending = S / (3 * T);
+  return bar;
+}
+
+void ArchModel::curved_derivative(double c, double sn, const CurvedBar& bar, const double* y, double* dy,
+                                  double load, double horizontal, bool self_weight) const {
+  const double N = c * y[kFx] + sn * y[kFy];
+  const double V = -sn * y[kFx] + c * y[kFy];
+  const double eps = a_N_ * N + bar.coupling * y[kM];
+  const double rot = a_V_ * V + y[kPsi];
+  dy[kUx] = eps * c - rot * sn;
+  dy[kUy] = eps * sn + rot * c;
+  dy[kPsi] = bar.bending * y[kM] + bar.coupling * N;
+  dy[kFx] = -horizontal;
+  dy[kFy] = load;
+  dy[kM] = sn * y[kFx] - c * y[kFy];
+  if (self_weight) dy[kM] += bar.coupling * self_weight_ * (sn - acceleration() * c);
+}
+
+SystemMatrix ArchModel::curved_system_matrix(double theta, const CurvedBar& bar) const {
+  SystemMatrix A = system_matrix(theta);
+  const double c = std::cos(theta), sn = std::sin(theta);
+  A(kUx, kM) = bar.coupling * c;
+  A(kUy, kM) = bar.coupling * sn;
+  A(kPsi, kFx) = bar.coupling * c;
+  A(kPsi, kFy) = bar.coupling * sn;
+  A(kPsi, kM) = bar.bending;
+  return A;
 }
 
 void ArchModel::place_loads() {

@@ -142,11 +142,31 @@ void Scene::validate() const {
                                         {"right_spread", right.spread}, {"right_settlement", right.settlement}})
       if (!std::isfinite(value / displacement)) refuse(field, "must be finite in units of w L^4 / EI", value);
   }
+  if (!std::isfinite(model_tolerance) || !(model_tolerance >= 0 && model_tolerance < 1))
+    refuse("model_tolerance", "must lie in [0, 1) (a relative error of H/V; 0: none asked)", model_tolerance);
+  if (beam_model == BeamModel::automatic && !(model_tolerance > 0))
+    throw std::invalid_argument("beam_model: automatic needs a model_tolerance > 0 (the error the model may make)");
+  if ((beam_model == BeamModel::automatic || model_tolerance > 0) && section != SectionKind::elastic)
+    throw std::invalid_argument(
+        "model_tolerance: the model's error is estimated for the elastic section only (against the curved bar)");
+  if (beam_model == BeamModel::curved && section != SectionKind::elastic)
+    throw std::invalid_argument(
+        "beam_model: curved takes the elastic section only (the no-tension section's law is a straight beam's)");
   // A section deeper than twice the radius of curvature would overlap itself on the intrados.
   const double limit = max_thickness(*curve);
   if (thickness >= limit)
     throw std::invalid_argument(fmt::format(
         "thickness: must be less than twice the smallest radius of curvature ({} m), got {} m", limit, thickness));
+}
+
+const char* to_string(BeamModel m) {
+  switch (m) {
+    case BeamModel::euler_bernoulli: return "euler-bernoulli";
+    case BeamModel::timoshenko: return "timoshenko";
+    case BeamModel::curved: return "curved";
+    case BeamModel::automatic: return "auto";
+  }
+  return "";
 }
 
 }  // namespace ogive

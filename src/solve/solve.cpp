@@ -18,6 +18,7 @@
 #include "methods/quadrature.hpp"
 #include "methods/shooting.hpp"
 #include "ogive/core/thrust_line.hpp"
+#include "ogive/solve/model_error.hpp"
 
 namespace ogive {
 
@@ -259,7 +260,8 @@ bool on_one_path(const Scene& a, const Scene& b) {
                            a.curve->span() == b.curve->span() && a.curve->length() == b.curve->length() &&
                            a.curve->rise() == b.curve->rise() && a.curve->max_curvature() == b.curve->max_curvature());
   const Material &m = a.material, &n = b.material;
-  return same_curve && a.thickness == b.thickness && a.section == b.section && a.crown_hinge == b.crown_hinge &&
+  return same_curve && a.thickness == b.thickness && a.section == b.section && a.beam_model == b.beam_model &&
+         a.crown_hinge == b.crown_hinge &&
          a.horizontal_acceleration == b.horizontal_acceleration &&
          m.youngs_modulus == n.youngs_modulus && m.poisson_ratio == n.poisson_ratio && m.density == n.density &&
          m.gravity == n.gravity && m.shear_coefficient == n.shear_coefficient && m.plane_strain == n.plane_strain &&
@@ -521,6 +523,7 @@ Solution solve(const Scene& scene, const Options& options, const Solution* previ
   scene.validate();
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
+  if (asks_model_error(scene, options)) return solve_with_model_error(scene, options, previous);
   if (scene.section == SectionKind::no_tension) return solve_no_tension_scene(scene, options, previous);
   auto model = std::make_shared<const ArchModel>(scene, options.whole_arch);
   switch (options.method) {

@@ -96,6 +96,9 @@ struct Options {
   // Solve a symmetric scene over the whole arch as well (a check: by default such a scene is solved over
   // the half, the smaller model; ArchModel::half() says which one a solution used).
   bool whole_arch = false;
+  // Estimate the beam model's own error (Diagnostics::model_error_estimate) even when the scene asks no
+  // model tolerance: a second solve, with the curved bar (ogive/solve/model_error.hpp).
+  bool estimate_model_error = false;
 
   // Ceres-style check: false with the reason in *why (naming the field) when an option is unusable.
   bool is_valid(std::string* why) const;
@@ -126,6 +129,10 @@ struct Diagnostics {
   // same difference between its last two degrees (quadrature.hpp). The closed form: its round-off
   // bound alone. NaN when not estimated (status unverified, or a failed solve).
   double error_estimate = std::numeric_limits<double>::quiet_NaN();
+  // The beam model's own error, relative, in H/V against the two-dimensional arch: its difference from
+  // the curved bar's H/V plus the curved bar's calibrated bound (ogive/solve/model_error.hpp). NaN when
+  // not asked (Scene::model_tolerance 0, Options::estimate_model_error off) or not estimable.
+  double model_error_estimate = std::numeric_limits<double>::quiet_NaN();
 };
 
 // The solved state along the model's domain (the half or the whole arch) in scaled units: lets any method serve as another's reference.

@@ -16,7 +16,8 @@
 //   rotation     w L^3 / (E I)             psi~
 // With c = cos theta, sn = sin theta, N~ = c Fx~ + sn Fy~, V~ = -sn Fx~ + c Fy~, the system reads
 //   Ux~'  = a_N N~ c - (a_V V~ + psi~) sn          a_N = E I / (E A L^2) = (t/L)^2 / 12
-//   Uy~'  = a_N N~ sn + (a_V V~ + psi~) c          a_V = E I / (k G A L^2)
+//   Uy~'  = a_N N~ sn + (a_V V~ + psi~) c          a_V = E I / (k G A L^2) (Timoshenko; 0 for
+//                                                    Euler-Bernoulli: no shear strain)
 //   psi~' = M~
 //   Fx~'  = 0,   Fy~' = b(s),   M~' = sn Fx~ - c Fy~
 // i.e. y' = A(theta(s)) y + b(s) e_Fy, b being the vertical load per axis length over w: the
@@ -110,6 +111,31 @@ class ArchModel {
   double length() const { return length_; }  // S~: the domain's scaled length
   double a_N() const { return a_N_; }
   double a_V() const { return a_V_; }
+  BeamModel beam_model() const { return scene_.beam_model; }
+  bool curved() const { return scene_.beam_model == BeamModel::curved; }
+
+  // The curved bar (BeamModel::curved; docs/model.md, "Beam models") at scaled curvature k = kappa L
+  // (negative for an arch). Winkler-Bach's section: plane sections turn about the neutral axis of pure
+  // bending, r_n = t / ln(r_o / r_i), which lies e = R - r_n inside the centroid (R = 1 / |kappa|), and a
+  // fibre's strain is its elongation over its own length (R + y) dphi. Then, with the centroid's axis,
+  //   eps~  = a_N (N~ + k M~)                      (the axis' strain, in Ux~' and Uy~')
+  //   psi~' = bending M~ + a_N k N~,               bending = I / (A R e) = S / (3 T) in (0, 1]
+  // with rho = |k| t~ / 2 < 1 (Scene::validate), S = atanh(rho) / rho and T = (S - 1) / rho^2 (bending ->
+  // 1 - 4 rho^2 / 15 as rho -> 0: the straight section). The compliance matrix is symmetric (the
+  // complementary energy N^2 / 2EA + N M / EAR + M^2 / 2EARe per length, Boresi's). And each slice of the
+  // arch, an annular sector, weighs at its centroid, t^2 / (12 R) beyond the axis towards the extrados: the
+  // self-weight's load (b_self down, a b_self to +x) brings the couple a_N k (b_self sn - a b_self c) into
+  // M~'. coupling = a_N k. Shear keeps Timoshenko's V / (k G A). For the other models coupling 0, bending 1.
+  struct CurvedBar {
+    double coupling = 0, bending = 1;
+  };
+  CurvedBar curved_bar(double k) const;
+  double kappa(double s) const;  // the scaled curvature kappa L at scaled arc length s
+  // dy of the curved bar: derivative()'s equations with the bar's coupling and bending and, on the load
+  // column (self_weight true), the self-weight's couple.
+  void curved_derivative(double c, double sn, const CurvedBar& bar, const double* y, double* dy, double load,
+                         double horizontal, bool self_weight) const;
+  SystemMatrix curved_system_matrix(double theta, const CurvedBar& bar) const;
 
   double theta(double s) const;      // tangent angle at scaled arc length s
   // A(theta)'s entries that can be non-zero (every other entry is 0 for every theta; A(psi, M) = 1).
@@ -188,6 +214,8 @@ class ArchModel {
   std::optional<double> hinge_;
   BoundaryConditions bc_;
   double total_load_ = 0, total_horizontal_load_ = 0, load_moment_ = 0;
+  // The curved bar's moment of the self-weight's offset from the axis, added to load_moment_.
+  void sum_centroid_offset();
   // The constructor's steps, in order: where the loads act and where the system is not smooth (the
   // curve's breakpoints, the point loads, the hinge, the live loads' ends, where the fill meets the
   // extrados and under the extrados' breaks); the six boundary conditions; the domain's total load and its moment.

@@ -63,6 +63,20 @@ struct Loads {
   bool empty() const { return points.empty() && live.empty() && fills.empty(); }
 };
 
+// The beam theory that models the slice (docs/model.md, "Beam models"), from the least to the richest.
+enum class BeamModel {
+  euler_bernoulli,  // no shear strain (an infinite shear stiffness); the axis stretches by N / (E A)
+  timoshenko,       // the paper's: the section turns against the axis by the shear strain V / (k G A)
+  curved,           // a thick curved bar: Timoshenko's shear with Winkler-Bach's section (the neutral axis
+                    // off the centroid; the axis' strain and curvature coupled through the curvature) and
+                    // each slice's weight at its centroid, t^2 / (12 R) beyond the axis (arch_model.hpp)
+  automatic,        // solve() picks the least of the three whose model error estimate is within
+                    // Scene::model_tolerance (ogive/solve/model_error.hpp); an ArchModel needs one of them
+};
+
+// "euler-bernoulli", "timoshenko", "curved", "auto".
+const char* to_string(BeamModel m);
+
 enum class SupportKind {
   clamped,  // displacements and rotation given
   pinned,   // displacements given, the section turns freely (M = 0)
@@ -86,6 +100,13 @@ struct Scene {
   // The section's law (section.hpp): elastic (linear, the paper's) or no_tension (cracks where the
   // resultant leaves the kern; solved by Newton, no_tension.hpp).
   SectionKind section = SectionKind::elastic;
+  // The beam theory (arch_model.hpp): Timoshenko's, the paper's, unless asked otherwise.
+  BeamModel beam_model = BeamModel::timoshenko;
+  // The relative error of H/V that the beam model may make against the two-dimensional arch, in [0, 1)
+  // (0: nothing asked). Above 0, solve() estimates the model's error (Diagnostics::model_error_estimate,
+  // ogive/solve/model_error.hpp) and a solution whose estimate exceeds it is tolerance_not_met;
+  // beam_model automatic needs it. The elastic section only.
+  double model_tolerance = 0;
   bool crown_hinge = false;  // a hinge (M = 0, the rotation free to jump) at the crown (Curve::crown)
   // Pseudo-static earthquake: every mass of the scene (the arch's self-weight and the fill, not point or
   // live loads) also carries a horizontal force a times its weight, to +x (left to right) for a > 0; a
@@ -113,8 +134,9 @@ struct Scene {
   // Throws std::invalid_argument whose message names the field and the rule it breaks, e.g.
   // "poisson_ratio: must lie in (-1, 0.5], got 0.7". A valid scene has every field finite, positive
   // stiffness, density >= 0, some load (self-weight or another), loads inside the span, a fill level
-  // above the springing, no rotation given to a pinned springing, and a thickness that fits the curve
-  // (t < 2 * smallest radius of curvature, so that the intrados does not fold over).
+  // above the springing, no rotation given to a pinned springing, a thickness that fits the curve
+  // (t < 2 * smallest radius of curvature, so that the intrados does not fold over), and the elastic
+  // section for the curved beam model.
   void validate() const;
 };
 
