@@ -41,6 +41,8 @@ constexpr Subcommand kSubcommands[] = {
      add_report_options},
     {"spread", "the arch on spreading walls to collapse: elastic thrust, plateau, spreading capacity; one row per scene",
      add_spread_options},
+    {"assess", "an assessment: each criterion's value against what it must reach, and a verdict (pass or fail); one row per scene",
+     add_assess_options},
 };
 
 // The parse error in the user's words rather than the parser's: an unknown option or a stray value,
