@@ -150,8 +150,8 @@ void decide(Assessment& a) {
 void add_warnings(Assessment& a, const Scene& scene, const ThrustLineSummary& line) {
   if (a.solution.ok() && line.ok && !line.in_section && !std::isnan(line.max_abs_e))
     a.warnings.push_back(fmt::format(
-        "the {} line of thrust leaves the section: |e| reaches {:.4g} % of the kern (300 % is the face) at "
-        "s = {:.4g} m of the arch",
+        "the {} line of thrust leaves the section: |e| reaches {:.4g} % of the kern (300 % is the face) "
+        "{:.4g} m along the arch from the left springing",
         scene.section == SectionKind::elastic ? "elastic" : "no-tension", line.max_abs_e, line.max_abs_e_at));
   if (a.solution.status == Status::inadmissible)
     a.warnings.push_back("no line of thrust of the no-tension section stays inside the arch");
