@@ -3,7 +3,6 @@
 // library's (ogive/solve/assessment.hpp): this command binds the criteria and prints the row.
 #include <cmath>
 #include <limits>
-#include <map>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -15,6 +14,7 @@
 #include "cli.hpp"
 #include "columns.hpp"
 #include "commands.hpp"
+#include "criteria.hpp"
 #include "limit_text.hpp"
 #include "ogive/solve/assessment.hpp"
 #include "option_text.hpp"
@@ -27,13 +27,8 @@
 namespace ogive::cli {
 namespace {
 
-const std::map<std::string, ThrustRequirement> kThrustRequirements = {
-    {"none", ThrustRequirement::none}, {"section", ThrustRequirement::section}, {"kern", ThrustRequirement::kern}};
-
 struct AssessText {
-  // A required value: a number > 0, or none (not required).
-  std::string geometric_factor = "2", load_factor = "2", acceleration = "none", spread = "none";
-  std::string thrust = "none";
+  CriteriaText criteria;
   std::string joints = "radial", weight = "voussoir";
   int joints_count = kDefaultJointsCount;
   double friction = 0;
@@ -49,25 +44,8 @@ struct AssessCommandOptions {
 constexpr auto kAssessMoves = springing_movements(
     "the assessment is of the arch on its springings as built: --require-spread asks for its spreading capacity");
 
-void add_criteria_options(CLI::App& cmd, AssessText& t) {
-  cmd.add_option("--require-geometric-factor", t.geometric_factor,
-                 "the least geometric factor of safety t / t_min (Heyman: 2 to 3), > 0, or none")
-      ->capture_default_str();
-  cmd.add_option("--require-load-factor", t.load_factor,
-                 "the least collapse load factor of the point and live loads, > 0, or none (a scene without them "
-                 "has none to check)")
-      ->capture_default_str();
-  cmd.add_option("--require-acceleration", t.acceleration,
-                 "the least horizontal acceleration of collapse a_c, a fraction of g, > 0, or none")
-      ->capture_default_str();
-  cmd.add_option("--require-spread", t.spread,
-                 "the least spreading capacity: the span's increase at collapse over the span, both springings "
-                 "moving outwards, > 0, or none")
-      ->capture_default_str();
-  cmd.add_option("--require-thrust", t.thrust,
-                 "where the scene's own line of thrust (its --section's) must stay: section (|e| <= 300 % of the "
-                 "kern), kern (|e| <= 100 %) or none")
-      ->capture_default_str();
+void add_rigid_block_options(CLI::App& cmd, AssessText& t) {
+  add_criteria_options(cmd, t.criteria);
   cmd.add_option("--joints", t.joints, "rigid voussoirs' interior joints: radial (normal to the axis) or vertical")
       ->capture_default_str();
   cmd.add_option("--weight", t.weight,
@@ -83,22 +61,10 @@ void add_criteria_options(CLI::App& cmd, AssessText& t) {
       ->check(finite_number());
 }
 
-// A required value: > 0 and finite, or "none" (NaN: not required).
-double required_value(const std::string& text, const char* flag) {
-  if (text == "none") return std::numeric_limits<double>::quiet_NaN();
-  const double v = parse_number(text, flag);
-  if (!(v > 0)) throw UsageError(fmt::format("{}: must be > 0, or none (not required), got '{}'", flag, text));
-  return v;
-}
-
 AssessmentOptions assessment_options(const AssessText& t, const CLI::App& cmd) {
   refuse_inapplicable(cmd, "assess", kAssessMoves);
   AssessmentOptions o;
-  o.require.geometric_safety_factor = required_value(t.geometric_factor, "--require-geometric-factor");
-  o.require.load_factor = required_value(t.load_factor, "--require-load-factor");
-  o.require.horizontal_load_factor = required_value(t.acceleration, "--require-acceleration");
-  o.require.spread_capacity_ratio = required_value(t.spread, "--require-spread");
-  o.require.thrust = lookup(kThrustRequirements, t.thrust, "--require-thrust");
+  o.require = criteria_of(t.criteria);
   o.limit.joints = lookup(joint_orientations(), t.joints, "--joints");
   o.limit.weight = lookup(weight_models(), t.weight, "--weight");
   o.limit.joints_count = t.joints_count;
@@ -182,7 +148,7 @@ Run add_assess_options(CLI::App& cmd) {
   auto options = std::make_shared<AssessCommandOptions>();
   add_scene_options(cmd, options->scene);
   hide_inapplicable(cmd, kAssessMoves);
-  add_criteria_options(cmd, options->text);
+  add_rigid_block_options(cmd, options->text);
   add_column_options(cmd, options->columns);
   add_threads_option(cmd, options->text.threads);
   return [options, &cmd](std::ostream& out) { return run_assess(*options, cmd, out); };
