@@ -17,6 +17,7 @@
 #include "option_text.hpp"
 #include "row_writer.hpp"
 #include "values.hpp"
+#include "warnings.hpp"
 
 namespace ogive::cli {
 namespace {
@@ -197,7 +198,12 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   }
   if (const int status = parse(app, args, out, err); status >= 0) return status;
   // A parsed command line names its subcommand first (only help and version come before one).
-  return run ? run_reporting_errors(run, out, err) : kExitUsage;
+  if (!run) return kExitUsage;
+  const WarningSink warnings;
+  const int status = run_reporting_errors(run, out, err);
+  if (status != kExitUsage)  // bad input is one line
+    for (const std::string& w : warnings.lines()) err << "ogive: warning: " << w << "\n";
+  return status;
 }
 
 }  // namespace ogive::cli

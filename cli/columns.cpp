@@ -1,6 +1,7 @@
 #include "columns.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -227,8 +228,11 @@ const std::vector<std::string>& scene_columns() {
 }
 
 double force_unit(const std::string& units) {
-  if (units == "N") return 1.0;
-  if (units == "kN") return 1000.0;
+  // Any case: kn and KN are kN as engineers type it.
+  std::string lower = units;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (lower == "n") return 1.0;
+  if (lower == "kn") return 1000.0;
   throw UsageError(fmt::format("--units: must be N or kN, got '{}'", units.substr(0, 60)));
 }
 

@@ -6,6 +6,8 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "units.hpp"
+
 namespace ogive::cli {
 namespace {
 
@@ -149,11 +151,14 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--curve-file", o.curve_file,
                  "with --curve points: CSV file with header x,y and the axis points in m, springing (y = 0) to crown; "
                  "with --curve whole-points: springing to springing (any heights); - reads it from standard input");
-  for (Axis& a : o.axes)
+  for (Axis& a : o.axes) {
+    const std::string units = units_taken(a.flag);
     cmd.add_option(a.flag, a.text,
-                   fmt::format("{}; {}; a value, a list a,b,c or a range start:stop:count{}",
-                               axis_meanings().at(a.flag), a.rule, a.text.empty() ? absent_default(a.flag) : ""))
+                   fmt::format("{}; {}; a value, a list a,b,c or a range start:stop:count{}{}",
+                               axis_meanings().at(a.flag), a.rule, units.empty() ? "" : ", each with a unit or not (" + units + ")",
+                               a.text.empty() ? absent_default(a.flag) : ""))
         ->capture_default_str();
+  }
   cmd.add_flag("--plane-strain", o.plane_strain, "plane strain: E / (1 - nu^2) for axial and bending stiffness");
   cmd.add_option("--supports", o.supports, "both springings: clamped or pinned")->capture_default_str();
   cmd.add_option("--left-support", o.left_support, "left springing: clamped or pinned (default: --supports)");
