@@ -167,6 +167,11 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
                  "elastic (linear) or no-tension (cracks where the resultant leaves the kern; Newton on explicit forces "
                  "by quadrature, or shooting; a sweep of support movements is traced in order)")
       ->capture_default_str();
+  cmd.add_option("--dimensions", o.dimensions,
+                 "what --span and --rise measure: axis (the axis' span and rise) or intrados (the clear span between "
+                 "the intrados' springing points and the intrados' rise from them to the crown's vertical, with "
+                 "--thickness in m; the rows print the axis' span and rise)")
+      ->capture_default_str();
   cmd.add_flag("--crown-hinge", o.crown_hinge,
                "a hinge at the crown (M = 0): the three-hinged arch with --supports pinned");
   cmd.add_option("--loads-file", o.loads_file,

@@ -76,6 +76,7 @@ struct SceneOptions {
   std::shared_ptr<const Curve> points;  // read once from curve_file
   std::string supports = "clamped", left_support, right_support;
   std::string section = "elastic";
+  std::string dimensions = "axis";  // --dimensions: axis, or intrados (--span and --rise the intrados')
   bool crown_hinge = false;
   std::string loads_file;
   Loads file_loads;  // read once from loads_file

@@ -148,6 +148,7 @@ ScenePlan::ScenePlan(SceneOptions& o, const CLI::App& cmd) : options_(o) {
   if (family_->file) o.points = read_points(o);
   check_option_pairs(cmd);
   choose_supports(o, cmd);
+  choose_dimensions(o, cmd);
   if (!o.loads_file.empty()) o.file_loads = read_loads(o);
   plan_axes(o, cmd);
   // Lengths in metres with the span left at its default are most likely a forgotten --span.
@@ -157,6 +158,55 @@ ScenePlan::ScenePlan(SceneOptions& o, const CLI::App& cmd) : options_(o) {
       warn("--span", fmt::format("{} is in metres but --span was not given: the default span of {} m is used",
                                  metres, cmd.get_option("--span")->get_default_str()));
   require_some_scene();
+}
+
+// --dimensions intrados: the span and rise given are the intrados', which the ring's thickness in metres
+// turns into the axis' (to_axis_dimensions); the ratio forms would be ratios of a span not yet known.
+void ScenePlan::choose_dimensions(const SceneOptions& o, const CLI::App& cmd) {
+  static const std::map<std::string, bool> kDimensions = {{"axis", false}, {"intrados", true}};
+  intrados_ = lookup(kDimensions, o.dimensions, "--dimensions");
+  if (!intrados_) return;
+  if (family_->file)
+    throw UsageError(fmt::format("--dimensions intrados: a --curve {} file gives the axis' points", o.curve));
+  for (const char* flag : {"--thickness-ratio", "--rise-ratio", "--eccentricity", "--radius"})
+    if (given(cmd, flag))
+      throw UsageError(fmt::format("--dimensions intrados: give the intrados' --span and --rise in m, not {}", flag));
+  if (!given(cmd, "--thickness"))
+    throw UsageError("--dimensions intrados: give --thickness in m (the ring's thickness sets the intrados)");
+  if ((family_->rise || family_->eccentricity) && !given(cmd, "--rise"))
+    throw UsageError(fmt::format("--dimensions intrados: give the intrados' --rise in m (the {} arch's rise)", o.curve));
+}
+
+// The axis' span and rise whose intrados has the span and rise given (p.span, p.rise), for the ring of
+// thickness p.thickness: the corrections clear - clear(L, h) and rise - rise(L, h) added to L and h until
+// they vanish to round-off (each is nearly 1 : 1, the rest of order t / R: a few iterations). NaN span
+// where no such arch exists (build() refuses it).
+void ScenePlan::to_axis_dimensions(SceneParameters& p) const {
+  constexpr double kRoundOff = 4 * std::numeric_limits<double>::epsilon();
+  constexpr int kMaxIterations = 100;
+  const double clear = p.span, rise = p.rise, t = p.thickness;
+  double L = clear + t, h = rise + 0.5 * t;  // the semicircle's, and a smooth crown's
+  for (int k = 0; k < kMaxIterations; ++k) {
+    SceneParameters q = p;
+    q.span = L;
+    q.rise = h;
+    q.thickness_ratio = q.rise_ratio = std::numeric_limits<double>::quiet_NaN();
+    try {
+      derive_metres(q);
+      const IntradosDimensions d = intrados_dimensions(*make_curve(q), t);
+      const double dL = clear - d.clear_span, dh = std::isnan(rise) ? 0.0 : rise - d.rise;
+      if (std::abs(dL) <= kRoundOff * clear && (std::isnan(rise) || std::abs(dh) <= kRoundOff * rise)) {
+        p.span = L;
+        p.rise = std::isnan(rise) ? rise : h;
+        return;
+      }
+      L += dL;
+      h += dh;
+    } catch (const std::invalid_argument&) {
+      break;
+    }
+  }
+  p.span = std::numeric_limits<double>::quiet_NaN();
 }
 
 void ScenePlan::choose_supports(const SceneOptions& o, const CLI::App& cmd) {
@@ -254,6 +304,7 @@ SceneParameters ScenePlan::parameters(std::size_t index) const {
     index /= a.values.size();
   }
   if (!family_->eccentricity) p.eccentricity = std::numeric_limits<double>::quiet_NaN();
+  if (intrados_) to_axis_dimensions(p);
   derive_metres(p);
   // The defaults of the load and movement options, as the row prints them.
   if (!std::isnan(p.point_load) && std::isnan(p.point_load_at)) p.point_load_at = 0.5;
@@ -303,6 +354,9 @@ void ScenePlan::derive_metres(SceneParameters& p) const {
 // The rules of the metre forms that depend on the span or the curve (one line naming the option).
 void ScenePlan::check_metres(const SceneParameters& p) const {
   const double L = p.span;
+  if (intrados_ && std::isnan(L))
+    throw std::invalid_argument("--dimensions intrados: no arch of this curve and --thickness has that clear span and "
+                                "intrados rise (its intrados must reach the crown's vertical)");
   // A ratio derived from its metre form keeps the ratio option's rule, stated for the metre option.
   for (const auto& [metre, given, ratio_flag, ratio] :
        {std::tuple{"--thickness", thickness_flag_ == "--thickness", "--thickness-ratio", p.thickness_ratio},
