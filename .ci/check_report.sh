@@ -25,8 +25,12 @@ H=$("$build/ogive" thrust "${scene[@]}" --columns H | tail -1 | cut -d, -f2)  # 
 [[ $H =~ ^[0-9][0-9.e+-]*$ ]] || { echo "check_report: ogive thrust printed no H ('$H')"; exit 1; }
 shown=$(awk -v h="$H" 'BEGIN { printf "%.4g kN/m", h / 1000 }')
 grep -q "$shown" "$out/dom.html" || { echo "check_report: the rendered page does not show H = $shown"; status=1; }
-for id in drawing reactions thrusts safety collapse spreading inputs; do
+for id in verdict drawing reactions thrusts safety collapse spreading geometry inputs assumptions; do
   grep -q "<section id=\"$id\"" "$out/dom.html" || { echo "check_report: no section $id"; status=1; }
 done
+# The verdict first: the first section of the rendered page, in words.
+first=$(grep -o '<section id="[a-z]*"' "$out/dom.html" | head -1)
+[[ $first == '<section id="verdict"' ]] || { echo "check_report: the first section is $first, not the verdict"; status=1; }
+grep -qE '<p class="word">(PASS|FAIL|NOT ASSESSED)</p>' "$out/dom.html" || { echo "check_report: no verdict in words"; status=1; }
 [[ $status -eq 0 ]] && echo "check_report: rendered $out/report.png and $out/report.pdf; H = $shown shown"
 exit $status

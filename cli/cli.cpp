@@ -17,6 +17,7 @@
 #include "option_text.hpp"
 #include "row_writer.hpp"
 #include "values.hpp"
+#include "warnings.hpp"
 
 namespace ogive::cli {
 namespace {
@@ -41,6 +42,8 @@ constexpr Subcommand kSubcommands[] = {
      add_report_options},
     {"spread", "the arch on spreading walls to collapse: elastic thrust, plateau, spreading capacity; one row per scene",
      add_spread_options},
+    {"assess", "an assessment: each criterion's value against what it must reach, and a verdict (pass or fail); one row per scene",
+     add_assess_options},
 };
 
 // The parse error in the user's words rather than the parser's: an unknown option or a stray value,
@@ -195,7 +198,12 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   }
   if (const int status = parse(app, args, out, err); status >= 0) return status;
   // A parsed command line names its subcommand first (only help and version come before one).
-  return run ? run_reporting_errors(run, out, err) : kExitUsage;
+  if (!run) return kExitUsage;
+  const WarningSink warnings;
+  const int status = run_reporting_errors(run, out, err);
+  if (status != kExitUsage)  // bad input is one line
+    for (const std::string& w : warnings.lines()) err << "ogive: warning: " << w << "\n";
+  return status;
 }
 
 }  // namespace ogive::cli

@@ -1,6 +1,7 @@
 #include "columns.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -130,16 +131,16 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"H_max", "N/m", "limit: maximum horizontal thrust of an admissible state"},
     {"H_min_over_V", "", "limit: H_min / V, V half the total vertical load (the V column; with a symmetric scene, H_over_V's V_left)"},
     {"H_max_over_V", "", "limit: H_max / V, V half the total vertical load (the V column; with a symmetric scene, H_over_V's V_left)"},
-    {"thickness_min_ratio", "", "limit: t_min / span, the thinnest arch of the same axis that stands"},
-    {"geometric_safety_factor", "", "limit: t / t_min"},
+    {"thickness_min_ratio", "", "limit, assess: t_min / span, the thinnest arch of the same axis that stands"},
+    {"geometric_safety_factor", "", "limit, assess: t / t_min"},
     {"hinges_min", "", "limit: hinges of the minimum-thrust state, x/L:face joined by ';' (face: intrados, extrados, or axis for a pin)"},
     {"hinges_max", "", "limit: hinges of the maximum-thrust state, x/L:face joined by ';'"},
-    {"load_factor", "", "limit: multiplier on the live load (every point and live load) at collapse (static LP)"},
+    {"load_factor", "", "limit, assess: multiplier on the live load (every point and live load) at collapse (static LP)"},
     {"load_factor_mechanism", "", "limit: the same from the mechanism of those hinges by virtual work"},
     {"hinges_collapse", "", "limit: hinges of the collapse mechanism, x/L:face joined by ';'"},
     {"horizontal_load_factor", "",
-     "limit: the horizontal acceleration a_c / g (to +x) that makes the arch a mechanism, vertical loads at factor 1 "
-     "and --horizontal-acceleration ignored (only when asked for)"},
+     "limit, assess: the horizontal acceleration a_c / g (to +x) that makes the arch a mechanism, vertical loads at "
+     "factor 1 and --horizontal-acceleration ignored (only when asked for)"},
     {"horizontal_load_factor_mechanism", "", "limit: the same from the mechanism of its hinges by virtual work"},
     {"hinges_horizontal", "", "limit: hinges of the mechanism of a_c, x/L:face joined by ';'"},
     {"lp_solves", "", "limit: linear programs solved for the row"},
@@ -154,7 +155,7 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"H_plateau", "N/m", "spread: the plateau the cracking arch falls to, the rigid voussoirs' minimum thrust at d = 0 (limit's H_min with spread's --weight)"},
     {"V_plateau", "N/m", "spread: V_left of that minimum-thrust state"},
     {"H_over_V_plateau", "", "spread: H_plateau / V_plateau"},
-    {"spread_capacity_ratio", "", "spread: the span's increase at collapse of the rigid voussoirs' mechanism (from d = 0) / span"},
+    {"spread_capacity_ratio", "", "spread, assess: the span's increase at collapse of the rigid voussoirs' mechanism (from d = 0) / span"},
     {"collapse", "", "spread: how the mechanism collapses, inadmissible (no thrust line through its hinges fits the moved voussoirs) or snap_through (no mechanism of its hinges moves the springings apart: they are in a line, or fewer than three open); spread --path: on the last mechanism row"},
     {"H_collapse", "N/m", "spread: the mechanism's H at collapse (its last admissible state)"},
     {"V_collapse", "N/m", "spread: the mechanism's V_left at collapse"},
@@ -162,6 +163,21 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"crown_drop_ratio", "", "spread: the crown's drop, downwards positive, / span (the mechanism's crown hinge; the elastic and cracking arch's axis at the crown); the summary's: at collapse"},
     {"hinges", "", "spread: the mechanism's hinges, x/L:face joined by ';' (three, or four for a pointed arch; they may move along the path), x where the hinge point is at the row's spread (the summary's: at d = 0) from the left springing's place at d = 0"},
     {"hinges_at_collapse", "", "spread: the mechanism's hinges at collapse, x/L:face joined by ';'"},
+    {"verdict", "", "assess: pass (every criterion asked for is met), fail (one is not: an arch that cannot stand fails) or not_assessed (none fails, but one could not be assessed: message says why)"},
+    {"governing", "", "assess: the criterion that decides the verdict: the failed one of least margin, else the one not assessed, else the passed one of least margin"},
+    {"margin", "", "assess: the governing criterion's value / required (required / value for max_thrust_eccentricity): >= 1 exactly where it passes"},
+    {"geometric_safety_factor_required", "", "assess: the least t / t_min asked for (--require-geometric-factor); empty: not required"},
+    {"geometric_safety_factor_outcome", "", "assess: pass, fail, not_assessed (required, no trustworthy value: message says why), not_required or not_applicable"},
+    {"load_factor_required", "", "assess: the least collapse load factor asked for (--require-load-factor); empty: not required"},
+    {"load_factor_outcome", "", "assess: as geometric_safety_factor_outcome; not_applicable without a point or live load"},
+    {"horizontal_load_factor_required", "", "assess: the least a_c / g asked for (--require-acceleration); empty: not required"},
+    {"horizontal_load_factor_outcome", "", "assess: as geometric_safety_factor_outcome"},
+    {"spread_capacity_ratio_required", "", "assess: the least spreading capacity asked for (--require-spread); empty: not required"},
+    {"spread_capacity_ratio_outcome", "", "assess: as geometric_safety_factor_outcome; not_applicable with a horizontal acceleration"},
+    {"max_thrust_eccentricity_required", "%", "assess: the largest |e| allowed (--require-thrust: 300 section, 100 kern); empty: not required"},
+    {"max_thrust_eccentricity_outcome", "", "assess: as geometric_safety_factor_outcome (fail also where the no-tension section is inadmissible)"},
+    {"limit_status", "", "assess: the limit analysis' status (success, inadmissible, not_converged, lp_failure)"},
+    {"warnings", "", "assess: what the engineer must read whatever the criteria, in words, joined by '; ': the line of thrust leaving the section, t below t_min, a load factor below 1"},
     {"part", "", "spread --path: elastic (the elastic section at d = 0), cracking (the no-tension section) or mechanism (rigid voussoirs to collapse)"},
     {"spread_ratio", "", "spread --path: the span's increase / span (cracking: the moving springings' movements; mechanism: from its own d = 0)"},
 };
@@ -214,8 +230,11 @@ const std::vector<std::string>& scene_columns() {
 }
 
 double force_unit(const std::string& units) {
-  if (units == "N") return 1.0;
-  if (units == "kN") return 1000.0;
+  // Any case: kn and KN are kN as engineers type it.
+  std::string lower = units;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (lower == "n") return 1.0;
+  if (lower == "kn") return 1000.0;
   throw UsageError(fmt::format("--units: must be N or kN, got '{}'", units.substr(0, 60)));
 }
 

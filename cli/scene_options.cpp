@@ -6,6 +6,8 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "units.hpp"
+
 namespace ogive::cli {
 namespace {
 
@@ -149,11 +151,14 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--curve-file", o.curve_file,
                  "with --curve points: CSV file with header x,y and the axis points in m, springing (y = 0) to crown; "
                  "with --curve whole-points: springing to springing (any heights); - reads it from standard input");
-  for (Axis& a : o.axes)
+  for (Axis& a : o.axes) {
+    const std::string units = units_taken(a.flag);
     cmd.add_option(a.flag, a.text,
-                   fmt::format("{}; {}; a value, a list a,b,c or a range start:stop:count{}",
-                               axis_meanings().at(a.flag), a.rule, a.text.empty() ? absent_default(a.flag) : ""))
+                   fmt::format("{}; {}; a value, a list a,b,c or a range start:stop:count{}{}",
+                               axis_meanings().at(a.flag), a.rule, units.empty() ? "" : ", each with a unit or not (" + units + ")",
+                               a.text.empty() ? absent_default(a.flag) : ""))
         ->capture_default_str();
+  }
   cmd.add_flag("--plane-strain", o.plane_strain, "plane strain: E / (1 - nu^2) for axial and bending stiffness");
   cmd.add_option("--supports", o.supports, "both springings: clamped or pinned")->capture_default_str();
   cmd.add_option("--left-support", o.left_support, "left springing: clamped or pinned (default: --supports)");
@@ -172,6 +177,11 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
                  "the relative error of H/V the beam model may make against the two-dimensional arch, in (0, 1): "
                  "rows whose model_error_estimate exceeds it are tolerance_not_met (default: none; 0.01 with "
                  "--beam-model auto)");
+  cmd.add_option("--dimensions", o.dimensions,
+                 "what --span and --rise measure: axis (the axis' span and rise) or intrados (the clear span between "
+                 "the intrados' springing points and the intrados' rise from them to the crown's vertical, with "
+                 "--thickness in m; the rows print the axis' span and rise)")
+      ->capture_default_str();
   cmd.add_flag("--crown-hinge", o.crown_hinge,
                "a hinge at the crown (M = 0): the three-hinged arch with --supports pinned");
   cmd.add_option("--loads-file", o.loads_file,

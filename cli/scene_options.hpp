@@ -79,6 +79,7 @@ struct SceneOptions {
   std::string section = "elastic";
   std::string beam_model = "timoshenko";
   double model_tolerance = std::numeric_limits<double>::quiet_NaN();  // --model-tolerance; NaN: not given
+  std::string dimensions = "axis";  // --dimensions: axis, or intrados (--span and --rise the intrados')
   bool crown_hinge = false;
   std::string loads_file;
   Loads file_loads;  // read once from loads_file

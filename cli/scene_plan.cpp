@@ -17,10 +17,25 @@
 #include "ogive/model/loads_file.hpp"
 #include "columns.hpp"
 #include "option_text.hpp"
+#include "units.hpp"
 #include "values.hpp"
+#include "warnings.hpp"
 
 namespace ogive::cli {
 namespace {
+
+// --fill-height crown (0) or crown+D, crown-D: the fill's level D m above (below) the extrados' crown.
+double crown_offset(const std::string& text) {
+  if (text == "crown") return 0;
+  const std::string rest = text.substr(5);
+  if (rest.size() > 1 && (rest.front() == '+' || rest.front() == '-')) {
+    const double d = parse_number(with_units_resolved(rest.substr(1), "--fill-height", 0), "--fill-height");
+    return rest.front() == '-' ? -d : d;
+  }
+  throw UsageError(fmt::format("--fill-height: crown, or crown+D for D m above the extrados' crown (e.g. crown+0.5), "
+                               "got '{}'",
+                               text.substr(0, 40)));
+}
 
 const std::map<std::string, SupportKind> kSupportKinds = {{"clamped", SupportKind::clamped},
                                                           {"pinned", SupportKind::pinned}};
@@ -137,9 +152,65 @@ ScenePlan::ScenePlan(SceneOptions& o, const CLI::App& cmd) : options_(o) {
   if (family_->file) o.points = read_points(o);
   check_option_pairs(cmd);
   choose_supports(o, cmd);
+  choose_dimensions(o, cmd);
   if (!o.loads_file.empty()) o.file_loads = read_loads(o);
   plan_axes(o, cmd);
+  // Lengths in metres with the span left at its default are most likely a forgotten --span.
+  if (!family_->file && !given(cmd, "--span") && !given(cmd, "--radius"))
+    if (const char* metres = given_of(cmd, {"--thickness", "--rise", "--fill-height", "--point-load-x",
+                                            "--live-load-from-x", "--live-load-to-x"}))
+      warn("--span", fmt::format("{} is in metres but --span was not given: the default span of {} m is used",
+                                 metres, cmd.get_option("--span")->get_default_str()));
   require_some_scene();
+}
+
+// --dimensions intrados: the span and rise given are the intrados', which the ring's thickness in metres
+// turns into the axis' (to_axis_dimensions); the ratio forms would be ratios of a span not yet known.
+void ScenePlan::choose_dimensions(const SceneOptions& o, const CLI::App& cmd) {
+  static const std::map<std::string, bool> kDimensions = {{"axis", false}, {"intrados", true}};
+  intrados_ = lookup(kDimensions, o.dimensions, "--dimensions");
+  if (!intrados_) return;
+  if (family_->file)
+    throw UsageError(fmt::format("--dimensions intrados: a --curve {} file gives the axis' points", o.curve));
+  for (const char* flag : {"--thickness-ratio", "--rise-ratio", "--eccentricity", "--radius"})
+    if (given(cmd, flag))
+      throw UsageError(fmt::format("--dimensions intrados: give the intrados' --span and --rise in m, not {}", flag));
+  if (!given(cmd, "--thickness"))
+    throw UsageError("--dimensions intrados: give --thickness in m (the ring's thickness sets the intrados)");
+  if ((family_->rise || family_->eccentricity) && !given(cmd, "--rise"))
+    throw UsageError(fmt::format("--dimensions intrados: give the intrados' --rise in m (the {} arch's rise)", o.curve));
+}
+
+// The axis' span and rise whose intrados has the span and rise given (p.span, p.rise), for the ring of
+// thickness p.thickness: the corrections clear - clear(L, h) and rise - rise(L, h) added to L and h until
+// they vanish to round-off (each is nearly 1 : 1, the rest of order t / R: a few iterations). NaN span
+// where no such arch exists (build() refuses it).
+void ScenePlan::to_axis_dimensions(SceneParameters& p) const {
+  constexpr double kRoundOff = 4 * std::numeric_limits<double>::epsilon();
+  constexpr int kMaxIterations = 100;
+  const double clear = p.span, rise = p.rise, t = p.thickness;
+  double L = clear + t, h = rise + 0.5 * t;  // the semicircle's, and a smooth crown's
+  for (int k = 0; k < kMaxIterations; ++k) {
+    SceneParameters q = p;
+    q.span = L;
+    q.rise = h;
+    q.thickness_ratio = q.rise_ratio = std::numeric_limits<double>::quiet_NaN();
+    try {
+      derive_metres(q);
+      const IntradosDimensions d = intrados_dimensions(*make_curve(q), t);
+      const double dL = clear - d.clear_span, dh = std::isnan(rise) ? 0.0 : rise - d.rise;
+      if (std::abs(dL) <= kRoundOff * clear && (std::isnan(rise) || std::abs(dh) <= kRoundOff * rise)) {
+        p.span = L;
+        p.rise = std::isnan(rise) ? rise : h;
+        return;
+      }
+      L += dL;
+      h += dh;
+    } catch (const std::invalid_argument&) {
+      break;
+    }
+  }
+  p.span = std::numeric_limits<double>::quiet_NaN();
 }
 
 void ScenePlan::choose_supports(const SceneOptions& o, const CLI::App& cmd) {
@@ -185,10 +256,17 @@ void ScenePlan::plan_axes(SceneOptions& o, const CLI::App& cmd) {
     if (!is_given && a.flag == "--thickness-ratio" && thickness_flag_ == "--thickness") text.clear();
     if (!is_given && a.flag == "--eccentricity" && shape) text.clear();
     if (is_given && a.flag == "--fill-height") fill_in_metres_ = true;
-    if (is_given && a.flag == "--fill-height" && text == "crown") {
+    if (is_given && a.flag == "--fill-height" && text.rfind("crown", 0) == 0) {
       fill_to_crown_ = true;
+      fill_over_crown_ = crown_offset(text);
       text.clear();
     }
+    const std::string resolved = with_units_resolved(text, a.flag, force_unit_ == 1 ? 0 : 3);
+    if (is_given && resolved == text && force_unit_ == 1) {
+      if (a.flag == "--point-load") bare_newton_point_ = true;
+      if (a.flag == "--live-load") bare_newton_live_ = true;
+    }
+    text = resolved;
     if (family_->file && a.flag == "--span") {
       // A points file sets the span: --span may only repeat it.
       const double own = o.points->span();
@@ -239,6 +317,7 @@ SceneParameters ScenePlan::parameters(std::size_t index) const {
     index /= a.values.size();
   }
   if (!family_->eccentricity) p.eccentricity = std::numeric_limits<double>::quiet_NaN();
+  if (intrados_) to_axis_dimensions(p);
   derive_metres(p);
   // The defaults of the load and movement options, as the row prints them.
   if (!std::isnan(p.point_load) && std::isnan(p.point_load_at)) p.point_load_at = 0.5;
@@ -276,7 +355,7 @@ void ScenePlan::derive_metres(SceneParameters& p) const {
   if (!std::isnan(p.live_load_to_x)) p.live_load_to = p.live_load_to_x / L;
   if (fill_to_crown_) {
     try {
-      p.fill_height = extrados_crown_height(*make_curve(p), p.thickness);
+      p.fill_height = extrados_crown_height(*make_curve(p), p.thickness) + fill_over_crown_;
     } catch (const std::invalid_argument&) {
       // No curve: build() says why.
     }
@@ -288,6 +367,9 @@ void ScenePlan::derive_metres(SceneParameters& p) const {
 // The rules of the metre forms that depend on the span or the curve (one line naming the option).
 void ScenePlan::check_metres(const SceneParameters& p) const {
   const double L = p.span;
+  if (intrados_ && std::isnan(L))
+    throw std::invalid_argument("--dimensions intrados: no arch of this curve and --thickness has that clear span and "
+                                "intrados rise (its intrados must reach the crown's vertical)");
   // A ratio derived from its metre form keeps the ratio option's rule, stated for the metre option.
   for (const auto& [metre, given, ratio_flag, ratio] :
        {std::tuple{"--thickness", thickness_flag_ == "--thickness", "--thickness-ratio", p.thickness_ratio},
@@ -339,6 +421,7 @@ ScenePlan::Built ScenePlan::build(const SceneParameters& p) const {
       scene.loads.live.push_back({p.live_load * p.force_unit, p.live_load_from, p.live_load_to});
     if (!std::isnan(p.fill_density)) scene.loads.fills.push_back({p.fill_density, p.fill_height_ratio});
     scene.validate();
+    warn_of_small_loads(p, scene);
     out.scene = std::move(scene);
   } catch (const std::invalid_argument& e) {
     out.problem = as_option_message(e.what());
@@ -350,6 +433,21 @@ ScenePlan::Built ScenePlan::build(const SceneParameters& p) const {
       out.problem = "--rise: rise / span" + out.problem.substr(std::string_view("--rise-ratio:").size());
   }
   return out;
+}
+
+// A point or live load below 1 % of the arch's own weight, given as a bare number in N: most likely
+// meant in kN (100 for 100 kN/m). A warning, not an error: a small load may be meant.
+void ScenePlan::warn_of_small_loads(const SceneParameters& p, const Scene& scene) const {
+  const double weight = p.density * p.gravity * p.thickness * scene.curve->whole_length();  // N/m
+  const auto check = [&](bool bare, const char* flag, double total, double value, const char* unit) {
+    if (bare && weight > 0 && total != 0 && std::abs(total) < 0.01 * weight)
+      warn(flag, fmt::format("{}: {} {} is less than 1 % of the arch's own weight ({:.4g} N per metre of vault "
+                             "width); if kN were meant, give {}kN or --units kN",
+                             flag, value, unit, weight, value));
+  };
+  check(bare_newton_point_, "--point-load", p.point_load, p.point_load, "N/m");
+  check(bare_newton_live_, "--live-load", p.live_load * (p.live_load_to - p.live_load_from) * p.span, p.live_load,
+        "N/m^2");
 }
 
 // Scans without keeping anything, and stops at the first scene that can be made.

@@ -48,8 +48,11 @@ class ScenePlan {
   void choose_supports(const SceneOptions& o, const CLI::App& cmd);
   void plan_axes(SceneOptions& o, const CLI::App& cmd);
   void require_some_scene() const;
+  void warn_of_small_loads(const SceneParameters& p, const Scene& scene) const;
   std::shared_ptr<const Curve> make_curve(const SceneParameters& p) const;
   void derive_metres(SceneParameters& p) const;
+  void choose_dimensions(const SceneOptions& o, const CLI::App& cmd);
+  void to_axis_dimensions(SceneParameters& p) const;
   void check_metres(const SceneParameters& p) const;
 
   const SceneOptions& options_;
@@ -61,7 +64,13 @@ class ScenePlan {
   std::size_t size_ = 1;
   std::string thickness_flag_;   // --thickness-ratio or --thickness: the one the user's thickness came by
   std::string shape_flag_;       // what set the pointed arch's shape: --eccentricity, --rise-ratio, --rise, --radius
-  bool fill_to_crown_ = false;   // --fill-height crown
+  bool fill_to_crown_ = false;   // --fill-height crown or crown+D
+  double fill_over_crown_ = 0;   // m, D of crown+D (crown-D: below it)
+  bool intrados_ = false;        // --dimensions intrados: --span and --rise are the intrados' (NaN rise:
+                                 // the semicircle's)
+  // --point-load and --live-load given as bare numbers in N (neither a unit nor --units kN): build()
+  // warns where one is too small to have been meant in N.
+  bool bare_newton_point_ = false, bare_newton_live_ = false;
   bool fill_in_metres_ = false;  // --fill-height given
   double force_unit_ = 1.0;      // N per unit of the force options (--units)
 };

@@ -24,5 +24,6 @@ Run add_draw_options(CLI::App& cmd);     // an SVG file per scene
 Run add_limit_options(CLI::App& cmd);    // limit analysis of rigid voussoirs
 Run add_report_options(CLI::App& cmd);   // an HTML page per scene
 Run add_spread_options(CLI::App& cmd);   // the arch on spreading supports to collapse
+Run add_assess_options(CLI::App& cmd);   // criteria and a verdict per scene
 
 }  // namespace ogive::cli

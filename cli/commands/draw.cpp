@@ -2,7 +2,9 @@
 // (ogive/output/html_report.hpp), and one CSV row per file on stdout (report --output -: the page instead).
 #include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -20,6 +22,7 @@
 #include "cli.hpp"
 #include "columns.hpp"
 #include "commands.hpp"
+#include "criteria.hpp"
 #include "ogive/limit/limit.hpp"
 #include "ogive/limit/spreading.hpp"
 #include "ogive/output/html_report.hpp"
@@ -48,6 +51,7 @@ struct DrawTargets {
 
 struct DrawOptions {
   SceneOptions scene;
+  CriteriaText criteria;  // report's verdict
   Options solver;
   SolverText solver_text;
   DrawTargets targets;
@@ -124,9 +128,11 @@ std::string draw_title(const SceneParameters& p) {
   std::string title = p.curve;
   for (const auto& [name, v] : {std::pair{"eccentricity", p.eccentricity}, std::pair{"rise ratio", p.rise_ratio},
                                 std::pair{"haunch angle", p.haunch_angle}, std::pair{"crown angle", p.crown_angle}})
-    if (!std::isnan(v)) title += fmt::format(", {} {}", name, v);
-  title += fmt::format(", span {:.6g} m, t/L {}", p.span, p.thickness_ratio);
-  if (p.support_displacement_ratio != 0) title += fmt::format(", d/L {}", p.support_displacement_ratio);
+    if (!std::isnan(v)) title += fmt::format(", {} {:.6g}", name, v);
+  // Six significant digits: a ratio derived from metres (0.3 m over 12 m) shows as 0.025, not as the
+  // double's 0.024999999999999998.
+  title += fmt::format(", span {:.6g} m, t/L {:.6g}", p.span, p.thickness_ratio);
+  if (p.support_displacement_ratio != 0) title += fmt::format(", d/L {:.6g}", p.support_displacement_ratio);
   if (p.plane_strain) title += ", plane strain";
   if (std::string(p.section) != "elastic") title += fmt::format(", {} section", p.section);
   const double kilonewtons = p.force_unit / 1000;  // the force options' unit in kN
@@ -292,6 +298,22 @@ std::vector<std::pair<std::string, std::string>> given_inputs(const CLI::App& cm
   return inputs;
 }
 
+// Today's date (UTC, YYYY-MM-DD), or SOURCE_DATE_EPOCH's where it is set (the reproducible-builds
+// convention: a page made twice from the same inputs is then the same bytes).
+std::string report_date() {
+  std::time_t now = std::time(nullptr);
+  if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH")) {
+    char* end = nullptr;
+    const long long seconds = std::strtoll(epoch, &end, 10);
+    if (end != epoch && *end == '\0' && seconds >= 0) now = static_cast<std::time_t>(seconds);
+  }
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[16];
+  std::strftime(text, sizeof text, "%Y-%m-%d", &utc);
+  return text;
+}
+
 int run_report(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
   Columns columns = draw_columns();
   if (d.columns.columns == "help") {
@@ -306,6 +328,9 @@ int run_report(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
   ReportOptions report;
   report.solver = o;
   report.inputs = given_inputs(cmd);
+  report.require = criteria_of(d.criteria);
+  report.warnings = default_warnings(cmd, d.scene.curve);
+  report.date = report_date();
   if (to.output == "-") {  // the page alone on standard output
     const SceneParameters p = plan.parameters(0);
     const ScenePlan::Built built = plan.build(p);
@@ -364,6 +389,7 @@ Run add_draw_options(CLI::App& cmd) {
 Run add_report_options(CLI::App& cmd) {
   auto options = add_picture_options(
       cmd, "the HTML file of the one scene (refused for a sweep); - writes the page to standard output");
+  add_criteria_options(cmd, options->criteria);
   cmd.add_option("--output-dir", options->targets.output_dir,
                  "an existing directory: one HTML page per scene, named after the curve and the options that vary");
   add_column_options(cmd, options->columns);

@@ -19,6 +19,7 @@
 
 #include "ogive/limit/limit.hpp"
 #include "ogive/limit/spreading.hpp"
+#include "ogive/solve/assessment.hpp"
 #include "ogive/solve/model_error.hpp"
 #include "ogive/solve/solve.hpp"
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace ogive {
 
@@ -82,6 +83,20 @@ double extrados_crown_height(const Curve& curve, double thickness) {
     height = std::max(height, face_at(side, 0.5 * thickness, extrados.s_crown()).p.y());
   }
   return height;
+}
+
+IntradosDimensions intrados_dimensions(const Curve& curve, double thickness) {
+  if (curve.extent() != CurveExtent::half)
+    throw std::invalid_argument("curve: the intrados' clear span and rise are those of a symmetric (half) curve");
+  const SideView side(curve, false);
+  const double n = -0.5 * thickness, xc = side.crown_x(), S = side.length();
+  const FacePoint springing = face_at(side, n, 0.0);
+  // The intrados' x grows with s; it reaches the crown's vertical at the crown (smooth) or before it
+  // (pointed: the inner face turns past the vertical before the axis does).
+  if (!(face_at(side, n, S).p.x() >= xc - 1e-12 * curve.span()) || !(springing.p.x() < xc))
+    throw std::invalid_argument("thickness: the intrados of this ring does not reach the crown's vertical");
+  const double s = face_at_x(side, n, xc, 0.0, S, curve.span());
+  return {2.0 * (xc - springing.p.x()), face_at(side, n, s).p.y() - springing.p.y()};
 }
 
 double SideExtrados::s_at(double x, double guess) const {

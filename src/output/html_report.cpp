@@ -12,6 +12,7 @@
 #include "ogive/output/csv.hpp"
 #include "ogive/output/svg.hpp"
 #include "ogive/solve/solve.hpp"
+#include "ogive/version.hpp"
 #include "svg_draw.hpp"
 
 namespace ogive {
@@ -24,7 +25,12 @@ constexpr const char* kStyle =
     "h1{font-size:1.3em}h2{font-size:1.05em;margin-top:1.2em;border-bottom:1px solid #ccc}"
     "table{border-collapse:collapse;margin:.3em 0}td,th{border:1px solid #ccc;padding:.15em .5em;text-align:left}"
     "td.n{text-align:right;font-variant-numeric:tabular-nums}svg{max-width:100%;height:auto}"
-    ".note{color:#555;font-size:.9em}@media print{section{break-inside:avoid}body{max-width:none}}";
+    ".note{color:#555;font-size:.9em}@media print{section{break-inside:avoid}body{max-width:none}}"
+    "#verdict{border:3px solid;padding:.2em 1em;margin:1em 0}#verdict.pass{border-color:#1e8449}"
+    "#verdict.fail{border-color:#c0392b}#verdict.not_assessed{border-color:#b9770e}"
+    ".word{font-size:1.8em;font-weight:bold;margin:.2em 0}.pass .word{color:#1e8449}.fail .word{color:#c0392b}"
+    ".not_assessed .word{color:#b9770e}td.fail{color:#c0392b;font-weight:bold}td.pass{color:#1e8449}"
+    "#warnings li{color:#c0392b}";
 
 // A number to 4 significant digits in `scale` units, its full SI value in data-value; "-" when NaN.
 std::string cell(double si, double scale = 1, const char* unit = "") {
@@ -38,6 +44,101 @@ std::string row(const std::string& name, const std::string& cells) {
   return "<tr><th>" + name + "</th>" + cells + "</tr>\n";
 }
 
+// H over half the total vertical load its own state carries ((V_left + V_right) / 2): the one H/V of
+// the page, so that the elastic, cracking and limit thrusts compare like with like also when the scene
+// is not symmetric.
+double over_half_load(double H, double V_left, double V_right) { return H / (0.5 * (V_left + V_right)); }
+double over_half_load(const Solution& sol) {
+  return over_half_load(sol.H, sol.reactions.V_left, sol.reactions.V_right);
+}
+
+// A criterion as the page names it, with its unit.
+std::pair<const char*, const char*> criterion_words(Criterion c) {
+  switch (c) {
+    case Criterion::geometric_safety_factor: return {"geometric factor of safety t / t<sub>min</sub>", ""};
+    case Criterion::load_factor: return {"collapse load factor (point and live loads)", ""};
+    case Criterion::horizontal_load_factor: return {"collapse acceleration a<sub>c</sub>", "g"};
+    case Criterion::spread_capacity_ratio: return {"spreading capacity (span increase at collapse / span)", ""};
+    case Criterion::max_thrust_eccentricity: return {"largest thrust eccentricity |e| (at most)", "%"};
+  }
+  return {"?", ""};
+}
+
+std::string verdict_section(const Assessment& a, const ReportOptions& o) {
+  static constexpr const char* kWord[] = {"PASS", "FAIL", "NOT ASSESSED"};
+  const char* verdict = to_string(a.verdict);
+  std::string s = fmt::format("<section id=\"verdict\" class=\"{}\"><h2>Verdict</h2>\n<p class=\"word\">{}</p>\n",
+                              verdict, kWord[static_cast<int>(a.verdict)]);
+  const CriterionResult& g = a[a.governing];
+  const auto [name, unit] = criterion_words(g.criterion);
+  if (g.outcome == Outcome::pass || g.outcome == Outcome::fail)
+    s += fmt::format("<p>Governed by the {}: {:.4g}{}{} against {:.4g}{}{} required (margin {:.3g}).</p>\n", name,
+                     g.value, *unit ? " " : "", unit, g.required, *unit ? " " : "", unit, g.margin);
+  else if (g.outcome == Outcome::not_assessed)
+    s += fmt::format("<p>The {} could not be assessed: {}</p>\n", name, escaped(g.reason));
+  else
+    s += "<p>No criterion was required.</p>\n";
+  s += "<table>\n<tr><th>criterion</th><th>value</th><th>required</th><th>outcome</th></tr>\n";
+  for (const CriterionResult& r : a.criteria) {
+    if (r.outcome == Outcome::not_required && std::isnan(r.value)) continue;
+    const auto [words, u] = criterion_words(r.criterion);
+    s += row(words, cell(r.value, 1, u) + cell(r.required, 1, u) +
+                        fmt::format("<td class=\"{0}\">{0}{1}{2}</td>", to_string(r.outcome), r.reason.empty() ? "" : ": ",
+                                    escaped(r.reason)));
+  }
+  s += "</table>\n";
+  if (!a.warnings.empty() || !o.warnings.empty()) {
+    s += "<ul id=\"warnings\">\n";
+    for (const auto* list : {&a.warnings, &o.warnings})
+      for (const std::string& w : *list) s += "<li>" + escaped(w) + "</li>\n";
+    s += "</ul>\n";
+  }
+  return s + "</section>\n";
+}
+
+// The geometry that follows from the inputs, read off the ring of voussoirs: its springing joints'
+// intrados points give the clear span, its crown joint the intrados' and extrados' rises.
+std::string geometry_section(const Scene& scene, const Ring& ring) {
+  std::string s = "<section id=\"geometry\"><h2>Geometry</h2>\n<table>\n";
+  const CurvePoint crown = scene.curve->at(scene.curve->crown());
+  s += row("span of the axis L", cell(scene.span(), 1, "m"));
+  s += row("rise of the axis", cell(crown.y, 1, "m"));
+  if (!ring.joints.empty()) {
+    const Joint& c = ring.joints[static_cast<std::size_t>(ring.crown_joint())];
+    s += row("clear span (between the intrados' springing points)",
+             cell(ring.joints.back().intrados.x() - ring.joints.front().intrados.x(), 1, "m"));
+    s += row("rise of the intrados at the crown", cell(c.intrados.y() - ring.joints.front().intrados.y(), 1, "m"));
+    s += row("rise of the extrados at the crown", cell(c.extrados.y(), 1, "m"));
+    for (const FillLoad& f : scene.loads.fills) {
+      s += row("fill level above the springing line", cell(f.height_ratio * scene.span(), 1, "m"));
+      s += row("fill depth over the extrados' crown", cell(f.height_ratio * scene.span() - c.extrados.y(), 1, "m"));
+    }
+  }
+  s += row("thickness t", cell(scene.thickness, 1, "m"));
+  return s + "</table></section>\n";
+}
+
+const char* support_words(SupportKind k) { return k == SupportKind::clamped ? "clamped" : "pinned"; }
+
+std::string assumptions_section(const Scene& scene, const ReportOptions& o) {
+  std::string s = "<section id=\"assumptions\"><h2>Assumptions</h2>\n<ul>\n";
+  s += fmt::format("<li>The elastic analysis: a unit-width slice of the vault as a Timoshenko curved beam (E = {:.4g} "
+                   "GPa, &nu; = {:.3g}), {} section, {} and {} springings{}.</li>\n",
+                   scene.material.youngs_modulus / 1e9, scene.material.poisson_ratio,
+                   scene.section == SectionKind::elastic ? "elastic" : "no-tension (cracking)",
+                   support_words(scene.left.kind), support_words(scene.right.kind),
+                   scene.crown_hinge ? ", a hinge at the crown" : "");
+  s += "<li>The limit analysis, the collapse load, the collapse acceleration and the spreading capacity: rigid "
+       "voussoirs between radial joints, each with its true weight at its centroid (Heyman): no tensile strength, "
+       "unlimited compressive strength, no sliding.</li>\n";
+  s += "<li>The fill is a dead load on the extrados, with neither stiffness nor passive resistance; point and live "
+       "loads act on the arch where given, not spread by the fill.</li>\n";
+  s += "<li>Left out: the walls or piers under the springings (taken as rigid unless moved), crushing and sliding "
+       "of the masonry, the vault's three-dimensional action.</li>\n";
+  s += fmt::format("<li>ogive {}{}{}.</li>\n", kVersion, o.date.empty() ? "" : ", ", escaped(o.date));
+  return s + "</ul></section>\n";
+}
+
 std::string reactions_section(const Solution& sol) {
   const Reactions& r = sol.reactions;
   std::string s = "<section id=\"reactions\"><h2>Reactions (per metre of vault width)</h2>\n<table>\n"
@@ -45,19 +146,20 @@ std::string reactions_section(const Solution& sol) {
   s += row("left springing", cell(r.H_left, 1000, "kN/m") + cell(r.V_left, 1000, "kN/m") + cell(r.M_left, 1000, "kN m/m"));
   s += row("right springing",
            cell(r.H_right, 1000, "kN/m") + cell(r.V_right, 1000, "kN/m") + cell(r.M_right, 1000, "kN m/m"));
-  s += fmt::format("</table>\n<p class=\"note\">{} method, status <b>{}</b>{}{}</p></section>\n", to_string(sol.method),
-                   to_string(sol.status), sol.message.empty() ? "" : ": ", escaped(sol.message));
+  s += fmt::format("</table>\n<p class=\"note\">solved by the {} method; numerical status {}{}{}</p></section>\n",
+                   to_string(sol.method), to_string(sol.status), sol.message.empty() ? "" : ": ", escaped(sol.message));
   return s;
 }
 
 std::string thrusts_section(const Scene& scene, const Solution& sol, const LimitResult& lim) {
   std::string s = "<section id=\"thrusts\"><h2>Thrusts</h2>\n<table>\n<tr><th></th><th>H</th><th>H/V</th></tr>\n";
   s += row(scene.section == SectionKind::no_tension ? "no-tension section (cracked)" : "elastic",
-           cell(sol.H, 1000, "kN/m") + cell(sol.H_over_V));
+           cell(sol.H, 1000, "kN/m") + cell(over_half_load(sol)));
   s += row("minimum (limit analysis)", cell(lim.H_min(), 1000, "kN/m") + cell(lim.H_min() / lim.V));
   s += row("maximum (limit analysis)", cell(lim.H_max(), 1000, "kN/m") + cell(lim.H_max() / lim.V));
-  s += fmt::format("</table>\n<p class=\"note\">limit analysis (rigid no-tension voussoirs, radial joints): status "
-                   "<b>{}</b>{}{}</p></section>\n",
+  s += fmt::format("</table>\n<p class=\"note\">H/V: the thrust over half the total vertical load of its own state "
+                   "(the elastic arch's axis weight, the voussoirs' true weight). Limit analysis (rigid no-tension "
+                   "voussoirs, radial joints): status {}{}{}</p></section>\n",
                    to_string(lim.status), lim.message.empty() ? "" : ": ", escaped(lim.message));
   return s;
 }
@@ -101,7 +203,7 @@ std::string spreading_section(const Scene& scene, const ReportOptions& o, const 
     s.section = SectionKind::no_tension;
     s.set_support_displacement(r * scene.span());
     const Solution sol = solve(s, o.solver);
-    if (sol.ok()) points.push_back({r, sol.H_over_V});
+    if (sol.ok()) points.push_back({r, over_half_load(sol)});
     else failed.push_back(fmt::format("d/L = {:g}: {}", r, to_string(sol.status)));
   }
   const double w = 600, h = 300, left = 60, right = 20, top = 20, bottom = 50;
@@ -166,7 +268,7 @@ bool ReportOptions::is_valid(std::string* why) const {
     if (why) *why = fmt::format("spread_points: must lie in [2, 41], got {}", spread_points);
     return false;
   }
-  return solver.is_valid(why);
+  return solver.is_valid(why) && require.is_valid(why);
 }
 
 std::string html_report(const Scene& scene, const ReportOptions& options) {
@@ -180,7 +282,11 @@ std::string html_report(const Scene& scene, const Solution& sol, const ReportOpt
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
   scene.validate();
-  const LimitResult lim = analyse_limit(scene, LimitOptions{});
+  AssessmentOptions assessment;
+  assessment.require = options.require;
+  assessment.elastic = options.solver;
+  const Assessment a = assess(scene, assessment);
+  const LimitResult& lim = a.limit;
   DrawingOptions drawing;
   drawing.title = options.title;
   add_limit_analysis(drawing, scene, lim);
@@ -190,13 +296,15 @@ std::string html_report(const Scene& scene, const Solution& sol, const ReportOpt
   std::string page = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   page += "<title>ogive report: " + escaped(options.title) + "</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n";
   page += "<h1>" + escaped(options.title) + "</h1>\n";
+  page += verdict_section(a, options);
   page += "<section id=\"drawing\"><h2>The arch</h2>\n" + svg + "</section>\n";
   page += reactions_section(sol) + thrusts_section(scene, sol, lim) + safety_section(scene, lim) + collapse_section(scene, lim);
   page += spreading_section(scene, options, lim);
+  page += geometry_section(scene, lim.ring);
   page += "<section id=\"inputs\"><h2>Inputs as given</h2>\n<table>\n";
   for (const auto& [name, value] : options.inputs)
     page += "<tr><th>" + escaped(name) + "</th><td>" + escaped(value) + "</td></tr>\n";
-  page += "</table></section>\n</body>\n</html>\n";
+  page += "</table></section>\n" + assumptions_section(scene, options) + "</body>\n</html>\n";
   return page;
 }
 

@@ -250,6 +250,17 @@ void draw_mechanism(std::string& body, const Scene& scene, const CollapseMechani
     body += "/>\n";
   }
   body += "</g>\n";
+  // Numbered from the left springing, as the report's hinge table numbers them.
+  body += fmt::format("<g id=\"mechanism-hinge-numbers\" fill=\"{}\" font-size=\"{}\" font-weight=\"bold\">\n", m.colour,
+                      0.8 * frame.font);
+  for (std::size_t k = 0; k < m.hinges.size(); ++k) {
+    const PlanePoint c = frame.at(m.hinges[k].x, m.hinges[k].y);
+    body += "<text";
+    attribute(body, "x", c.x + 0.6 * frame.font);
+    attribute(body, "y", -c.y - 0.6 * frame.font);
+    body += fmt::format(">{}</text>\n", k + 1);
+  }
+  body += "</g>\n";
 }
 
 void draw_spread_stage(std::string& body, const SpreadStageDrawing& stage, const Frame& frame, Box& drawn) {

@@ -122,3 +122,40 @@ TEST_CASE("draw: loads, fill, cracked zones and each springing's movement are dr
   CHECK(longest < 110);
   std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("report: the verdict comes first, in words, with the criteria and the warnings") {
+  // A 12 m segmental bridge arch, rise 3 m, a 0.3 m ring filled to 3.8 m, 100 kN/m at 3 m: it cannot carry
+  // the load (assess: fail, governed by the load factor).
+  const std::vector<std::string> bridge = {"--curve", "segmental", "--span", "12", "--rise", "3", "--thickness", "0.3",
+                                           "--fill-density", "2000", "--fill-height", "3.8", "--point-load", "1e5",
+                                           "--point-load-x", "3"};
+  const Run page = run_command(with({"report", "--output", "-"}, bridge));
+  REQUIRE(page.status == 0);
+  const std::string& html = page.out;
+  const std::size_t verdict = html.find("<section id=\"verdict\" class=\"fail\">");
+  REQUIRE(verdict != std::string::npos);
+  CHECK(verdict < html.find("<section id=\"drawing\""));
+  CHECK(html.find("<p class=\"word\">FAIL</p>") != std::string::npos);
+  CHECK(html.find("Governed by the collapse load factor") != std::string::npos);
+  const Run assess = run_command(with({"assess", "--columns", "load_factor,verdict,governing"}, bridge));
+  REQUIRE(assess.status == 0);
+  CHECK(column(assess.out, "verdict") == "fail");
+  CHECK(value_after(html, "<th>collapse load factor") == std::stod(column(assess.out, "load_factor")));
+  // The warnings in words: the line of thrust leaves the ring, t < t_min, a load factor below 1, and the
+  // density left at its default.
+  for (const char* words : {"leaves the section", "is below t_min", "is below 1", "--density not given"})
+    CHECK_MESSAGE(html.find(words, verdict) != std::string::npos, words);
+  CHECK(html.find("--span not given") == std::string::npos);
+  for (const char* id : {"geometry", "assumptions"})
+    CHECK_MESSAGE(html.find(std::string("<section id=\"") + id + "\"") != std::string::npos, id);
+  // The title shows the ratio made of metres without float noise.
+  CHECK(html.find("t/L 0.025,") != std::string::npos);
+
+  // A twice as thick ring with a geometric factor of 1.5 asked passes, and says so.
+  std::vector<std::string> thick = bridge;
+  thick[7] = "0.6";
+  const Run pass = run_command(with({"report", "--output", "-", "--require-geometric-factor", "1.5"}, thick));
+  REQUIRE(pass.status == 0);
+  CHECK(pass.out.find("<section id=\"verdict\" class=\"pass\">") != std::string::npos);
+  check_refused(with({"report", "--output", "-", "--require-load-factor", "0"}, thick));
+}

@@ -270,7 +270,7 @@ TEST_CASE("model error: auto picks Euler-Bernoulli for a thin arch, Timoshenko b
   }
 }
 
-TEST_CASE("model error: the estimate is the distance to the curved bar plus its bound; beyond the tolerance, not success") {
+TEST_CASE("model error: the estimate is the distance to the curved bar plus its bound, beyond the tolerance, not success") {
   const Scene scene = paper_scene(0.0, 0.2);
   Options o;
   o.estimate_model_error = true;
@@ -329,7 +329,7 @@ TEST_CASE("model error: the estimate bounds the error against the two-dimensiona
   CHECK(curved_within_bound == rows / 3);
 }
 
-TEST_CASE("model error: --beam-model auto prints which model it picked and its estimate; bad tolerances refused") {
+TEST_CASE("model error: --beam-model auto prints which model it picked and its estimate, bad tolerances refused") {
   const test::Run r = test::run_command({"thrust", "--beam-model", "auto", "--thickness-ratio", "0.02,0.12"});
   REQUIRE(r.status == 0);
   CHECK(test::column(r.out, "beam_model", 1) == "euler-bernoulli");

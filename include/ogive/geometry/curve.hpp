@@ -162,6 +162,17 @@ SectionFaces section_faces(const CurvePoint& p, double thickness);
 // the higher of its two sides' there.
 double extrados_crown_height(const Curve& curve, double thickness);
 
+// The intrados (the axis offset by t/2 along the normal, inwards) of a ring of thickness t on a half
+// curve, as engineers measure it: the clear span between its two springing points, and its rise from
+// them to where it crosses the crown's vertical (below a pointed crown, where the two sides' intrados
+// meet, lower than the crown - t/2). Throws std::invalid_argument for a whole curve (its two springings
+// need not be level) or a thickness whose intrados does not reach the crown's vertical.
+struct IntradosDimensions {
+  double clear_span = 0;  // m
+  double rise = 0;        // m
+};
+IntradosDimensions intrados_dimensions(const Curve& curve, double thickness);
+
 // Position, angle and curvature on one arc, at distance ds (0 <= ds <= arc.length) from its start.
 CurvePoint point_on_arc(const CircularArc& arc, double ds);
 
