@@ -226,7 +226,8 @@ double reaction_and_thrust_difference(const Reactions& a, const Reactions& refer
 
 // The largest of the relative differences of the reactions, of H/V (relative to max(|H/V|, 1/100)) and
 // of the profiles (when both carry one): the error estimate of a solution a against a tighter one b. NaN
-// when either has no field.
+// when either has no field, or when any of these differences is NaN (a station without numbers: never
+// dropped).
 double solution_difference(const Solution& a, const Solution& b);
 
 // The error measure of a profile against a reference at the same stations: the largest difference of
