@@ -26,8 +26,8 @@ namespace ogive {
 // global error of a shooting solve is their accumulation amplified by the boundary-value system's
 // condition (about 10^2), and BDF (order <= 5) takes ~4x more steps than Adams (order <= 12): at
 // 1/100 its verified profiles missed rtol by 1.2-3.6x on the pointed arches. A verified solve also runs
-// 16 and at least 64 times tighter (solve.cpp), so it reaches rtol down to 64 f^-1 kCvodeRtolFloor:
-// 6.4e-13 with Adams, 6.4e-11 with BDF.
+// 16 and 256 times tighter (solve.cpp), never below kCvodeRtolFloor: below rtol 256 f^-1 kCvodeRtolFloor
+// (2.56e-12 with Adams, 2.56e-10 with BDF) its first solve runs looser than f x rtol.
 struct CvodeTolerances {
   double rtol = 0, atol = 0;
 };
