@@ -3,7 +3,7 @@
 and whether any row says success with numbers outside rtol.
 
     /usr/bin/python3 benchmarks/pessimism/random_scenes.py [--ogive build/ogive] [--scenes 100] [--seed 1]
-        [--csv benchmarks/pessimism/random_scenes.csv]
+        [--csv benchmarks/pessimism/random_scenes.csv] [--extra '--atol 1e300']
 
 Draws elastic scenes at random: every curve family (semicircular, pointed, segmental, three- and
 four-centred, elliptical, parabolic, catenary), t/L 0.01 .. 0.25 (log-uniform), clamped or pinned
@@ -24,8 +24,9 @@ A scene whose reference is not `success` is skipped (counted).
 A row is success-worthy when its true error plus the reference's noise is within rtol, and then a
 false alarm when its status is not success (tolerance_not_met, unverified, ill_conditioned, ...; the
 table counts each); a false success when it says success with a true error minus the noise above rtol
-(the script exits 1). Prints the table per method and integrator, for rtol >= 1e-10 and for all rtols,
-as Markdown. Standard library only.
+(the script exits 1). --extra adds options to the measured rows (never to the references): no option
+may make a false success. Prints the table per method and integrator, for rtol >= 1e-10 and for all
+rtols, as Markdown. Standard library only.
 """
 import argparse
 import csv
@@ -122,6 +123,8 @@ def main():
     ap.add_argument("--scenes", type=int, default=100)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--csv", default=os.path.join(HERE, "random_scenes.csv"))
+    ap.add_argument("--extra", default="", help="options added to the measured rows (not the references), e.g. "
+                                                "'--atol 1e300' or '--no-verify': no option may make a false success")
     a = ap.parse_args()
     rng = random.Random(a.seed)
     rows, skipped = [], 0
@@ -134,9 +137,10 @@ def main():
             continue
         kind, ref = found
         methods = (["closed-form"] if closed else []) + ["quadrature", "shooting", "multiple-shooting"]
-        rows += measure(a.ogive, label, kind, opts, ref, methods, ["adams", "bdf"])
+        extra = a.extra.split()
+        rows += measure(a.ogive, label, kind, opts + extra, ref, methods, ["adams", "bdf"])
         for integ in ["adams", "bdf"]:
-            rows += measure(a.ogive, label, kind, opts, ref, ["auto"], [integ], shown="auto")
+            rows += measure(a.ogive, label, kind, opts + extra, ref, ["auto"], [integ], shown="auto")
         print(f"{i + 1}/{a.scenes} {label}: {len(rows)} rows", file=sys.stderr)
     for r in rows:
         r["success_worthy"] = r["true_error"] + r["reference_noise"] <= r["rtol"]
@@ -147,7 +151,8 @@ def main():
         w.writeheader()
         for r in rows:
             w.writerow({k: (f"{v:.3e}" if isinstance(v, float) else v) for k, v in r.items()})
-    print(f"{a.scenes} scenes (seed {a.seed}), {skipped} without a reference; {len(rows)} rows\n")
+    print(f"{a.scenes} scenes (seed {a.seed}{', ' + a.extra if a.extra else ''}), {skipped} without a reference; "
+          f"{len(rows)} rows\n")
     summarize(rows)
     return 1 if any(r["false_success"] for r in rows) else 0
 

@@ -105,6 +105,9 @@ constexpr double kLadderStep = 16;
 constexpr double kTightestRtol = kCvodeRtolFloor;
 constexpr double kLadderTop = kLadderStep * kLadderStep * kTightestRtol;
 constexpr std::size_t kLadderSolves = 5;  // at most: a fourth and fifth where the differences contract
+// A solve returned on the contraction of the differences carries this multiple of its difference from
+// the solve above it (solve_verified).
+constexpr double kContractedFactor = 3;
 
 // The options of solve_verified's first solve: rtol as asked, or looser where the ladder below it would
 // pass CVODE's floor (kLadderTop); the atol capped at the default (verifying_options).
@@ -129,13 +132,16 @@ Options ladder_start(const Options& options) {
 // good as x2. (With 2 d2, from e3 <= e2 / 2, calibration.py, seed 1, found single shooting with Adams
 // at rtol 1e-10 on a segmental arch with e1 = 1.60e-12, e2 = 1.73e-12, e3 = 0.89e-12: 2 d2 = 0.97 e2.)
 // Where that misses rtol but the differences contract (d2 <= d1 / 2: the errors do fall with the
-// tolerance, seen rather than assumed), x3 is returned with d2, which bounds e3 when e3 <= e2 / 2.
-// Where that misses rtol too, the ladder goes one rung down while the next solve fits (a full 16 times
-// tighter, above CVODE's floor) and the differences keep contracting, up to kLadderSolves solves: x4 with d3, x5 with
-// d4 (each the same two rules one rung lower; d3 <= d2 / 2 seen). A thin arch whose single shooting
-// solve at f x rtol is off by a hundred times rtol needs them: the random scenes of
-// benchmarks/pessimism/random_scenes.py (a pointed arch, t/L 0.013, at rtol 1e-9: raw errors 1.9e-7,
-// 1.2e-8, 3.6e-10, 2.5e-11 down the ladder; x3's d2 missed rtol, x4's d3 meets it).
+// tolerance, seen rather than assumed), x3 is returned with 3 d2 (kContractedFactor), which bounds e3
+// when e3 <= 3 e2 / 4 (from e2 <= d2 + e3). Single shooting of a thin arch has errors that change
+// erratically with the tolerance around their trend, and d2 alone (e3 <= e2 / 2) fell short: a random
+// pointed arch (t/L 0.013, benchmarks/pessimism/random_scenes.py, rtol 1e-7) had e3 = 2.67e-8 and e4 =
+// 2.70e-8 for d3 = 1.13e-8, where a raw solve at an rtol a millionth from the fourth's was off by 0.82e-8.
+// Where that misses rtol too, the ladder goes one rung down while the next solve fits (a full 16
+// times tighter, above CVODE's floor) and the differences keep contracting, up to kLadderSolves
+// solves: x4 with 3 d3, x5 with 3 d4 (d3 <= d2 / 2 seen, and so on). A thin arch whose single shooting
+// solve at f x rtol is off by a hundred times rtol needs them (the same arch at rtol 1e-9: raw errors
+// 1.9e-7, 1.2e-8, 3.6e-10, 2.5e-11 down the ladder).
 // A difference that is not a number (a station without numbers in either solve) is no agreement: the
 // row has no estimate (unverified), never the estimate of what is left.
 // The round-off of one CVODE solve's integration, which the differences between the verifying solves
@@ -209,8 +215,9 @@ Solution solve_verified(const std::shared_ptr<const ArchModel>& model, const Opt
       return returned(k, kNaN, "not verified: a verifying solve has a station without numbers");
     const double estimate = std::max({above, 3 * below, roundoff[k]});
     if (within_tolerance(estimate, options.rtol) || !(below <= above / 2)) return returned(k, estimate);
-    // The differences contract: x[k + 1] with its own, or one more rung where it fits.
-    const double finer = std::max(below, roundoff[k + 1]);
+    // The differences contract: x[k + 1] with three times its difference from x[k], or one more rung
+    // where it fits.
+    const double finer = std::max(kContractedFactor * below, roundoff[k + 1]);
     const bool fits = next.rtol * cvode_factor(next) >= kTightestRtol * (1 - 1e-9);
     if (within_tolerance(finer, options.rtol) || !fits || x.size() >= kLadderSolves) return returned(k + 1, finer);
     above = below;
