@@ -126,8 +126,8 @@ class ShootingField final : public PiecewiseField {
     // A piece that starts at a crown hinge starts with M = 0, and an atol of 1e-6 of a tight rtol can
     // hold it below its own round-off: CVODE stops short and the piece's stations have no numbers
     // (multiple shooting of the whole three-hinged arch at CVODE rtol 3.9e-13: 16 of 129 stations).
-    // Once more with 16 times the atol; a piece that still fails keeps its NaNs (no estimate).
-    if (!out.empty() && !out[0].allFinite()) sample(16 * tol.atol);
+    // Once more with retry_atol; a piece that still fails keeps its NaNs (no estimate).
+    if (!out.empty() && !out[0].allFinite()) sample(retry_atol(tol.atol));
   }
 
  private:
@@ -152,6 +152,8 @@ CvodeTolerances cvode_tolerances(const Options& o) {
   t.atol = o.atol > 0 ? o.atol : t.rtol * 1e-6;
   return t;
 }
+
+double retry_atol(double atol) { return std::max(16 * atol, kRetryAtol); }
 
 std::vector<double> shooting_knots(const ArchModel& model, int segments, bool at_breakpoints) {
   const double S = model.length();

@@ -173,14 +173,10 @@ Solution solve_verified(const std::shared_ptr<const ArchModel>& model, const Opt
   auto climb = [&] {
     x.push_back(solve_once(model, next, method, segments));
     if (!x.back().field && x.back().status == Status::integrator_failure) {
-      // Once more with 16 times the atol: an atol of 1e-6 of a tight rtol can hold a component that
-      // starts at zero below its own round-off, and CVODE stops (CV_TOO_MUCH_WORK: multiple shooting
-      // with BDF at rtol 1e-6, the third solve at CVODE rtol 3.9e-12, atol 3.9e-18, on a thin pointed
-      // arch). Not always looser: thin arches need the small atol (single shooting with Adams at CVODE
-      // rtol 1.6e-14 on a pointed arch of t/L 0.017: profile errors 2.4e-13 with atol 1.6e-20, 1.3e-12
-      // with 1e-17, 6.1e-12 with 1e-16).
+      // Once more with a looser atol (retry_atol, shooting.hpp: CVODE stopped on a component held below
+      // its own round-off); the ladder's differences judge the answer as any other.
       Options looser = next;
-      looser.atol = 16 * cvode_tolerances(next).atol;
+      looser.atol = retry_atol(cvode_tolerances(next).atol);
       Solution again = solve_once(model, looser, method, segments);
       add_work(spent, again.field ? x.back().diagnostics : again.diagnostics);  // the discarded one's work
       if (again.field) x.back() = std::move(again);
