@@ -5,6 +5,8 @@ and whether any row says success with numbers outside rtol.
     /usr/bin/python3 benchmarks/pessimism/random_scenes.py [--ogive build/ogive] [--scenes 100] [--seed 1]
         [--csv benchmarks/pessimism/random_scenes.csv] [--extra '--atol 1e300']
 
+Writes the rows to random_scenes.csv and the scenes (number, reference, options) to random_scenes_scenes.csv.
+
 Draws elastic scenes at random: every curve family (semicircular, pointed, segmental, three- and
 four-centred, elliptical, parabolic, catenary), t/L 0.01 .. 0.25 (log-uniform), clamped or pinned
 springings (each side on its own in one scene of five; a crown hinge in a third of the pinned ones),
@@ -146,15 +148,36 @@ def main():
         r["success_worthy"] = r["true_error"] + r["reference_noise"] <= r["rtol"]
         r["false_alarm"] = r["success_worthy"] and r["status"] != "success"
         r["false_success"] = r["status"] == "success" and r["true_error"] - r["reference_noise"] > r["rtol"]
-    with open(a.csv, "w", newline="") as fh:
-        w = csv.DictWriter(fh, fieldnames=list(rows[0].keys()))
-        w.writeheader()
-        for r in rows:
-            w.writerow({k: (f"{v:.3e}" if isinstance(v, float) else v) for k, v in r.items()})
+    write(rows, a.csv)
     print(f"{a.scenes} scenes (seed {a.seed}{', ' + a.extra if a.extra else ''}), {skipped} without a reference; "
           f"{len(rows)} rows\n")
     summarize(rows)
     return 1 if any(r["false_success"] for r in rows) else 0
+
+
+ROW_COLUMNS = ["scene", "command", "method", "integrator", "chosen", "rtol", "status", "error_estimate", "true_error",
+               "reference_noise", "success_worthy", "false_alarm", "false_success"]
+
+
+def write(rows, path):
+    """Two files: path (one row per solve: the scene by its number, auto's chosen method, the numbers to 3
+    digits, success-worthy, false alarm and false success as 1 or 0, judged on the unrounded numbers) and
+    path with _scenes before .csv (each scene's number, reference and options)."""
+    numbers = {}
+    for r in rows:
+        numbers.setdefault(r["scene"], (len(numbers) + 1, r["reference"]))
+    with open(path.replace(".csv", "_scenes.csv"), "w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(["scene", "reference", "options"])
+        for label, (n, kind) in numbers.items():
+            w.writerow([n, kind, label])
+    with open(path, "w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(ROW_COLUMNS)
+        for r in rows:
+            out = dict(r, scene=numbers[r["scene"]][0], chosen=r["chosen"] if r["method"] == "auto" else "")
+            w.writerow([f"{out[k]:.3g}" if isinstance(out[k], float) else int(out[k]) if isinstance(out[k], bool)
+                        else out[k] for k in ROW_COLUMNS])
 
 
 def summarize(rows):
