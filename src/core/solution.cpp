@@ -163,7 +163,9 @@ double solution_difference(const Solution& a, const Solution& b) {
   const double thickness = b.model->scene().thickness;
   const double reactions = reaction_and_thrust_difference(a.reactions, b.reactions, thickness);
   if (std::isnan(reactions) || b.profile.empty()) return reactions;
-  return std::max(reactions, profile_difference(a.profile, b.profile, thickness));
+  // A profile difference that is not a number (a station without numbers) is kept: std::max would drop it.
+  const double profiles = profile_difference(a.profile, b.profile, thickness);
+  return std::isnan(profiles) ? profiles : std::max(reactions, profiles);
 }
 
 double profile_difference(const std::vector<ArchState>& profile, const std::vector<ArchState>& reference,

@@ -26,8 +26,8 @@ namespace ogive {
 // global error of a shooting solve is their accumulation amplified by the boundary-value system's
 // condition (about 10^2), and BDF (order <= 5) takes ~4x more steps than Adams (order <= 12): at
 // 1/100 its verified profiles missed rtol by 1.2-3.6x on the pointed arches. A verified solve also runs
-// 16 and at least 64 times tighter (solve.cpp), so it reaches rtol down to 64 f^-1 kCvodeRtolFloor:
-// 6.4e-13 with Adams, 6.4e-11 with BDF.
+// 16 and 256 times tighter (solve.cpp), never below kCvodeRtolFloor: below rtol 256 f^-1 kCvodeRtolFloor
+// (2.56e-12 with Adams, 2.56e-10 with BDF) its first solve runs looser than f x rtol.
 struct CvodeTolerances {
   double rtol = 0, atol = 0;
 };
@@ -35,6 +35,16 @@ struct CvodeTolerances {
 // CV_TOO_MUCH_ACC): its tolerance is clamped here, and a verifying solve below it is no tighter.
 inline constexpr double kCvodeRtolFloor = 1e-15;
 CvodeTolerances cvode_tolerances(const Options& o);
+// A solve, or a piece of its profile, that CVODE could not finish at the default atol runs once more
+// with the larger of 16 times that atol and kRetryAtol: an atol of 1e-6 of a tight rtol can hold a
+// component that starts at zero (multiple shooting's unit columns, M at a crown hinge) below its own
+// round-off, and CVODE stops (CV_TOO_MUCH_WORK). Not the default: thin arches need the small atol
+// (single shooting with Adams at CVODE rtol 1.6e-14 on a pointed arch of t/L 0.017: profile errors
+// 2.4e-13 with atol 1.6e-20, 1.3e-12 with 1e-17, 6.1e-12 with 1e-16). (Multiple shooting with BDF at
+// CVODE rtol 3.9e-12 on a thin pointed arch under a live load: 200,000 steps in one segment with atol
+// 3.9e-18 and 1e-18, 2,149 steps over the whole arch with 1e-17.)
+inline constexpr double kRetryAtol = 1e-17;
+double retry_atol(double atol);
 
 // Segment boundaries over [0, S~]: `segments` equal pieces, plus every curve breakpoint when
 // segments > 1 and at_breakpoints (single shooting lets the integrator restart at breakpoints

@@ -77,47 +77,74 @@ bool verifiable(const Options& options) {
 // How much tighter than `options` a further CVODE solve can run above CVODE's floor, up to 16 times.
 double room_below(const Options& options) { return std::min(16.0, cvode_tolerances(options).rtol / kCvodeRtolFloor); }
 
-// solve_verified's third solve is at least this much tighter than its second, for it to be plausibly
-// twice as accurate.
-constexpr double kThirdSolveRoom = 4;
-
-// The smallest rtol at which solve_verified's third solve runs the full 16 times tighter than its
-// second above CVODE's floor (2.56e-12 with Adams, 2.56e-10 with BDF).
-double full_room_rtol(const Options& options) {
+// CVODE's rtol per unit of --rtol (cvode_tolerances: 1/10 with Adams, 1/1000 with BDF).
+double cvode_factor(const Options& options) {
   Options o = options;
   o.rtol = 1;
-  const double factor = cvode_tolerances(o).rtol;  // CVODE's rtol per unit of --rtol
-  return 16 * 16 * kCvodeRtolFloor / factor;
+  return cvode_tolerances(o).rtol;
 }
 
-// Whether solve_verified's three solves fit above CVODE's floor.
-bool three_solves_fit(const Options& options) {
-  return verifiable(options) && room_below(verifying_options(options)) >= kThirdSolveRoom;
+// The smallest rtol at which a verifying CVODE solve 16 times tighter than a solve at rtol runs at
+// least 16 times above CVODE's floor (2.56e-12 with Adams, 2.56e-10 with BDF): the no-tension section's.
+double full_room_rtol(const Options& options) { return 16 * 16 * kCvodeRtolFloor / cvode_factor(options); }
+
+// solve_verified's ladder: CVODE solves each 16 times tighter than the one before, every one of them a
+// full 16 times tighter, down to CVODE's floor at most (kTightestRtol). A solve held less than 16 times
+// tighter by the floor runs where round-off sets its error as much as the tolerance, and that error
+// changes erratically with the tolerance (calibration.py, seed 2: single shooting with Adams at rtol
+// 1e-12 on a thin pointed arch, t/L 0.017: raw solves at CVODE rtol 1e-15 and one ulp above it were off
+// by 1.1e-13 and 3.7e-13; its tightest solve there, clamped to the floor 6.25 times tighter than the
+// second and returned with their difference, 4.3e-13, as estimate, was off by 1.3e-12). So the ladder
+// starts at CVODE rtol f x rtol, or where that would take its third solve below the floor, at
+// kLadderTop = 16^2 x the floor (2.56e-13): for --rtol below 2.56e-12 with Adams, 2.56e-10 with BDF,
+// the first solve runs looser than f x rtol, and whether the row meets rtol is what its estimate says.
+// (The ladder used to start at f x rtol there and squeeze its tightest solve against the floor: below
+// 6.4e-13 with Adams, 6.4e-11 with BDF, rows were unverified, and above, up to 2.56e-12 / 2.56e-10,
+// tolerance_not_met whatever their differences showed: single shooting with BDF at rtol 1e-10 said so
+// on a third of the random scenes whose numbers were within rtol, benchmarks/pessimism/README.md.)
+constexpr double kLadderStep = 16;
+constexpr double kTightestRtol = kCvodeRtolFloor;
+constexpr double kLadderTop = kLadderStep * kLadderStep * kTightestRtol;
+constexpr std::size_t kLadderSolves = 5;  // at most: a fourth and fifth where the differences contract
+// A solve returned on the contraction of the differences carries this multiple of its difference from
+// the solve above it (solve_verified).
+constexpr double kContractedFactor = 3;
+
+// The options of solve_verified's first solve: rtol as asked, or looser where the ladder below it would
+// pass CVODE's floor (kLadderTop); the atol capped at the default (verifying_options).
+Options ladder_start(const Options& options) {
+  Options start = options;
+  start.rtol = std::max(options.rtol, kLadderTop / cvode_factor(options));
+  return verifying_options(start, 1);
 }
 
 // A verified solve never runs looser than CVODE's default atol: a loose --atol would only make the first
 // solve worse and the difference larger, while the returned (tighter) solution stays the same, so the
 // status would change with an option that did not change the numbers.
 //
-// Three solves x1, x2, x3, each tighter than the one before: x2 16 times, x3 4 to 16 times, as CVODE's
-// floor allows (without that room the row is unverified); d1 = |x1 - x2|, d2 = |x2 - x3|; x2 is
-// returned. The difference of two solves bounds the tighter one's error only if that one is at least
-// twice as accurate as the looser: then e2 <= d1 (from x1: e2 <= e1 / 2 and d1 >= e1 - e2); from x3,
-// the weaker e3 <= 2 e2 / 3 gives e2 <= d2 + e3, so e2 <= 3 d2. CVODE controls local errors: its
-// global error usually falls with the tolerance but need not (Adams changing order can leave a 16
+// Three solves x1, x2, x3, each 16 times tighter than the one before (ladder_start: the first at f x
+// rtol or looser, the third at CVODE's floor at most); d1 = |x1 - x2|, d2 = |x2 - x3|;
+// x2 is returned. The difference of two solves bounds the tighter one's error only if that one is at
+// least twice as accurate as the looser: then e2 <= d1 (from x1: e2 <= e1 / 2 and d1 >= e1 - e2);
+// from x3, the weaker e3 <= 2 e2 / 3 gives e2 <= d2 + e3, so e2 <= 3 d2. CVODE controls local errors:
+// its global error usually falls with the tolerance but need not (Adams changing order can leave a 16
 // times tighter solve no better), so neither assumption alone is safe; the estimate is the larger of
 // the two, max(d1, 3 d2), which fails only when x2 is not twice as good as x1 and x3 not 1.5 times as
 // good as x2. (With 2 d2, from e3 <= e2 / 2, calibration.py, seed 1, found single shooting with Adams
 // at rtol 1e-10 on a segmental arch with e1 = 1.60e-12, e2 = 1.73e-12, e3 = 0.89e-12: 2 d2 = 0.97 e2.)
 // Where that misses rtol but the differences contract (d2 <= d1 / 2: the errors do fall with the
-// tolerance, seen rather than assumed), x3 is returned with d2, which bounds e3 when e3 <= e2 / 2 —
-// only where x3 ran the full 16 times tighter than x2. Held less tight by CVODE's floor, x3 runs where
-// round-off sets its error as much as truncation, and that error changes erratically with the
-// tolerance (calibration.py, seed 2: single shooting with Adams at rtol 1e-12 on a thin pointed arch,
-// t/L 0.017, returned x3 with d2 = 4.3e-13 for a true error of 1.3e-12; raw solves at CVODE rtol 1e-15
-// and one ulp above it were off by 1.1e-13 and 3.7e-13; with BDF at 1e-10, e3 = 0.57 e2). There x2 is
-// kept, its estimate above rtol: tolerance_not_met, the message naming the tightest rtol at which a
-// third solve runs 16 times tighter (kFullRoomRtol).
+// tolerance, seen rather than assumed), x3 is returned with 3 d2 (kContractedFactor), which bounds e3
+// when e3 <= 3 e2 / 4 (from e2 <= d2 + e3). Single shooting of a thin arch has errors that change
+// erratically with the tolerance around their trend, and d2 alone (e3 <= e2 / 2) fell short: a random
+// pointed arch (t/L 0.013, benchmarks/pessimism/random_scenes.py, rtol 1e-7) had e3 = 2.67e-8 and e4 =
+// 2.70e-8 for d3 = 1.13e-8, where a raw solve at an rtol a millionth from the fourth's was off by 0.82e-8.
+// Where that misses rtol too, the ladder goes one rung down while the next solve fits (a full 16
+// times tighter, above CVODE's floor) and the differences keep contracting, up to kLadderSolves
+// solves: x4 with 3 d3, x5 with 3 d4 (d3 <= d2 / 2 seen, and so on). A thin arch whose single shooting
+// solve at f x rtol is off by a hundred times rtol needs them (the same arch at rtol 1e-9: raw errors
+// 1.9e-7, 1.2e-8, 3.6e-10, 2.5e-11 down the ladder).
+// A difference that is not a number (a station without numbers in either solve) is no agreement: the
+// row has no estimate (unverified), never the estimate of what is left.
 // The round-off of one CVODE solve's integration, which the differences between the verifying solves
 // see only where it differs between them: every step rounds the scaled state (of order one) by a few
 // eps, and independent roundings add up as a random walk, sqrt(steps) eps, which the boundary-value
@@ -140,41 +167,58 @@ double integration_roundoff(const Diagnostics& own, Integrator integrator) {
 
 Solution solve_verified(const std::shared_ptr<const ArchModel>& model, const Options& options, Method method,
                         int segments) {
-  const Options first = verifying_options(options, 1);
-  const Solution coarse = solve_once(model, first, method, segments);
-  if (!coarse.field) return coarse;
-  if (!three_solves_fit(first)) {
-    Solution sol = coarse;
-    sol.message = fmt::format("rtol {:.3g} is below what CVODE solves 16 and {:.0f} times tighter can verify "
-                              "(CVODE's tolerance floor {:.0e})", options.rtol, 16 * kThirdSolveRoom, kCvodeRtolFloor);
+  std::vector<Solution> x;       // the ladder's solves, each 16 times tighter than the one before
+  std::vector<double> roundoff;  // each one's integration round-off
+  Diagnostics spent;             // the work of every solve, on whichever is returned
+  Options next = ladder_start(options);
+  auto climb = [&] {
+    x.push_back(solve_once(model, next, method, segments));
+    if (!x.back().field && x.back().status == Status::integrator_failure) {
+      // Once more with a looser atol (retry_atol, shooting.hpp: CVODE stopped on a component held below
+      // its own round-off); the ladder's differences judge the answer as any other.
+      Options looser = next;
+      looser.atol = retry_atol(cvode_tolerances(next).atol);
+      Solution again = solve_once(model, looser, method, segments);
+      add_work(spent, again.field ? x.back().diagnostics : again.diagnostics);  // the discarded one's work
+      if (again.field) x.back() = std::move(again);
+    }
+    roundoff.push_back(integration_roundoff(x.back().diagnostics, options.integrator));
+    add_work(spent, x.back().diagnostics);
+    set_work(x.back().diagnostics, spent);
+    next = verifying_options(next, kLadderStep);
+    return static_cast<bool>(x.back().field);
+  };
+  // Where the ladder starts looser than f x rtol (ladder_start) and misses rtol, the message says why.
+  const double lowest = kLadderTop / cvode_factor(options);
+  const std::string held = options.rtol < lowest ? fmt::format("the verifying solves stop at CVODE's floor, so below "
+                                                               "rtol {:.3g} ({}) they start looser than rtol / {:.0f}",
+                                                               lowest, to_string(options.integrator), 1 / cvode_factor(options))
+                                                 : "";
+  auto returned = [&](std::size_t k, double estimate, const std::string& why = {}) {
+    Solution sol = std::move(x[k]);
+    set_work(sol.diagnostics, spent);
+    sol.diagnostics.error_estimate = estimate;
+    if (!why.empty()) sol.message = why;
+    else if (!within_tolerance(estimate, options.rtol) && sol.message.empty()) sol.message = held;
     return sol;
+  };
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  if (!climb() || !climb()) return std::move(x.back());
+  double above = solution_difference(x[0], x[1]);  // x[k]'s difference from the looser solve
+  for (std::size_t k = 1;; ++k) {
+    if (!climb()) return returned(k, kNaN, "not verified: the tightest solve failed (" + x[k + 1].message + ")");
+    const double below = solution_difference(x[k], x[k + 1]);
+    if (std::isnan(above) || std::isnan(below))
+      return returned(k, kNaN, "not verified: a verifying solve has a station without numbers");
+    const double estimate = std::max({above, 3 * below, roundoff[k]});
+    if (within_tolerance(estimate, options.rtol) || !(below <= above / 2)) return returned(k, estimate);
+    // The differences contract: x[k + 1] with three times its difference from x[k], or one more rung
+    // where it fits.
+    const double finer = std::max(kContractedFactor * below, roundoff[k + 1]);
+    const bool fits = next.rtol * cvode_factor(next) >= kTightestRtol * (1 - 1e-9);
+    if (within_tolerance(finer, options.rtol) || !fits || x.size() >= kLadderSolves) return returned(k + 1, finer);
+    above = below;
   }
-  const Options second = verifying_options(first);
-  Solution sol = solve_once(model, second, method, segments);
-  const double roundoff = integration_roundoff(sol.diagnostics, options.integrator);  // before the others' work is added
-  add_work(sol.diagnostics, coarse.diagnostics);
-  if (!sol.field) return sol;
-  const double d1 = solution_difference(coarse, sol);
-  const double third_room = room_below(second);
-  Solution third = solve_once(model, verifying_options(second, third_room), method, segments);
-  const double third_roundoff = integration_roundoff(third.diagnostics, options.integrator);
-  add_work(third.diagnostics, sol.diagnostics);  // the work of all three solves, on either returned
-  set_work(sol.diagnostics, third.diagnostics);
-  if (!third.field) {
-    sol.diagnostics.error_estimate = std::numeric_limits<double>::quiet_NaN();
-    sol.message = "not verified: the third, tightest solve failed (" + third.message + ")";
-    return sol;
-  }
-  const double d2 = solution_difference(sol, third);
-  sol.diagnostics.error_estimate = std::isnan(d2) ? d2 : std::max({d1, 3 * d2, roundoff});
-  if (within_tolerance(sol.diagnostics.error_estimate, options.rtol) || !(d2 <= d1 / 2)) return sol;
-  if (third_room < 16) {
-    sol.message = fmt::format("the tightest solve, held by CVODE's floor, cannot confirm that the errors fall with the "
-                              "tolerance below rtol {:.3g} ({})", full_room_rtol(options), to_string(options.integrator));
-    return sol;
-  }
-  third.diagnostics.error_estimate = std::max(d2, third_roundoff);
-  return third;
 }
 
 // Turns a provisional `success` into what the numbers are worth against rtol: ill_conditioned,
@@ -433,7 +477,10 @@ Solution verify_no_tension(const Scene& scene, const Options& options, const Opt
     sample_profile(sol, kVerificationStations);
   }
   floor = larger_estimate(floor, sol.diagnostics.error_estimate);
-  sol.diagnostics.error_estimate = larger_estimate(solution_difference(first, sol), floor);
+  // A difference that is not a number (a station without numbers) is no agreement: no estimate.
+  const double difference = solution_difference(first, sol);
+  sol.diagnostics.error_estimate = std::isnan(difference) ? difference : larger_estimate(difference, floor);
+  if (std::isnan(difference)) sol.message = "not verified: a verifying solve has a station without numbers";
   return sol;
 }
 
@@ -556,7 +603,7 @@ Solution solve(const Scene& scene, const Options& options, const Solution* previ
   // 1, 4 a factor 25). Where segments stop helping (a thin near-funicular arch, whose eccentricity in kern
   // units amplifies every error of the forces by about L/t), CVODE is run tighter instead, by what the
   // estimate says is missing. Conditioning is the problem's own (it does not change with segments), so
-  // a singular or ill-conditioned system, or rtol below what can be verified, ends the search.
+  // a singular or ill-conditioned system ends the search.
   Options solver = options;
   solver.verify = true;
   Solution sol;
@@ -568,7 +615,10 @@ Solution solve(const Scene& scene, const Options& options, const Solution* previ
                      options.rtol);
     add_work(sol.diagnostics, spent);
     spent = sol.diagnostics;
-    if (sol.status != Status::tolerance_not_met && sol.status != Status::integrator_failure) break;
+    // A failed or unverified try (a verifying solve without numbers somewhere) goes on like one that
+    // missed rtol: more segments may verify where one did not.
+    const bool unverified = sol.status == Status::unverified && solver.restart_at_breakpoints;
+    if (sol.status != Status::tolerance_not_met && sol.status != Status::integrator_failure && !unverified) break;
     const double estimate = sol.diagnostics.error_estimate;
     const bool improving = !(estimate > previous_estimate / 2);  // also true after an integrator failure (NaN)
     previous_estimate = estimate;
@@ -580,12 +630,9 @@ Solution solve(const Scene& scene, const Options& options, const Solution* previ
     if (solver.rtol < options.rtol && !improving) break;  // tightening no longer helps: round-off's floor
     Options tighter = solver;
     tighter.rtol = std::max(solver.rtol * std::clamp(options.rtol / estimate / 4, 1e-3, 0.25), 1e-14);
-    // No tighter than the three verifying solves fit above CVODE's floor; where the solve already runs
-    // there, keep the last judged solve rather than one that cannot be verified.
-    if (!three_solves_fit(tighter)) {
-      tighter.rtol = solver.rtol * (16 * kThirdSolveRoom * kCvodeRtolFloor / cvode_tolerances(solver).rtol) * (1 + 1e-9);
-      if (!(tighter.rtol < solver.rtol) || !three_solves_fit(tighter)) break;
-    }
+    // Tighter only while the verifying ladder's first solve runs tighter: below that its tightest solve
+    // would reach CVODE's floor, and the ladder starts no lower (ladder_start).
+    if (!(cvode_tolerances(ladder_start(tighter)).rtol < cvode_tolerances(ladder_start(solver)).rtol)) break;
     solver = tighter;
   }
   return sol;

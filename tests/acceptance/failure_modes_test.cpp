@@ -86,24 +86,22 @@ TEST_CASE("failure mode: single shooting's profile strays past rtol (BDF - point
   CHECK(verified.status == Status::success);
   CHECK(true_error(verified, ref, scene) <= verified.diagnostics.error_estimate);
   CHECK(verified.diagnostics.error_estimate <= rtol);
-  // At rtol 1e-10 (below 2.56e-10) CVODE's floor holds the tightest solve less than 16 times tighter than
-  // the second: round-off sets its error as much as truncation, so a contraction of the differences
-  // proves nothing, and the second solve is kept with its estimate above rtol. (It used to return the
-  // tightest with d2 as its estimate: on a random thin pointed arch of calibration.py with Adams at
-  // rtol 1e-12 that was a success with a true error of 1.3e-12.)
-  const Solution near_floor = run(scene, Method::shooting, Integrator::bdf, 1e-10, true);
-  CHECK(near_floor.status == Status::tolerance_not_met);
-  CHECK(near_floor.message.find("floor") != std::string::npos);
-  CHECK(near_floor.message.find("2.56e-10") != std::string::npos);
-  CHECK(true_error(near_floor, ref, scene) <= near_floor.diagnostics.error_estimate);
-  // Below 6.4e-11 BDF runs under 6.4e-14, and solves 16 and 64 times tighter would be below CVODE's
-  // floor: the row cannot be verified, and says so instead of comparing solves clamped to one tolerance.
-  for (double below : {5e-11, 1e-11, 1e-12}) {
-    const Solution floor = run(scene, Method::shooting, Integrator::bdf, below, true);
+  // Below 2.56e-10 a ladder starting at rtol / 1000 would take its third solve below CVODE's floor, where
+  // round-off sets its error as much as truncation and a contraction of the differences proves nothing
+  // (it used to return such a solve, clamped to the floor, with its difference as its estimate: on a
+  // random thin pointed arch of calibration.py with Adams at rtol 1e-12 that was a success with a true
+  // error of 1.3e-12). The ladder starts looser there, every solve a full 16 times tighter than the one
+  // before; every row has an estimate that covers its true error, and says success only within rtol.
+  for (double below : {1e-10, 5e-11, 1e-11, 1e-12}) {
+    const Solution near_floor = run(scene, Method::shooting, Integrator::bdf, below, true);
     CAPTURE(below);
-    CHECK(floor.status == Status::unverified);
-    CHECK(floor.message.find("floor") != std::string::npos);
-    CHECK(std::isnan(floor.diagnostics.error_estimate));
+    CAPTURE(to_string(near_floor.status));
+    REQUIRE(near_floor.field);
+    CHECK((near_floor.status == Status::success || near_floor.status == Status::tolerance_not_met));
+    CHECK(std::isfinite(near_floor.diagnostics.error_estimate));
+    CHECK(true_error(near_floor, ref, scene) <= near_floor.diagnostics.error_estimate);
+    if (near_floor.ok()) CHECK(within_tolerance(true_error(near_floor, ref, scene), below));
+    else CHECK(near_floor.message.find("floor") != std::string::npos);  // why it started looser
   }
 }
 
@@ -117,10 +115,12 @@ TEST_CASE("failure mode: steps across jumps of curvature - H/V off by up to 37 r
   CHECK(relative_difference(raw.H_over_V, ref.H_over_V) > 10 * rtol);
   const Solution verified = run(scene, Method::shooting, Integrator::adams, rtol, true, false);
   CHECK(verified.status == Status::tolerance_not_met);
-  // At rtol 1e-8 the three solves' differences happen to agree (estimate 2.0e-9) while the profile is
-  // off by 2.6e-8: across the jumps no estimate holds, and the row is unverified, never a success.
+  // At rtol 1e-8 the three solves' differences once happened to agree (estimate 2.0e-9) while the
+  // profile was off by 2.6e-8: across the jumps no estimate holds, and a row whose estimate meets rtol
+  // is unverified (one that misses says tolerance_not_met), never a success.
   const Solution lucky = run(scene, Method::shooting, Integrator::adams, 1e-8, true, false);
-  CHECK(lucky.status == Status::unverified);
+  CAPTURE(to_string(lucky.status));
+  CHECK((lucky.status == Status::unverified || lucky.status == Status::tolerance_not_met));
   CHECK(true_error(lucky, ref, scene) > 1e-8);
   // With restarts at the breakpoints (the default) the same solve meets its tolerance.
   const Solution restarted = run(scene, Method::shooting, Integrator::adams, rtol, true);
@@ -137,8 +137,13 @@ TEST_CASE("failure mode: a rough survey - single shooting's profile at 67 rtol -
   const Solution raw = run(scene, Method::shooting, Integrator::adams, rtol, false);
   REQUIRE(raw.status == Status::unverified);
   CHECK(true_error(raw, ref, scene) > 10 * rtol);
+  // Verified: flagged, or (a fourth and fifth solve down the ladder, their differences contracting)
+  // success within rtol; either way its estimate covers its error (the reference's own estimate aside).
   const Solution verified = run(scene, Method::shooting, Integrator::adams, rtol, true);
-  CHECK(verified.status == Status::tolerance_not_met);
+  CAPTURE(to_string(verified.status));
+  CHECK((verified.status == Status::tolerance_not_met || verified.status == Status::success));
+  CHECK(true_error(verified, ref, scene) <= verified.diagnostics.error_estimate + ref.diagnostics.error_estimate);
+  if (verified.ok()) CHECK(within_tolerance(true_error(verified, ref, scene), rtol));
   // auto: the quadrature method between the survey's points, its own estimate within rtol.
   const Solution chosen = run(scene, Method::automatic, Integrator::adams, rtol, true);
   REQUIRE(chosen.ok());

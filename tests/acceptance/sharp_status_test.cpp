@@ -377,16 +377,18 @@ TEST_CASE("sharp status: near CVODE's floor a contraction of the differences is 
   // 0.01693. Single shooting with Adams at rtol 1e-12 returned its tightest solve (CVODE at its floor,
   // 1e-15) with the difference from the second, 4.3e-13, as its estimate, and said success: its profile
   // was off by 1.3e-12 (the displacements). Raw solves at that floor and one ulp above it were off by
-  // 1.1e-13 and 3.7e-13: round-off, not truncation, sets their error there.
+  // 1.1e-13 and 3.7e-13: round-off, not truncation, sets their error there. Every verifying solve now
+  // runs a full 16 times tighter than the one before (below rtol 2.56e-12 with Adams the ladder starts
+  // looser than rtol / 10), and the row says what their differences show.
   Scene scene;
   scene.curve = make_pointed(10.0, 1.048);
   scene.thickness = 0.1693;
   Options o = cvode_options(Method::shooting, Integrator::adams, 1e-12, 41);
   const Solution sol = solve(scene, o);
   REQUIRE(sol.field);
-  CHECK(sol.status == Status::tolerance_not_met);
-  CHECK(sol.message.find("floor") != std::string::npos);
-  CHECK(sol.message.find("2.56e-12") != std::string::npos);  // the tightest rtol it can confirm
+  CAPTURE(to_string(sol.status));
+  CHECK((sol.status == Status::success || sol.status == Status::tolerance_not_met));
+  if (!sol.ok()) CHECK(sol.message.find("2.56e-12") != std::string::npos);  // below it the ladder starts looser
   // Its estimate covers its error, measured against the closed form (exact to its own round-off bound,
   // its error_estimate: the reference's noise).
   const Solution exact = closed_form(scene, o.stations);
@@ -399,7 +401,8 @@ TEST_CASE("sharp status: near CVODE's floor a contraction of the differences is 
   CAPTURE(error);
   CAPTURE(sol.diagnostics.error_estimate);
   CHECK(error <= sol.diagnostics.error_estimate + reference_noise);
-  // At 2.56e-12 the third solve runs 16 times tighter than the second, and a success is a promise again.
+  if (sol.ok()) CHECK(error <= o.rtol + reference_noise);
+  // At 2.56e-12 the same ladder meets rtol, and its success is a promise.
   o.rtol = 2.56e-12;
   const Solution above = solve(scene, o);
   REQUIRE(above.field);

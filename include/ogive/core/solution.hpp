@@ -42,11 +42,11 @@ enum class Status {
   singular_system,     // the boundary-value system is singular to working precision
   ill_conditioned,     // solved, but condition * unit round-off exceeds rtol: digits may be lost
   tolerance_not_met,   // solved, but the error estimate, or the boundary or equilibrium residual, exceeds rtol
-                       // (CVODE near its floor, rtol below 2.56e-12 with Adams or 2.56e-10 with BDF: the
-                       // tightest verifying solve cannot confirm that the errors fall; the message says so)
-  unverified,          // solved by CVODE without an error estimate: Options::verify was off, or rtol lies
-                       // below what a second, 16 times tighter CVODE solve can reach (kCvodeRtolFloor),
-                       // or (no-tension section) that second solve did not converge or would run within 16
+                       // (below rtol 2.56e-12 with Adams or 2.56e-10 with BDF the verifying solves, which
+                       // stop at CVODE's floor, start looser than rtol asks; the message says so)
+  unverified,          // solved by CVODE without an error estimate: Options::verify was off, CVODE stepped
+                       // across breakpoints, a verifying solve failed or has a station without numbers,
+                       // or (no-tension section) the second solve did not converge or would run within 16
                        // times CVODE's floor (rtol below 2.56e-12 with Adams, 2.56e-10 with BDF)
   not_converged,       // no-tension section: Newton did not reach the boundary conditions (the iterations
                        // are in Diagnostics::newton_iterations, the message says where it stopped)
@@ -233,7 +233,8 @@ double reaction_and_thrust_difference(const Reactions& a, const Reactions& refer
 
 // The largest of the relative differences of the reactions, of H/V (relative to max(|H/V|, 1/100)) and
 // of the profiles (when both carry one): the error estimate of a solution a against a tighter one b. NaN
-// when either has no field.
+// when either has no field, or when any of these differences is NaN (a station without numbers: never
+// dropped).
 double solution_difference(const Solution& a, const Solution& b);
 
 // The error measure of a profile against a reference at the same stations: the largest difference of
