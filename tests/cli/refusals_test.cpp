@@ -154,6 +154,20 @@ TEST_CASE("refusals: --joints-count states its range, the settlement shares thei
     CHECK(help.find(share) != std::string::npos);
 }
 
+TEST_CASE("metres: decimal_product and decimal_quotient round the decimal result once") {
+  // Against strtod of the exact decimal product (Python's decimal) and IEEE division of exact integers,
+  // both correctly rounded.
+  CHECK(cli::decimal_product(0.1, 7) == 0.7);
+  CHECK(0.1 * 7 != 0.7);  // what binary arithmetic gives instead
+  CHECK(cli::decimal_quotient(0.7, 7) == 0.1);
+  CHECK(cli::decimal_product(1.2345678901234567, 9.876543210987654) == std::stod("12.1932631137021782470659995035818"));
+  CHECK(cli::decimal_product(0.05002000400080016, 13.7) == std::stod("0.685274054810962192"));
+  CHECK(cli::decimal_product(-0.05002000400080016, 13.7) == -std::stod("0.685274054810962192"));
+  CHECK(cli::decimal_quotient(1, 3) == 1.0 / 3);
+  CHECK(cli::decimal_quotient(3e-5, 7e10) == std::stod("4.28571428571428571428571428571428571e-16"));
+  CHECK(cli::decimal_quotient(-0.3, 0.7) == -3.0 / 7);
+}
+
 TEST_CASE("metres: a length in metres and its ratio make the same scene, bit for bit, at spans not binary") {
   // Each metre value is the ratio times the span, exactly in decimal: m = r L. Every column (the inputs'
   // echo in both forms included) must print the same bytes.
