@@ -188,6 +188,7 @@ void check_writable(const std::string& path, const char* flag) {
                                  flag, path));
   // Appending leaves an existing file as it is until it is drawn; a new name is tried with a temporary
   // file of its own beside it, so that the probe never removes what another run drew there meanwhile.
+  const WholeWrite whole;  // an interrupting signal must not leave the probe behind
   const bool existed = std::filesystem::exists(path, ec);
   const std::string probe_path = existed ? path : temporary_beside(path);
   errno = 0;
