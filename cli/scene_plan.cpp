@@ -350,8 +350,10 @@ std::string ScenePlan::problem_words(const std::string& what) const {
   std::string problem = as_option_message(what);
   // The thickness and the rise as the user gave them (the library's thickness rules are in metres, its
   // rise rules over the span).
-  if (thickness_flag_ == "--thickness" && problem.starts_with("--thickness-ratio:"))
-    problem = "--thickness:" + problem.substr(std::string_view("--thickness-ratio:").size());
+  if (thickness_flag_ == "--thickness")
+    for (std::size_t at = problem.find("--thickness-ratio"); at != std::string::npos;
+         at = problem.find("--thickness-ratio", at))
+      problem.erase(at + std::string_view("--thickness").size(), std::string_view("-ratio").size());
   if (shape_flag_ == "--rise" && problem.starts_with("--rise-ratio:"))
     problem = "--rise: rise / span" + problem.substr(std::string_view("--rise-ratio:").size());
   return problem;
