@@ -21,7 +21,7 @@ std::vector<std::string> split_names(const std::string& text) {
 namespace {
 
 // The library's field names and the options that set them (the lengths and movements are given over
-// the span on the command line). A name not here (loads, points) is no option: it stays a word.
+// the span on the command line). A name not here (points, unit_weight) is no option: it stays a word.
 constexpr std::pair<std::string_view, std::string_view> kFieldOptions[] = {
     {"thickness", "--thickness-ratio"},
     {"support_displacement", "--support-displacement-ratio"},
@@ -57,6 +57,8 @@ constexpr std::pair<std::string_view, std::string_view> kFieldOptions[] = {
     {"segments", "--segments"},
     {"max_steps", "--max-steps"},
     {"stations", "--stations"},
+    // Not one field: the options that load the ring (the message restated below, or any other of them).
+    {"loads", "--density, --point-load, --live-load, --fill-density and --loads-file"},
 };
 
 std::string_view option_of(std::string_view field) {

@@ -17,6 +17,7 @@
 
 #include "support/cli_run.hpp"
 #include "support/files.hpp"
+#include "option_text.hpp"
 #include "values.hpp"
 
 using namespace ogive;
@@ -57,6 +58,26 @@ TEST_CASE("refusals: a second sign, empty values, '=' without a value, an option
   check_refused_saying({"thrust", "--curve", "points", "--curve-file", ""}, "--curve-file: the name must not be empty");
   // A value after '=' is one, and an '=' inside a value is the value's.
   CHECK(run_command({"thrust", "--span=8", "--columns=span"}).out == "scene,span\n1,8\n");
+}
+
+TEST_CASE("refusals: the library's messages in the options' words - no field name left") {
+  CHECK(cli::as_option_message("live_load_to: must exceed live_load_from (0.5), got 0.3") ==
+        "--live-load-to: must exceed --live-load-from (0.5), got 0.3");
+  CHECK(cli::as_option_message("density, gravity, thickness and youngs_modulus: the weight per length w") ==
+        "--density, --gravity, --thickness-ratio and --youngs-modulus: the weight per length w");
+  CHECK(cli::as_option_message("rtol: must lie in [1e-14, 0.1], got 0") == "--rtol: must lie in [1e-14, 0.1], got 0");
+  // The ring without load, as worded now, and any other message about the loads.
+  CHECK(cli::as_option_message("loads: the ring carries no load (density 0, and the fills lie below the extrados)")
+            .starts_with("--density: 0 leaves the ring without load"));
+  CHECK(cli::as_option_message("loads: something else") ==
+        "--density, --point-load, --live-load, --fill-density and --loads-file: something else");
+  CHECK(cli::as_option_message("right_settlement: must be finite in units of w L^4 / EI, got 1e-300") ==
+        "--density, --gravity, --thickness-ratio and --youngs-modulus: the right springing's settlement of 1e-300 m "
+        "is beyond the range of a double in units of w L^4 / EI (the weight per length w too small for the bending "
+        "stiffness EI)");
+  // Words that are no field stay words.
+  CHECK(cli::as_option_message("points: 3 points given") == "points: 3 points given");
+  CHECK(cli::as_option_message("the density 0 of the fill") == "the density 0 of the fill");
 }
 
 TEST_CASE("refusals: help with other options prints the help and exits 0 - an argument no option takes is refused") {
