@@ -113,6 +113,7 @@ std::string parse_error_line(CLI::App& app, const std::vector<std::string>& args
 
 // Help or version: refused with status 2 when the command line holds arguments nobody takes (CLI11
 // reports those only after help), else printed on out with status 0, or 4 when out cannot be written.
+// The options given with it are not checked (CLI11's usual: `thrust --help --span 8` prints the help).
 int print_help_or_version(CLI::App& app, const std::vector<std::string>& args, const CLI::ParseError& e,
                           std::ostream& out, std::ostream& err) {
   if (const std::vector<std::string> extras = app.remaining(true); !extras.empty()) {
@@ -147,6 +148,40 @@ int parse(CLI::App& app, const std::vector<std::string>& args, std::ostream& out
     return kExitUsage;
   }
   return -1;
+}
+
+// An option given as "--name=" with nothing after the sign: CLI11 would take the next argument as its
+// value ("--span= 8" as --span 8). The option's name, or "" when there is none.
+std::string empty_assignment(const std::vector<std::string>& args) {
+  for (const std::string& word : args) {
+    if (word == "--") break;
+    if (word.size() > 3 && word.rfind("--", 0) == 0 && word.find('=') == word.size() - 1)
+      return word.substr(0, word.size() - 1);
+  }
+  return {};
+}
+
+// The options whose own check refuses an empty name, saying what the name should be.
+constexpr std::string_view kNamedFiles[] = {"--curve-file", "--loads-file", "--output", "--output-dir"};
+
+// What CLI11 takes but a command line must not hold (one line, or ""): an option given twice (a flag
+// too: CLI11 counts flags), an empty value (it would be read as the default, or as not given), a value
+// left out after '='.
+std::string refused_after_parse(const CLI::App& cmd, const std::vector<std::string>& args) {
+  if (const std::string option = empty_assignment(args); !option.empty())
+    return fmt::format("{}: no value after '=' (write {}=VALUE or {} VALUE)", option, option, option);
+  for (const CLI::Option* opt : cmd.get_options()) {
+    if (opt->count() == 0) continue;
+    const std::string name = opt->get_name();
+    if (opt->count() > 1) return fmt::format("{}: given more than once (give each option once)", name);
+    if (opt->get_items_expected_min() == 0 ||
+        std::find(std::begin(kNamedFiles), std::end(kNamedFiles), name) != std::end(kNamedFiles))
+      continue;
+    for (const std::string& value : opt->results())
+      if (value.find_first_not_of(" \t") == std::string::npos)
+        return fmt::format("{}: the value must not be empty (omit the option for its default)", name);
+  }
+  return {};
 }
 
 // The subcommand's exit status; its errors as one line on err with theirs.
@@ -197,6 +232,11 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     return kExitUsage;
   }
   if (const int status = parse(app, args, out, err); status >= 0) return status;
+  for (const CLI::App* sub : app.get_subcommands())
+    if (const std::string refused = refused_after_parse(*sub, args); !refused.empty()) {
+      err << "ogive: " << refused << "\n";
+      return kExitUsage;
+    }
   // A parsed command line names its subcommand first (only help and version come before one).
   if (!run) return kExitUsage;
   const WarningSink warnings;

@@ -148,6 +148,8 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"joint", "", "limit --thrust-line: joint index from the left springing"},
     {"hinge", "", "limit --thrust-line: intrados, extrados (a hinge) or axis (a pin), else empty"},
     {"moving", "", "spread: the springings that move outwards, left, right or both"},
+    {"left_settlement_share", "m/m", "spread: the left springing's settlement, downwards positive, per metre of d, the outward movement of each springing that moves (--left-settlement-share)"},
+    {"right_settlement_share", "m/m", "spread: the right springing's settlement, downwards positive, per metre of d (--right-settlement-share)"},
     {"path_steps", "", "spread: rows of the mechanism's path from d = 0 to collapse (--steps)"},
     {"H_elastic", "N/m", "spread: H_left of the elastic arch (the scene's elastic section) at d = 0"},
     {"V_elastic", "N/m", "spread: V_left of the elastic arch at d = 0"},

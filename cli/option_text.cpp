@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <CLI/CLI.hpp>
 
@@ -17,16 +18,100 @@ std::vector<std::string> split_names(const std::string& text) {
   return names;
 }
 
+namespace {
+
+// The library's field names and the options that set them (the lengths and movements are given over
+// the span on the command line). A name not here (points, unit_weight) is no option: it stays a word.
+constexpr std::pair<std::string_view, std::string_view> kFieldOptions[] = {
+    {"thickness", "--thickness-ratio"},
+    {"support_displacement", "--support-displacement-ratio"},
+    {"left_spread", "--left-spread-ratio"},
+    {"right_spread", "--right-spread-ratio"},
+    {"left_settlement", "--left-settlement-ratio"},
+    {"right_settlement", "--right-settlement-ratio"},
+    {"left_rotation", "--left-rotation"},
+    {"right_rotation", "--right-rotation"},
+    {"span", "--span"},
+    {"curve", "--curve"},
+    {"eccentricity", "--eccentricity"},
+    {"rise_ratio", "--rise-ratio"},
+    {"haunch_angle", "--haunch-angle"},
+    {"crown_angle", "--crown-angle"},
+    {"density", "--density"},
+    {"gravity", "--gravity"},
+    {"youngs_modulus", "--youngs-modulus"},
+    {"poisson_ratio", "--poisson-ratio"},
+    {"shear_coefficient", "--shear-coefficient"},
+    {"horizontal_acceleration", "--horizontal-acceleration"},
+    {"point_load", "--point-load"},
+    {"point_load_at", "--point-load-at"},
+    {"live_load", "--live-load"},
+    {"live_load_from", "--live-load-from"},
+    {"live_load_to", "--live-load-to"},
+    {"fill_density", "--fill-density"},
+    {"fill_height_ratio", "--fill-height-ratio"},
+    {"joints_count", "--joints-count"},
+    {"friction", "--friction"},
+    {"rtol", "--rtol"},
+    {"atol", "--atol"},
+    {"segments", "--segments"},
+    {"max_steps", "--max-steps"},
+    {"stations", "--stations"},
+    // Not one field: the options that load the ring (the message restated below, or any other of them).
+    {"loads", "--density, --point-load, --live-load, --fill-density and --loads-file"},
+};
+
+std::string_view option_of(std::string_view field) {
+  for (const auto& [name, option] : kFieldOptions)
+    if (name == field) return option;
+  return {};
+}
+
+bool identifier_char(char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_'; }
+
+// Each known field name in `text` as its option: every one when `all`, else those with an underscore
+// (an identifier, never an English word such as "density 0").
+std::string options_for_fields(std::string_view text, bool all) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    const bool starts = identifier_char(text[i]) && (i == 0 || !(identifier_char(text[i - 1]) || text[i - 1] == '-'));
+    if (!starts) {
+      out += text[i++];
+      continue;
+    }
+    std::size_t end = i;
+    while (end < text.size() && identifier_char(text[end])) ++end;
+    const std::string_view word = text.substr(i, end - i);
+    const std::string_view option = option_of(word);
+    out += !option.empty() && (all || word.find('_') != std::string_view::npos) ? option : word;
+    i = end;
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string as_option_message(const std::string& what) {
-  const std::size_t colon = what.find(':');
-  if (colon == std::string::npos || what.find_first_not_of("abcdefghijklmnopqrstuvwxyz_") < colon) return what;
-  std::string field = what.substr(0, colon);
-  if (field == "thickness" || field == "support_displacement" || field == "left_spread" || field == "right_spread" ||
-      field == "left_settlement" || field == "right_settlement")
-    field += "_ratio";
-  std::string flag = "--" + field;
-  std::replace(flag.begin(), flag.end(), '_', '-');
-  return flag + what.substr(colon);
+  // Messages that name no option of their own, restated in the options that decide them.
+  if (what.starts_with("loads: the ring carries no load"))
+    return "--density: 0 leaves the ring without load (no point or live load, and every fill's level lies below "
+           "the extrados over the whole span: raise --fill-height-ratio or give a self-weight)";
+  if (const std::size_t units = what.find(": must be finite in units of w L^4 / EI, got ");
+      units != std::string::npos && what.find_first_not_of("abcdefghijklmnopqrstuvwxyz_") == units) {
+    const std::string side = what.substr(0, what.find('_'));
+    const std::string movement = what.substr(0, units).ends_with("spread") ? "spread" : "settlement";
+    return fmt::format("--density, --gravity, --thickness-ratio and --youngs-modulus: the {} springing's {} of {} m "
+                       "is beyond the range of a double in units of w L^4 / EI (the weight per length w too small "
+                       "for the bending stiffness EI)",
+                       side, movement, what.substr(units + std::string_view(": must be finite in units of w L^4 / EI, got ").size()));
+  }
+  // "field: rule" or "field, field and field: rule": the fields before the colon become options; in the
+  // rule, the field names with an underscore.
+  const std::size_t colon = what.find(": ");
+  if (colon == std::string::npos || what.find_first_not_of("abcdefghijklmnopqrstuvwxyz_, ") < colon)
+    return options_for_fields(what, false);
+  return options_for_fields(std::string_view(what).substr(0, colon), true) +
+         options_for_fields(std::string_view(what).substr(colon), false);
 }
 
 bool given(const CLI::App& cmd, std::string_view flag) {

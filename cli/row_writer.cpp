@@ -4,6 +4,8 @@
 #include <cstring>
 #include <ostream>
 
+#include "interrupt.hpp"
+
 namespace ogive::cli {
 
 void RowWriter::write(const std::string& rows) {
@@ -12,6 +14,7 @@ void RowWriter::write(const std::string& rows) {
 }
 
 void RowWriter::flush() {
+  const WholeWrite whole;  // an interrupting signal waits until the piece is out
   errno = 0;
   if (!buffer_.empty()) out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
   out_.flush();

@@ -1,6 +1,7 @@
 // Output: rows are written as they are made, in pieces of whole rows, so that the first row of a long
-// sweep arrives at once, memory does not grow with the sweep, and a killed run leaves only complete
-// rows (each piece goes out in one write after the stream's buffer was emptied). A failed write (disk
+// sweep arrives at once, memory does not grow with the sweep, and an interrupted run leaves only complete
+// rows (each piece goes out whole: a SIGINT, SIGTERM or SIGHUP that arrives meanwhile waits for it,
+// interrupt.hpp; a fatal signal would cut a large write to a file at a page). A failed write (disk
 // full, a closed stdout) ends the run: OutputError, exit status kExitOutput. A closed pipe raises
 // SIGPIPE before any of this, which ends the process quietly, as `| head` expects.
 #pragma once

@@ -244,6 +244,8 @@ void ScenePlan::plan_axes(SceneOptions& o, const CLI::App& cmd) {
   thickness_flag_ = given(cmd, "--thickness") ? "--thickness" : "--thickness-ratio";
   const char* shape = given_of(cmd, {"--rise-ratio", "--rise", "--radius"});
   shape_flag_ = shape ? shape : "--eccentricity";
+  live_from_flag_ = given(cmd, "--live-load-from-x") ? "--live-load-from-x" : "--live-load-from";
+  live_to_flag_ = given(cmd, "--live-load-to-x") ? "--live-load-to-x" : "--live-load-to";
   for (Axis& a : o.axes) {
     std::string text = a.text;
     const bool is_given = given(cmd, a.flag);  // given text is parsed as it stands, even if empty
@@ -325,7 +327,7 @@ SceneParameters ScenePlan::parameters(std::size_t index) const {
   if (!std::isnan(p.live_load) && std::isnan(p.live_load_to)) p.live_load_to = 1;
   for (auto [x, ratio] : {std::pair{&p.point_load_x, p.point_load_at}, {&p.live_load_from_x, p.live_load_from},
                           {&p.live_load_to_x, p.live_load_to}})
-    if (std::isnan(*x) && !std::isnan(ratio)) *x = ratio * p.span;
+    if (std::isnan(*x) && !std::isnan(ratio)) *x = decimal_product(ratio, p.span);
   if (std::isnan(p.left_spread_ratio)) p.left_spread_ratio = p.support_displacement_ratio;
   if (std::isnan(p.right_spread_ratio)) p.right_spread_ratio = p.support_displacement_ratio;
   p.left_support = left_kind_ == SupportKind::clamped ? "clamped" : "pinned";
@@ -338,21 +340,25 @@ SceneParameters ScenePlan::parameters(std::size_t index) const {
 
 // Each ratio from its metre form where that was given, else the metre form from the ratio (the row
 // prints both); the pointed arch's eccentricity from its rise or radius; a fill to the crown's extrados.
+// The conversions are decimal (decimal_product, decimal_quotient): --thickness 0.7 --span 7 and
+// --thickness-ratio 0.1 --span 7 make the same scene, bit for bit, as they do in decimal.
 // Values that make no scene stay as they are: build() refuses them.
 void ScenePlan::derive_metres(SceneParameters& p) const {
   const double L = p.span;
-  if (!std::isnan(p.thickness)) p.thickness_ratio = p.thickness / L;
-  else p.thickness = p.thickness_ratio * L;
-  if (!std::isnan(p.rise)) p.rise_ratio = p.rise / L;
+  const auto ratio_of = [L](double metres) { return decimal_quotient(metres, L); };
+  const auto metres_of = [L](double ratio) { return decimal_product(ratio, L); };
+  if (!std::isnan(p.thickness)) p.thickness_ratio = ratio_of(p.thickness);
+  else p.thickness = metres_of(p.thickness_ratio);
+  if (!std::isnan(p.rise)) p.rise_ratio = ratio_of(p.rise);
   if (family_->eccentricity) {
-    if (!std::isnan(p.radius)) p.eccentricity = pointed_eccentricity_for_radius(p.radius / L);
+    if (!std::isnan(p.radius)) p.eccentricity = pointed_eccentricity_for_radius(ratio_of(p.radius));
     else if (!std::isnan(p.rise_ratio)) p.eccentricity = pointed_eccentricity_for_rise(p.rise_ratio);
     if (std::isnan(p.radius)) p.radius = pointed_radius(L, p.eccentricity);
   }
-  if (!std::isnan(p.rise_ratio) && std::isnan(p.rise)) p.rise = p.rise_ratio * L;
-  if (!std::isnan(p.point_load_x)) p.point_load_at = p.point_load_x / L;
-  if (!std::isnan(p.live_load_from_x)) p.live_load_from = p.live_load_from_x / L;
-  if (!std::isnan(p.live_load_to_x)) p.live_load_to = p.live_load_to_x / L;
+  if (!std::isnan(p.rise_ratio) && std::isnan(p.rise)) p.rise = metres_of(p.rise_ratio);
+  if (!std::isnan(p.point_load_x)) p.point_load_at = ratio_of(p.point_load_x);
+  if (!std::isnan(p.live_load_from_x)) p.live_load_from = ratio_of(p.live_load_from_x);
+  if (!std::isnan(p.live_load_to_x)) p.live_load_to = ratio_of(p.live_load_to_x);
   if (fill_to_crown_) {
     try {
       p.fill_height = extrados_crown_height(*make_curve(p), p.thickness) + fill_over_crown_;
@@ -360,8 +366,8 @@ void ScenePlan::derive_metres(SceneParameters& p) const {
       // No curve: build() says why.
     }
   }
-  if (!std::isnan(p.fill_height)) p.fill_height_ratio = p.fill_height / L;
-  else if (!std::isnan(p.fill_height_ratio)) p.fill_height = p.fill_height_ratio * L;
+  if (!std::isnan(p.fill_height)) p.fill_height_ratio = ratio_of(p.fill_height);
+  else if (!std::isnan(p.fill_height_ratio)) p.fill_height = metres_of(p.fill_height_ratio);
 }
 
 // The rules of the metre forms that depend on the span or the curve (one line naming the option).
@@ -396,6 +402,15 @@ void ScenePlan::check_metres(const SceneParameters& p) const {
   for (auto [flag, x] : {std::pair{"--point-load-x", p.point_load_x}, {"--live-load-from-x", p.live_load_from_x},
                          {"--live-load-to-x", p.live_load_to_x}})
     if (x > L) throw std::invalid_argument(fmt::format("{}: must lie in [0, L] (within the span, {} m), got {}", flag, L, x));
+  // The live load's ends in the forms the user gave them (the library compares the ratios).
+  if (!std::isnan(p.live_load) && !(p.live_load_to > p.live_load_from)) {
+    auto shown = [](const std::string& flag, double ratio, double metres) {
+      return flag.ends_with("-x") ? fmt::format("{} m", metres) : fmt::format("{}", ratio);
+    };
+    throw std::invalid_argument(fmt::format("{}: must exceed {} ({}), got {}", live_to_flag_, live_from_flag_,
+                                            shown(live_from_flag_, p.live_load_from, p.live_load_from_x),
+                                            shown(live_to_flag_, p.live_load_to, p.live_load_to_x)));
+  }
 }
 
 ScenePlan::Built ScenePlan::build(const SceneParameters& p) const {
@@ -424,13 +439,7 @@ ScenePlan::Built ScenePlan::build(const SceneParameters& p) const {
     warn_of_small_loads(p, scene);
     out.scene = std::move(scene);
   } catch (const std::invalid_argument& e) {
-    out.problem = as_option_message(e.what());
-    // The thickness and the rise as the user gave them (the library's thickness rules are in metres, its
-    // rise rules over the span).
-    if (thickness_flag_ == "--thickness" && out.problem.starts_with("--thickness-ratio:"))
-      out.problem = "--thickness:" + out.problem.substr(std::string_view("--thickness-ratio:").size());
-    if (shape_flag_ == "--rise" && out.problem.starts_with("--rise-ratio:"))
-      out.problem = "--rise: rise / span" + out.problem.substr(std::string_view("--rise-ratio:").size());
+    out.problem = problem_words(e.what());
   }
   return out;
 }
@@ -448,6 +457,19 @@ void ScenePlan::warn_of_small_loads(const SceneParameters& p, const Scene& scene
   check(bare_newton_point_, "--point-load", p.point_load, p.point_load, "N/m");
   check(bare_newton_live_, "--live-load", p.live_load * (p.live_load_to - p.live_load_from) * p.span, p.live_load,
         "N/m^2");
+}
+
+std::string ScenePlan::problem_words(const std::string& what) const {
+  std::string problem = as_option_message(what);
+  // The thickness and the rise as the user gave them (the library's thickness rules are in metres, its
+  // rise rules over the span).
+  if (thickness_flag_ == "--thickness")
+    for (std::size_t at = problem.find("--thickness-ratio"); at != std::string::npos;
+         at = problem.find("--thickness-ratio", at))
+      problem.erase(at + std::string_view("--thickness").size(), std::string_view("-ratio").size());
+  if (shape_flag_ == "--rise" && problem.starts_with("--rise-ratio:"))
+    problem = "--rise: rise / span" + problem.substr(std::string_view("--rise-ratio:").size());
+  return problem;
 }
 
 // Scans without keeping anything, and stops at the first scene that can be made.

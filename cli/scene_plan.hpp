@@ -44,6 +44,10 @@ class ScenePlan {
   };
   Built build(const SceneParameters& p) const;
 
+  // A message of the library about a scene (std::invalid_argument's), in the options' words as the user
+  // gave them: "thickness: ..." names --thickness or --thickness-ratio, whichever was given.
+  std::string problem_words(const std::string& what) const;
+
  private:
   void choose_supports(const SceneOptions& o, const CLI::App& cmd);
   void plan_axes(SceneOptions& o, const CLI::App& cmd);
@@ -64,6 +68,7 @@ class ScenePlan {
   std::size_t size_ = 1;
   std::string thickness_flag_;   // --thickness-ratio or --thickness: the one the user's thickness came by
   std::string shape_flag_;       // what set the pointed arch's shape: --eccentricity, --rise-ratio, --rise, --radius
+  std::string live_from_flag_, live_to_flag_;  // the live load's ends: --live-load-from or --live-load-from-x, ...
   bool fill_to_crown_ = false;   // --fill-height crown or crown+D
   double fill_over_crown_ = 0;   // m, D of crown+D (crown-D: below it)
   bool intrados_ = false;        // --dimensions intrados: --span and --rise are the intrados' (NaN rise:

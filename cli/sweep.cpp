@@ -4,6 +4,7 @@
 #include <condition_variable>
 #include <exception>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -19,9 +20,21 @@ namespace ogive::cli {
 namespace {
 
 // The status of a row whose options are each valid but make no scene together (Scene::validate or the
-// curve's factory refused the combination); its message says why. Not a library Status: solve() is
-// never called for it.
+// curve's factory refused the combination), or whose analysis refused the scene (the library throws
+// std::invalid_argument for input it cannot take, e.g. a ring that carries no load); its message says
+// why. Not a library Status.
 constexpr std::string_view kInvalidScene = "invalid_scene";
+
+// What a scene's rows may hold back before they pass on: an analysis that refuses the scene then leaves
+// no row of it but the invalid_scene row. A scene of more rows (a long profile) passes them on in pieces
+// of this size, the writer's (so that what waits stays bounded), and such a refusal follows the rows
+// already passed on.
+constexpr std::size_t kHeldBytes = std::size_t{1} << 16;
+
+std::string invalid_row(const Columns& columns, const SceneParameters& p, const Curve* curve,
+                        const std::string& problem) {
+  return sparse_row(columns, p, curve, {{"status", std::string(kInvalidScene)}, {"message", problem}});
+}
 
 // One scene's rows, and whether they succeeded.
 bool scene_rows(const ScenePlan& plan, const Columns& columns, const SceneRows& rows_of, std::size_t index,
@@ -29,11 +42,24 @@ bool scene_rows(const ScenePlan& plan, const Columns& columns, const SceneRows& 
   const SceneParameters p = plan.parameters(index);
   ScenePlan::Built built = plan.build(p);
   if (!built.scene) {
-    emit(sparse_row(columns, p, built.curve.get(),
-                    {{"status", std::string(kInvalidScene)}, {"message", built.problem}}));
+    emit(invalid_row(columns, p, built.curve.get(), built.problem));
     return false;
   }
-  return rows_of(p, *built.scene, emit);
+  std::string held;
+  const Emit hold = [&](const std::string& text) {
+    held += text;
+    if (held.size() < kHeldBytes) return;
+    emit(held);
+    held.clear();
+  };
+  try {
+    const bool ok = rows_of(p, *built.scene, hold);
+    emit(held);
+    return ok;
+  } catch (const std::invalid_argument& e) {
+    emit(invalid_row(columns, p, built.curve.get(), plan.problem_words(e.what())));
+    return false;
+  }
 }
 
 // Scenes solved in parallel (each thread keeps its own SUNDIALS objects) and written in order: a thread

@@ -25,7 +25,10 @@ using Emit = std::function<void(const std::string&)>;
 using SceneRows = std::function<bool(const SceneParameters&, const Scene&, const Emit&)>;
 
 // Writes the header, then every scene of the plan in order: a valid scene's rows by rows_of, an
-// impossible one's as a row of status invalid_scene. Returns whether every scene's rows succeeded.
+// impossible one's as a row of status invalid_scene, and so is a scene whose analysis refuses it
+// (rows_of throws std::invalid_argument: the rows it emitted are dropped, up to 64 KiB of them, and
+// the row's message gives the reason in the options' words); the other scenes are solved all the same.
+// Returns whether every scene's rows succeeded.
 // rows_per_scene, the rows a scene emits at most, bounds what waits to be written when threads > 1:
 // scenes of more than kChunkRows rows are written one after another on one thread.
 inline constexpr std::size_t kChunkRows = 4096;

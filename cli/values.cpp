@@ -1,10 +1,13 @@
 #include "values.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <fmt/compile.h>
 #include <fmt/format.h>
 
 namespace ogive::cli {
@@ -102,7 +105,123 @@ double nearest_double(Int128 numerator, Int128 denominator, int exponent) {
   return value;
 }
 
+// A range's values, refused when two neighbours are the same double while its ends differ: its step lies
+// below the resolution of doubles there, and the sweep would repeat scenes it was not asked for.
+std::vector<double> distinct_range(std::vector<double> values, std::string_view text, std::string_view option) {
+  if (values.front() == values.back()) return values;
+  for (std::size_t i = 1; i < values.size(); ++i)
+    if (values[i] == values[i - 1])
+      throw UsageError(fmt::format("{}: range '{}' has a step below the resolution of its values ({} would repeat): "
+                                   "give fewer points or ends further apart",
+                                   option, shown(text), values[i]));
+  return values;
+}
+
+// The decimal a double reads as (its shortest round-trip text: the number as typed, or as a range
+// computed it), or nullopt beyond as_decimal's reach.
+std::optional<Decimal> typed_decimal(double x) {
+  if (!std::isfinite(x)) return std::nullopt;
+  char text[40];
+  // The shortest text that reads back (fmt's Dragonbox: half the instructions of std::to_chars here).
+  const char* end = fmt::format_to(text, FMT_COMPILE("{}"), x);
+  return as_decimal(std::string_view(text, static_cast<std::size_t>(end - text)));
+}
+
+// The double nearest to mantissa 10^exponent. Where both are exact doubles (|mantissa| < 2^53, 10^|e| for
+// |e| <= 22) one multiplication or division rounds correctly: the common case, a few nanoseconds (a
+// sweep converts a length per scene); else through nearest_double's decimal text.
+double decimal_value(Int128 mantissa, int exponent) {
+  static constexpr double kPowers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                       1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  constexpr Int128 kExact = Int128{1} << 53;
+  if (mantissa < kExact && mantissa > -kExact && exponent >= -22 && exponent <= 22) {
+    const auto m = static_cast<double>(static_cast<long long>(mantissa));
+    return exponent >= 0 ? m * kPowers[exponent] : m / kPowers[-exponent];
+  }
+  // Up to 34 digits (a product of two 17-digit decimals): two 64-bit halves of 17 digits each, written
+  // out for from_chars with one 128-bit division (nearest_double spends two per digit).
+  constexpr Int128 kHalf = 100000000000000000, kMost = kHalf * kHalf;
+  if (mantissa < kMost && mantissa > -kMost) {
+    const Int128 m = mantissa < 0 ? -mantissa : mantissa;
+    const auto high = static_cast<std::uint64_t>(m / kHalf), low = static_cast<std::uint64_t>(m % kHalf);
+    // "-" high low, each half 17 digits (leading zeros are harmless), then "e" exponent.
+    char text[48];
+    char* end = text;
+    if (mantissa < 0) *end++ = '-';
+    for (std::uint64_t half : {high, low}) {
+      for (int k = 16; k >= 0; --k, half /= 10) end[k] = static_cast<char>('0' + half % 10);
+      end += 17;
+    }
+    *end++ = 'e';
+    end = std::to_chars(end, text + sizeof text, exponent).ptr;
+    double value = 0;
+    std::from_chars(text, end, value);
+    return value;
+  }
+  return nearest_double(mantissa, 1, exponent);
+}
+
+// The last few answers of one conversion on this thread: a sweep converts the same length at the same
+// span scene after scene (the axis that varies fastest is seldom a length), and a conversion costs about
+// 1500 instructions, half a closed-form scene's.
+struct Memo {
+  static constexpr int kSize = 4;
+  std::uint64_t a[kSize] = {}, b[kSize] = {};
+  double result[kSize] = {};
+  bool used[kSize] = {};
+  int next = 0;
+  template <class F>
+  double operator()(double x, double y, F convert) {
+    const auto bx = std::bit_cast<std::uint64_t>(x), by = std::bit_cast<std::uint64_t>(y);  // -0 is not 0
+    for (int i = 0; i < kSize; ++i)
+      if (used[i] && a[i] == bx && b[i] == by) return result[i];
+    const double r = convert(x, y);
+    a[next] = bx;
+    b[next] = by;
+    result[next] = r;
+    used[next] = true;
+    next = (next + 1) % kSize;
+    return r;
+  }
+};
+
+double exact_product(double a, double b) {
+  const auto da = typed_decimal(a), db = typed_decimal(b);
+  // 17 digits each: the product's mantissa holds 34, within 128 bits.
+  if (!da || !db || da->mantissa == 0 || db->mantissa == 0 || std::abs(da->exponent + db->exponent) > 280) return a * b;
+  return decimal_value(da->mantissa * db->mantissa, da->exponent + db->exponent);
+}
+
+double exact_quotient(double a, double b) {
+  const auto da = typed_decimal(a), db = typed_decimal(b);
+  if (!da || !db || da->mantissa == 0 || db->mantissa == 0 || std::abs(da->exponent - db->exponent) > 280) return a / b;
+  Int128 numerator = da->mantissa, denominator = db->mantissa;
+  if (denominator < 0) {
+    numerator = -numerator;
+    denominator = -denominator;
+  }
+  // A quotient with a short decimal expansion (0.7 / 7): exact as an integer times a power of ten.
+  Int128 scaled = numerator;
+  for (int shift = 0; shift <= 20; ++shift, scaled *= 10)
+    if (scaled % denominator == 0) return decimal_value(scaled / denominator, da->exponent - db->exponent - shift);
+  // Else at least 17 digits before the point, so that nearest_double's 24 after it make 41 significant.
+  int shift = 0;
+  for (const Int128 most = denominator * 100000000000000000; (numerator < 0 ? -numerator : numerator) < most; ++shift)
+    numerator *= 10;
+  return nearest_double(numerator, denominator, da->exponent - db->exponent - shift);
+}
+
 }  // namespace
+
+double decimal_product(double a, double b) {
+  thread_local Memo memo;
+  return memo(a, b, exact_product);
+}
+
+double decimal_quotient(double a, double b) {
+  thread_local Memo memo;
+  return memo(a, b, exact_quotient);
+}
 
 double parse_number(std::string_view text, std::string_view option) {
   const std::string_view t = trim(text);
@@ -110,8 +229,10 @@ double parse_number(std::string_view text, std::string_view option) {
   // from_chars: no locale, no leading '+', no hex unless asked; the whole token must be consumed.
   std::string_view body = t;
   if (!body.empty() && body.front() == '+') body.remove_prefix(1);
+  // One sign at most: "+-1" is no number.
+  const bool second_sign = t.size() > body.size() && !body.empty() && (body.front() == '-' || body.front() == '+');
   const auto [end, ec] = std::from_chars(body.data(), body.data() + body.size(), value);
-  if (body.empty() || ec != std::errc() || end != body.data() + body.size())
+  if (body.empty() || second_sign || ec != std::errc() || end != body.data() + body.size())
     throw UsageError(fmt::format("{}: '{}' is not a number", option, shown(t)));
   if (!std::isfinite(value))
     throw UsageError(fmt::format("{}: '{}' is not a finite number", option, shown(t)));
@@ -150,11 +271,16 @@ std::vector<double> parse_values(std::string_view text, std::string_view option)
         return m;
       };
       const Int128 A = scaled(*a_dec), B = scaled(*b_dec), steps = static_cast<Int128>(n - 1);
-      for (std::size_t i = 0; i < n; ++i) {
-        const Int128 k = static_cast<Int128>(i);
-        out.push_back(i == 0 ? start : i + 1 == n ? stop : nearest_double(A * (steps - k) + B * k, steps, e));
+      // A (steps - k) + B k must fit: 18 digits scaled by up to 10^18 do, times a million points may not
+      // (found: 999999999999999999:1e-18:1000 wrapped round to negative loads). Then double arithmetic.
+      const Int128 most = (Int128{1} << 125) / steps;
+      if (A <= most && A >= -most && B <= most && B >= -most) {
+        for (std::size_t i = 0; i < n; ++i) {
+          const Int128 k = static_cast<Int128>(i);
+          out.push_back(i == 0 ? start : i + 1 == n ? stop : nearest_double(A * (steps - k) + B * k, steps, e));
+        }
+        return distinct_range(std::move(out), text, option);
       }
-      return out;
     }
     for (std::size_t i = 0; i < n; ++i) {
       if (n == 1 || i + 1 == n) {
@@ -167,11 +293,12 @@ std::vector<double> parse_values(std::string_view text, std::string_view option)
       // halves, which cannot overflow, and keep the value between the ends, where it lies exactly.
       if (!std::isfinite(v)) {
         const double f = static_cast<double>(i) / static_cast<double>(n - 1);
-        v = std::clamp(2 * ((start / 2) * (1 - f) + (stop / 2) * f), std::min(start, stop), std::max(start, stop));
+        v = 2 * ((start / 2) * (1 - f) + (stop / 2) * f);
       }
-      out.push_back(v);
+      // Between the ends, where it lies exactly: rounding must not take it past one.
+      out.push_back(std::clamp(v, std::min(start, stop), std::max(start, stop)));
     }
-    return out;
+    return distinct_range(std::move(out), text, option);
   }
   std::size_t pos = 0;
   while (true) {

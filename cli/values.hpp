@@ -24,4 +24,11 @@ std::vector<double> parse_values(std::string_view text, std::string_view option)
 // One finite number, the whole text; nullopt-like failure throws UsageError.
 double parse_number(std::string_view text, std::string_view option);
 
+// The double nearest to a b and to a / b, each double taken as the decimal it reads as (its shortest
+// text, the number as typed): 0.1 x 7 gives 0.7 and 0.7 / 7 gives 0.1, as the decimal numbers do, so a
+// length given in metres and the same length given over the span make the same scene. Plain double
+// arithmetic where the decimals are out of reach (beyond 10^+-280).
+double decimal_product(double a, double b);
+double decimal_quotient(double a, double b);
+
 }  // namespace ogive::cli

@@ -1,20 +1,26 @@
 // ogive draw and ogive report: one file per scene, an SVG drawing (ogive/output/svg.hpp) or an HTML page
-// (ogive/output/html_report.hpp), and one CSV row per file on stdout (report --output -: the page instead).
+// (ogive/output/html_report.hpp), and one CSV row per file on stdout (--output -: the drawing or page instead).
+#include <atomic>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <memory>
 #include <optional>
 #include <ostream>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <utility>
 #include <vector>
+
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -23,6 +29,7 @@
 #include "columns.hpp"
 #include "commands.hpp"
 #include "criteria.hpp"
+#include "interrupt.hpp"
 #include "ogive/limit/limit.hpp"
 #include "ogive/limit/spreading.hpp"
 #include "ogive/output/html_report.hpp"
@@ -156,6 +163,22 @@ std::string draw_file_name(const SceneParameters& p, const SceneOptions& so, con
   return name + extension;
 }
 
+// A new name beside `path` for a file written before it replaces `path`: of this process and of this
+// call, so that two runs drawing one path (or two drawings of one run) never share it.
+std::string temporary_beside(const std::string& path) {
+  static std::atomic<unsigned> made{0};
+  return fmt::format("{}.part-{}-{}", path, ::getpid(), made++);
+}
+
+// Whether `path` is the file standard output writes to (/dev/stdout, or the file it is redirected to),
+// /dev/null aside (nothing written there mixes).
+bool is_standard_output(const std::string& path) {
+  struct stat target {}, standard {}, null {};
+  const auto same = [](const struct stat& a, const struct stat& b) { return a.st_dev == b.st_dev && a.st_ino == b.st_ino; };
+  return ::stat(path.c_str(), &target) == 0 && ::fstat(STDOUT_FILENO, &standard) == 0 && same(target, standard) &&
+         !(::stat("/dev/null", &null) == 0 && same(target, null));
+}
+
 // Refuses, before anything is solved or printed, a target that cannot be written: a directory where a
 // file should be, a missing directory, a file that cannot be opened for writing. Leaves no file behind:
 // a scene that turns out invalid is not drawn, and its file must not appear.
@@ -165,36 +188,54 @@ void check_writable(const std::string& path, const char* flag) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw UsageError(fmt::format("{}: '{}' is a directory, not a file", flag, path));
+  if (is_standard_output(path))
+    throw UsageError(fmt::format("{}: '{}' is standard output, which carries the CSV rows: give --output - for the "
+                                 "one scene's file alone on standard output, or another file",
+                                 flag, path));
+  // Appending leaves an existing file as it is until it is drawn; a new name is tried with a temporary
+  // file of its own beside it, so that the probe never removes what another run drew there meanwhile.
+  const WholeWrite whole;  // an interrupting signal must not leave the probe behind
   const bool existed = std::filesystem::exists(path, ec);
-  // Appending creates the file if needed and leaves an existing one as it is until it is drawn.
-  std::ofstream probe(path, std::ios::app);
-  if (!probe) throw UsageError(fmt::format("{}: cannot write '{}': {}", flag, path, std::strerror(errno)));
+  const std::string probe_path = existed ? path : temporary_beside(path);
+  errno = 0;
+  std::ofstream probe(probe_path, std::ios::app);
+  const int code = errno;
+  if (!probe) throw UsageError(fmt::format("{}: cannot write '{}': {}", flag, path, std::strerror(code)));
   probe.close();
-  if (!existed) std::filesystem::remove(path, ec);
+  if (!existed) std::filesystem::remove(probe_path, ec);
 }
 
-// The drawing into `path` whole or not at all: written to a temporary file beside it, which replaces
-// `path` once complete and is removed when a write fails (a full disk leaves no partial picture).
-// Anything but a plain file or a new name (a symlink, /dev/stdout, a named pipe) is written in place:
-// replacing it would replace the link or the device itself.
+// The drawing into `path` whole or not at all: written to a temporary file beside it, named after this
+// process and drawing (two runs drawing one path each write their own), which replaces `path` once complete and is
+// removed when a write fails (a full disk leaves no partial picture); an interrupting signal waits until
+// it is done. Anything but a plain file or a new name (a symlink, a device, a named pipe) is written in
+// place: replacing it would replace the link or the device itself.
 void write_drawing(const std::string& path, const std::string& svg) {
+  const WholeWrite whole;
   std::error_code ec;
   const std::filesystem::file_status target = std::filesystem::symlink_status(path, ec);
   const bool in_place = std::filesystem::exists(target) && !std::filesystem::is_regular_file(target);
-  const std::string part = in_place ? path : path + ".part";
-  std::ofstream file(part, std::ios::trunc);
-  file << svg;
-  file.close();
-  if (!file) {
-    const int code = errno;
+  const std::string part = in_place ? path : temporary_beside(path);
+  // errno as the failing call left it: the stream's later calls may overwrite it.
+  const auto fail = [&](int code) {
     if (!in_place) std::filesystem::remove(part, ec);
-    throw OutputError(fmt::format("cannot write {}: {}", path, std::strerror(code)));
-  }
+    throw OutputError(code != 0 ? fmt::format("cannot write {}: {}", path, std::strerror(code))
+                                : fmt::format("cannot write {}", path));
+  };
+  errno = 0;
+  std::ofstream file(part, std::ios::trunc);
+  if (!file.is_open()) fail(errno);
+  file << svg;
+  file.flush();
+  if (!file) fail(errno);
+  file.close();
+  if (!file) fail(errno);
   if (in_place) return;
   std::filesystem::rename(part, path, ec);
   if (ec) {
+    const std::string reason = ec.message();
     std::filesystem::remove(part, ec);
-    throw OutputError(fmt::format("cannot write {}: {}", path, ec.message()));
+    throw OutputError(fmt::format("cannot write {}: {}", path, reason));
   }
 }
 
@@ -248,17 +289,33 @@ std::string picture_row(const Columns& columns, const SceneParameters& p, const 
   return row.take();
 }
 
+// --output -: the one scene's drawing or page alone on standard output (no CSV row), with the exit status
+// that --output FILE would have; a scene that cannot be analysed is refused with one line, as there is
+// no row to say so. page(p, scene, sol) makes the text and leaves its solve in sol.
+using Page = std::function<std::string(const SceneParameters&, const Scene&, Solution&)>;
+int page_to_standard_output(const ScenePlan& plan, std::ostream& out, const Page& page) {
+  const SceneParameters p = plan.parameters(0);
+  const ScenePlan::Built built = plan.build(p);
+  if (!built.scene) throw UsageError(built.problem);
+  Solution sol;
+  std::string text;
+  try {
+    text = page(p, *built.scene, sol);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(plan.problem_words(e.what()));
+  }
+  write_all(out, text);
+  return sol.ok() ? kExitOk : kExitNotConverged;
+}
+
 int run_draw(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
   Columns columns = draw_columns();
   if (d.columns.columns == "help") {
     write_all(out, columns.help(d.columns));
     return kExitOk;
   }
-  const Options o = checked_picture_options(d, cmd, "a file name ending in .svg");
+  const Options o = checked_picture_options(d, cmd, "a file name ending in .svg, or - for standard output");
   const DrawTargets& to = d.targets;
-  // Standard output carries the CSV rows, one per drawing: a picture cannot go there too.
-  if (to.output == "-")
-    throw UsageError("--output: - (standard output) is refused: standard output carries the CSV row; give a file name");
   check_target_choice(to, "draw", "FILE.svg", "one scene");
   if (to.spread_stage) {
     if (!(*to.spread_stage >= 0 && *to.spread_stage <= 1))
@@ -268,18 +325,24 @@ int run_draw(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
   }
   const ScenePlan plan(d.scene, cmd);
   check_target_count(to, plan.size(), "drawing");
+  const auto drawing_of = [&](const SceneParameters& p, const Scene& scene, Solution& sol) {
+    sol = solve(scene, o);
+    DrawingOptions drawing;
+    drawing.title = draw_title(p);
+    if (to.limit) add_limit_drawing(scene, drawing);
+    if (to.spread_stage) add_spread_drawing(scene, *to.spread_stage, drawing);
+    return arch_svg(scene, sol, drawing);
+  };
+  if (to.output == "-") return page_to_standard_output(plan, out, drawing_of);
   columns.select(d.columns, plan.varying_inputs());
   const std::vector<std::string> files = target_files(plan, d.scene, to, ".svg");
   const bool all_ok = write_scenes(
       plan, columns, out, 1,  // one file at a time
       [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
-        const Solution sol = solve(scene, o);
-        DrawingOptions drawing;
-        drawing.title = draw_title(p);
-        if (to.limit) add_limit_drawing(scene, drawing);
-        if (to.spread_stage) add_spread_drawing(scene, *to.spread_stage, drawing);
+        Solution sol;
+        const std::string svg = drawing_of(p, scene, sol);
         const std::string& path = files[p.scene - 1];
-        write_drawing(path, arch_svg(scene, sol, drawing));
+        write_drawing(path, svg);
         emit(picture_row(columns, p, scene, sol, path));
         return sol.ok();
       });
@@ -331,14 +394,12 @@ int run_report(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
   report.require = criteria_of(d.criteria);
   report.warnings = default_warnings(cmd, d.scene.curve);
   report.date = report_date();
-  if (to.output == "-") {  // the page alone on standard output
-    const SceneParameters p = plan.parameters(0);
-    const ScenePlan::Built built = plan.build(p);
-    if (!built.scene) throw UsageError(built.problem);
-    report.title = draw_title(p);
-    write_all(out, html_report(*built.scene, report));
-    return kExitOk;
-  }
+  if (to.output == "-")
+    return page_to_standard_output(plan, out, [&](const SceneParameters& p, const Scene& scene, Solution& sol) {
+      report.title = draw_title(p);
+      sol = solve(scene, o);
+      return html_report(scene, sol, report);
+    });
   columns.select(d.columns, plan.varying_inputs());
   const std::vector<std::string> files = target_files(plan, d.scene, to, ".html");
   const bool all_ok = write_scenes(plan, columns, out, 1, [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
@@ -370,7 +431,7 @@ std::shared_ptr<DrawOptions> add_picture_options(CLI::App& cmd, const char* outp
 }  // namespace
 
 Run add_draw_options(CLI::App& cmd) {
-  auto options = add_picture_options(cmd, "the SVG file of the one scene (refused for a sweep)");
+  auto options = add_picture_options(cmd, "the SVG file of the one scene (refused for a sweep); - writes the drawing to standard output");
   DrawTargets& to = options->targets;
   cmd.add_flag("--limit", to.limit,
                "also draw the limit analysis' minimum and maximum thrust lines with their hinges and, with a point "

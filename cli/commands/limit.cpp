@@ -61,7 +61,8 @@ void add_analysis_options(CLI::App& cmd, LimitText& t) {
   cmd.add_option("--joints", t.joints, "interior joints: radial (normal to the axis) or vertical")->capture_default_str();
   cmd.add_option("--weight", t.weight, "voussoir (the ring's true weight at each centroid) or axis (rho g t per axis length)")
       ->capture_default_str();
-  cmd.add_option("--joints-count", t.joints_count, "joints springing to springing, both included; odd, >= 5")
+  cmd.add_option("--joints-count", t.joints_count, fmt::format("joints springing to springing, both included; odd, in [{}, {}]", kMinJointsCount,
+                             kMaxJointsCount))
       ->check(whole_count())
       ->capture_default_str();
   cmd.add_option("--friction", t.friction, "friction coefficient of the joints (> 0): adds the sliding check")

@@ -88,7 +88,8 @@ void add_spread_analysis_options(CLI::App& cmd, SpreadText& t) {
       ->capture_default_str();
   cmd.add_option("--joints", t.joints, "rigid voussoirs' interior joints: radial (normal to the axis) or vertical")
       ->capture_default_str();
-  cmd.add_option("--joints-count", t.joints_count, "rigid voussoirs' joints springing to springing, both included; odd, >= 5")
+  cmd.add_option("--joints-count", t.joints_count, fmt::format("rigid voussoirs' joints springing to springing, both included; odd, in [{}, {}]",
+                             kMinJointsCount, kMaxJointsCount))
       ->check(whole_count())
       ->capture_default_str();
   cmd.add_option("--steps", t.steps, "rows of the mechanism's path from d = 0 to collapse (with --path), in [1, 100000]")

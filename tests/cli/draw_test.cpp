@@ -179,15 +179,13 @@ TEST_CASE("draw: bad targets are one line naming the option - exit 2 - nothing o
            {"draw", "--output", dir / "a.svg", "--stations", "1"},
            {"draw", "--output", dir / "a.svg", "--rise-ratio", "0.3"},
            {"draw", "--output", ""},      // an empty name is not "no target"
-           {"draw", "--output-dir", ""},
-           {"draw", "--output", "-"}}) {  // standard output holds the CSV row
+           {"draw", "--output-dir", ""}}) {
     check_refused(args);
     const Run r = run_command(args);
     CHECK((r.err.find("--output") != std::string::npos || r.err.find("--stations") != std::string::npos ||
            r.err.find("--rise-ratio") != std::string::npos));
   }
   CHECK(run_command({"draw"}).err.find("--output FILE.svg") != std::string::npos);
-  CHECK(run_command({"draw", "--output", "-"}).err.find("standard output") != std::string::npos);
   CHECK(run_command({"draw", "--output-dir", ""}).err.find("--output-dir: the name must not be empty") !=
         std::string::npos);
   // Nothing was left behind by the refusals.

@@ -108,19 +108,8 @@ TEST_CASE("threads: the same bytes with any number of threads - invalid scenes a
       {"curve", "--curve", "elliptical", "--rise-ratio", "0.2:0.6:5", "--stations", "9"},
   };
   for (const auto& command : commands) {
-    std::vector<std::string> one = command, many = command;
-    one.insert(one.end(), {"--threads", "1"});
-    const Run reference = run_command(one);
     CAPTURE(command[0]);
-    for (const char* threads : {"2", "3", "8"}) {
-      many = command;
-      many.insert(many.end(), {"--threads", threads});
-      const Run r = run_command(many);
-      CAPTURE(threads);
-      CHECK(r.status == reference.status);
-      CHECK(r.out == reference.out);
-      CHECK(r.err == reference.err);
-    }
+    same_with_threads(command, {"2", "3", "8"});
   }
   check_refused({"thrust", "--threads", "0"});
   check_refused({"thrust", "--threads", "257"});

@@ -55,5 +55,22 @@ inline void check_refused(const std::vector<std::string>& args) {
   CHECK(r.err.rfind("ogive: ", 0) == 0);
 }
 
+// The command with --threads 1 and with each of `threads`: the same exit status, stdout and stderr
+// (CHECKed); the one-thread run.
+inline Run same_with_threads(const std::vector<std::string>& command, const std::vector<std::string>& threads) {
+  std::vector<std::string> one = command;
+  one.insert(one.end(), {"--threads", "1"});
+  const Run reference = run_command(one);
+  for (const std::string& n : threads) {
+    std::vector<std::string> many = command;
+    many.insert(many.end(), {"--threads", n});
+    const Run r = run_command(many);
+    CAPTURE(n);
+    CHECK(r.status == reference.status);
+    CHECK(r.out == reference.out);
+    CHECK(r.err == reference.err);
+  }
+  return reference;
+}
 
 }  // namespace ogive::test
