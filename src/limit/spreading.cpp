@@ -417,7 +417,7 @@ bool SpreadOptions::is_valid(std::string* why) const {
   if (!std::isfinite(left_settlement_share)) return bad("left_settlement_share must be finite");
   if (!std::isfinite(right_settlement_share)) return bad("right_settlement_share must be finite");
   if (!(increment_ratio >= kLeastIncrementRatio && increment_ratio <= 0.1))
-    return bad("increment_ratio must lie in [1e-5, 0.1] (finer increments change the capacity by less than 1e-5 L)");
+    return bad("increment_ratio must lie in [1e-4, 0.1] (finer increments take longer without moving the capacity)");
   if (steps < 1 || steps > 100000) return bad("steps must be in [1, 100000]");
   if (!(stop_ratio >= 0)) return bad("stop_ratio must be >= 0 (infinity: to collapse)");
   return true;
