@@ -158,9 +158,9 @@ TEST_CASE("spreading: a settling springing - static work equals the mechanism's,
 
 TEST_CASE("spreading: the capacity converges with the joints count and the increment") {
   // Three significant digits (a quarter of a percent) between the default ring and one four times
-  // finer, and between increments of 1e-3 L and 1e-4 L (the hinges move at the increments' ends;
-  // collapse is bisected to kSpreadTolerance L). Measured: 0.06235 and 0.06227 of the span for the
-  // semicircle, 0.2403 and 0.2398 for the equilateral arch.
+  // finer, and between increments of 1e-3 L and 1e-4 L (the hinges roll at the increments' ends;
+  // collapse is bisected to kSpreadTolerance L; each ring is refined next to its hinges at collapse).
+  // docs/spreading.md tabulates the measured capacities.
   constexpr double kThreeDigits = 2.5e-3;
   LimitOptions coarse, fine;
   fine.joints_count = 801;
