@@ -64,7 +64,7 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"method", "", "method that produced the numbers (closed-form, shooting, multiple-shooting)"},
     {"integrator", "", "CVODE's method (adams, bdf); empty for the closed form"},
     {"rtol", "", "relative error asked (--rtol); success guarantees it"},
-    {"status", "", "success, or why not (docs/cli.md: What status promises); limit: success, inadmissible, not_converged or lp_failure; spread: the mechanism's success, inadmissible (too thin at d = 0: no curve), no_mechanism, not_collapsed or lp_failure (spread --path: each solve's own on the elastic and cracking rows)"},
+    {"status", "", "success, or why not (docs/cli.md: What status promises); limit: success, inadmissible, not_converged or lp_failure; spread: the mechanism's success, inadmissible (too thin at d = 0: no curve), no_mechanism, not_collapsed, not_converged, unsettled or lp_failure (spread --path: each solve's own on the elastic and cracking rows)"},
     {"domain", "", "the model solved: half (a symmetric scene, the right half by symmetry) or whole (springing to springing)"},
     {"H", "N/m", "horizontal reaction H_left: inward push of the left support on the arch, per metre of vault (limit --thrust-line: of that state; spread --path: of the row's state, both supports' alike)"},
     {"V", "N/m", "vertical reaction V_left of the left support (half the total vertical load of a symmetric scene); limit: half the total vertical load, (V_left + V_right) / 2, the live load at factor 1; spread --path: V_left of the row's state; per metre of vault"},

@@ -97,7 +97,7 @@ void add_spread_analysis_options(CLI::App& cmd, SpreadText& t) {
       ->capture_default_str();
   cmd.add_option("--increment-ratio", t.increment_ratio,
                  "the span's increase over L between two solutions of the mechanism's minimum-thrust state (where "
-                 "its hinges may move), in (0, 0.1]")
+                 "its hinges may roll to other joints), in [1e-4, 0.1]")
       ->check(finite_number())
       ->capture_default_str();
   cmd.add_flag("--path", t.path,
@@ -135,8 +135,11 @@ SpreadSetup spread_setup(const SpreadText& t, const CLI::App& cmd) {
   std::string why;
   s.spread.steps = t.steps;
   s.spread.increment_ratio = t.increment_ratio;
-  if (!(t.increment_ratio > 0 && t.increment_ratio <= 0.1))
-    throw UsageError(fmt::format("--increment-ratio: must lie in (0, 0.1], got {}", t.increment_ratio));
+  s.spread.whole_path = t.path;  // the summary needs the state at d = 0 and the last one only
+  if (!(t.increment_ratio >= kLeastIncrementRatio && t.increment_ratio <= 0.1))
+    throw UsageError(fmt::format("--increment-ratio: must lie in [1e-4, 0.1] (finer increments take longer "
+                                 "without moving the capacity: docs/spreading.md), got {}",
+                                 t.increment_ratio));
   if (!s.limit.is_valid(&why)) throw UsageError(as_option_message(why));
   return s;
 }

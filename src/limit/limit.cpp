@@ -383,7 +383,20 @@ bool horizontal_collapse(const Ring& ring, double friction, Work& work, Horizont
 // springing's vertical) loads nothing, and a ring that carries nothing has no thrust, no thinnest
 // thickness and no mechanism to find. A fill that reaches the extrados over any part of the span is a
 // scene: the unloaded voussoirs carry its thrust.
+//
+// Loads so small that the squares of the forces underflow (below about 1e-154 N/m; kSmallestLoads leaves
+// room for the moments and sums) would make every joint look forceless and every thrust line admissible
+// or none: refused too. The analysis is homogeneous in the loads, so such a scene is the same arch as
+// one with its loads in ordinary units.
+constexpr double kSmallestLoads = 1e-100;  // N/m, the ring's total load
+
 void require_loaded(const Scene& scene, const Ring& ring) {
+  const double total = std::abs(ring.total_dead()) + std::abs(ring.total_live());
+  if (total != 0.0 && total < kSmallestLoads)
+    throw std::invalid_argument(fmt::format(
+        "density, fill_density: the ring's loads total {:.3g} N/m, below {:g} N/m, too small for the arithmetic of "
+        "rigid voussoirs (their squares underflow); the analysis is the same at any scale: give the loads in N",
+        total, kSmallestLoads));
   if (ring.total_dead() != 0.0 || ring.has_live_load()) return;
   double level = 0;
   for (const FillLoad& fill : scene.loads.fills)

@@ -1,6 +1,7 @@
-// The mechanism part of the spreading path (spreading.hpp): increments of the movement, each from the
-// minimum-thrust state of the voussoirs where they are, its hinges turned by finite angles that close the
-// chain exactly (a Newton iteration on three equations); the program is the limit analysis' own.
+// The mechanism part of the spreading path (spreading.hpp): increments of the movement; at each, the
+// voussoirs placed from the ring at d = 0 by finite rotations at the current hinges alone that close the
+// chain exactly (a Newton iteration on three equations), the limit analysis' own program on them, and
+// the hinges rolled to the program's contacts until the two agree.
 #include "ogive/limit/spreading.hpp"
 
 #include <algorithm>
@@ -155,37 +156,36 @@ Mechanism choose_mechanism(const Ring& ring, std::vector<Hinge> hinges, const Ve
   }
 }
 
-// The finite motion of each body of `mech` (the left springing's part, the blocks between hinges, the
-// right springing's part) when the springings move by uL and uR: the hinge rotations phi that close the
-// chain exactly, by Newton's method from the rates' first-order guess, each step the least-squares one.
-// False when the iteration does not close it or a hinge would turn the closing way.
-bool finite_motion(const Ring& ring, const Mechanism& mech, const Vec& uL, const Vec& uR, double d_step,
-                   std::vector<Rigid>& bodies) {
-  const std::size_t m = mech.hinges.size();
-  Eigen::VectorXd phi(static_cast<Eigen::Index>(m));
-  for (std::size_t i = 0; i < m; ++i) phi(static_cast<Eigen::Index>(i)) = mech.rates[i] * d_step;
-  const double L = ring.span;
-  bodies.assign(m + 1, Rigid{});
-  std::vector<Vec> q(m);
+// The bodies of a chain cut at `hinges` (their points on the ring at d = 0, ascending) and turned there by
+// the relative rotations phi (rad, of the part after a hinge against the part before it, counter-
+// clockwise positive): the left springing's part moved by uL, each next one turned about its hinge.
+void chain_bodies(const std::vector<Hinge>& hinges, const Eigen::VectorXd& phi, const Vec& uL,
+                  std::vector<Rigid>& bodies) {
+  Rigid chain = translation(uL);
+  bodies.assign(hinges.size() + 1, chain);
+  for (std::size_t i = 0; i < hinges.size(); ++i) {
+    chain = chain.after(rotation_about(hinges[i].point, phi(static_cast<Eigen::Index>(i))));
+    bodies[i + 1] = chain;
+  }
+}
+
+// The relative rotations phi at `hinges` (points on the ring at d = 0) that close the chain on the right
+// springing moved by uR when the left one has moved by uL: Newton's method from the given phi, each step
+// the least-squares one (with three hinges the rotations are unique; with more, the closing rotations
+// nearest the start). False when the iteration does not close the chain.
+bool close_chain(const std::vector<Hinge>& hinges, const Vec& uL, const Vec& uR, double L, Eigen::VectorXd& phi,
+                 std::vector<Rigid>& bodies) {
+  const std::size_t m = hinges.size();
   for (int iteration = 0; iteration < 30; ++iteration) {
-    Rigid chain = translation(uL);
-    bodies[0] = chain;
-    for (std::size_t i = 0; i < m; ++i) {
-      q[i] = chain(mech.hinges[i].point);
-      chain = chain.after(rotation_about(mech.hinges[i].point, phi(static_cast<Eigen::Index>(i))));
-      bodies[i + 1] = chain;
-    }
+    chain_bodies(hinges, phi, uL, bodies);
+    const Rigid& chain = bodies.back();
     const Eigen::Vector3d residual(chain.angle, chain.shift.x() - uR.x(), chain.shift.y() - uR.y());
     if (std::abs(residual(0)) <= 1e-15 && residual.tail<2>().norm() <= 1e-15 * L) {
-      bodies[m] = translation(uR);  // equal to round-off: the springing's own motion
-      for (std::size_t i = 0; i < m; ++i) {
-        const double opening = opening_sign(ring, mech.hinges[i]) * phi(static_cast<Eigen::Index>(i));
-        if (opening < -1e-9 * phi.cwiseAbs().maxCoeff()) return false;
-      }
+      bodies.back() = translation(uR);  // equal to round-off: the springing's own motion
       return true;
     }
     Eigen::MatrixXd J(3, static_cast<Eigen::Index>(m));
-    for (std::size_t i = 0; i < m; ++i) J.col(static_cast<Eigen::Index>(i)) = closure_column(chain.shift, q[i]);
+    for (std::size_t i = 0; i < m; ++i) J.col(static_cast<Eigen::Index>(i)) = closure_column(chain.shift, bodies[i](hinges[i].point));
     Eigen::VectorXd step;
     if (!min_norm_solve(J, -residual, step)) return false;
     phi += step;
@@ -193,16 +193,63 @@ bool finite_motion(const Ring& ring, const Mechanism& mech, const Vec& uL, const
   return false;
 }
 
-// One admissible state of the path: where the pieces are, the program's answer and the mechanism that
-// moves them on.
+// Whether each relative rotation opens its joint (a face hinge turns one way only), to round-off.
+bool all_open(const Ring& ring0, const std::vector<Hinge>& hinges, const Eigen::VectorXd& phi) {
+  const double scale = phi.size() > 0 ? phi.cwiseAbs().maxCoeff() : 0.0;
+  for (std::size_t i = 0; i < hinges.size(); ++i)
+    if (opening_sign(ring0, hinges[i]) * phi(static_cast<Eigen::Index>(i)) < -1e-9 * scale) return false;
+  return true;
+}
+
+bool same_hinges(const std::vector<Hinge>& a, const std::vector<Hinge>& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                    [](const Hinge& x, const Hinge& y) { return x.joint == y.joint && x.face == y.face; });
+}
+
+// The relative rotations of `to` taken from those of `from` (phi): a hinge that stays on its joint keeps
+// its own; one that has rolled to another joint of the same face takes the rotation of the hinge it
+// replaces (the nearest on that face, each given once); a new hinge starts from 0.
+Eigen::VectorXd carried_rotations(const std::vector<Hinge>& from, const Eigen::VectorXd& phi,
+                                  const std::vector<Hinge>& to) {
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(to.size()));
+  std::vector<bool> taken(from.size(), false), given(to.size(), false);
+  // The pairs of one face by their distance in joints, the nearest first (the same joint: 0).
+  for (int distance = 0;;) {
+    int next = std::numeric_limits<int>::max();
+    for (std::size_t i = 0; i < to.size(); ++i) {
+      for (std::size_t k = 0; k < from.size() && !given[i]; ++k) {
+        if (taken[k] || from[k].face != to[i].face) continue;
+        const int gap = std::abs(from[k].joint - to[i].joint);
+        if (gap == distance) {
+          out(static_cast<Eigen::Index>(i)) = phi(static_cast<Eigen::Index>(k));
+          taken[k] = given[i] = true;
+        } else if (gap > distance) {
+          next = std::min(next, gap);
+        }
+      }
+    }
+    if (next == std::numeric_limits<int>::max()) break;
+    distance = next;
+  }
+  return out;
+}
+
+// One admissible state of the path: its hinges where the ring at d = 0 has them with their relative
+// rotations, where that puts the pieces, the program's answer and the mechanism that moves them on.
 struct State {
+  std::vector<Hinge> hinges;  // joint, face and the point on the ring at d = 0, ascending
+  Eigen::VectorXd phi;        // rad, each hinge's relative rotation from d = 0
   Placement at;
   LimitLp::Answer answer;
   Mechanism mechanism;
   SpreadStep step;
 };
 
-enum class Outcome { admissible, inadmissible, snap_through, lp_failure };
+enum class Outcome { admissible, inadmissible, snap_through, lp_failure, unsettled };
+
+// Hinges that roll more often than this at one movement have found no state whose contacts are its
+// hinges (a ring whose joints alternate at the same d; not seen on the tested arches).
+constexpr int kMostRolls = 20;
 
 class Path {
  public:
@@ -214,7 +261,54 @@ class Path {
         vR_(spread.right_share, -spread.right_settlement_share),
         live_factor_(ring0.has_live_load() ? 1.0 : 0.0) {}
 
-  // The state of the pieces `at`, movement d.
+  // The state at d = 0: the unmoved ring, its hinges those of the program's minimum-thrust (least-work)
+  // state, none turned yet.
+  Outcome start(State& s) {
+    Placement at;
+    at.voussoir.assign(ring0_.voussoirs.size(), Rigid{});
+    const Outcome o = evaluate(std::move(at), 0, nullptr, s);
+    if (o != Outcome::admissible) return o;
+    s.hinges = on_ring0(s.mechanism.hinges);
+    s.phi = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(s.hinges.size()));
+    return o;
+  }
+
+  // The state at a further movement `dd` from `from`: the pieces placed from the ring at d = 0 with the
+  // current hinges only (every other joint closed), the program solved on them; while its contacts are
+  // not those hinges, the hinges roll to the contacts (a hinge's rotation going with it to its new
+  // joint) and the placement and the program are made again.
+  Outcome advance(const State& from, double dd, State& to) {
+    const double d = from.step.d + dd;
+    std::vector<Hinge> hinges = from.hinges;
+    Eigen::VectorXd phi = from.phi;
+    for (std::size_t i = 0; i < hinges.size(); ++i) phi(static_cast<Eigen::Index>(i)) += from.mechanism.rates[i] * dd;
+    const std::vector<int>* warm = &from.answer.basis;
+    std::vector<std::vector<Hinge>> seen;
+    for (int roll = 0; roll <= kMostRolls; ++roll) {
+      std::vector<Rigid> bodies;
+      if (!close_chain(hinges, vL_ * d, vR_ * d, ring0_.span, phi, bodies)) return Outcome::snap_through;
+      if (!all_open(ring0_, hinges, phi)) return Outcome::snap_through;
+      const Outcome o = evaluate(placement(hinges, bodies), d, warm, to);
+      if (o != Outcome::admissible) return o;
+      const std::vector<Hinge> contacts = on_ring0(to.mechanism.hinges);
+      if (same_hinges(contacts, hinges)) {
+        to.hinges = std::move(hinges);
+        to.phi = std::move(phi);
+        return o;
+      }
+      if (std::any_of(seen.begin(), seen.end(), [&](const auto& h) { return same_hinges(h, contacts); })) break;
+      seen.push_back(hinges);
+      phi = carried_rotations(hinges, phi, contacts);
+      hinges = contacts;
+      warm = &to.answer.basis;
+      ++rolls_;
+    }
+    return Outcome::unsettled;
+  }
+
+  int rolls() const { return rolls_; }
+
+  // The state of the pieces `at`, movement d: the program's answer, its contacts' mechanism.
   Outcome evaluate(Placement at, double d, const std::vector<int>* warm, State& s) {
     place_ring(ring0_, at, moved_);
     lp_.load(moved_, friction_);
@@ -242,30 +336,32 @@ class Path {
     return Outcome::admissible;
   }
 
-  // The state after a further movement `dd` from `from` by its mechanism.
-  Outcome advance(const State& from, double dd, State& to) {
-    std::vector<Rigid> bodies;
-    if (!finite_motion(moved_for(from), from.mechanism, vL_ * dd, vR_ * dd, dd, bodies)) return Outcome::snap_through;
-    Placement at = from.at;
-    const std::vector<Hinge>& h = from.mechanism.hinges;
-    std::size_t body = 0;
-    for (std::size_t k = 0; k < at.voussoir.size(); ++k) {
-      while (body < h.size() && static_cast<std::size_t>(h[body].joint) <= k) ++body;
-      at.voussoir[k] = bodies[body].after(at.voussoir[k]);
-    }
-    at.left = bodies.front().after(at.left);
-    at.right = bodies.back().after(at.right);
-    return evaluate(std::move(at), from.step.d + dd, &from.answer.basis, to);
-  }
-
   const Ring& moved() const { return moved_; }
   const Ring& ring() const { return ring0_; }
 
  private:
-  // The moved ring of a state (the last one evaluated is kept; another is placed again).
-  const Ring& moved_for(const State& s) {
-    place_ring(ring0_, s.at, moved_);
-    return moved_;
+  // The hinges with their points on the ring at d = 0.
+  std::vector<Hinge> on_ring0(std::vector<Hinge> hinges) const {
+    for (Hinge& h : hinges) {
+      const Joint& j = ring0_.joints[static_cast<std::size_t>(h.joint)];
+      h.point = h.face == Face::intrados ? j.intrados : h.face == Face::extrados ? j.extrados : j.axis;
+    }
+    return hinges;
+  }
+
+  // Each piece's motion: the voussoirs before the first hinge with the left springing's body, those
+  // between two hinges with their block's, those after the last with the right springing's.
+  Placement placement(const std::vector<Hinge>& hinges, const std::vector<Rigid>& bodies) const {
+    Placement at;
+    at.voussoir.resize(ring0_.voussoirs.size());
+    std::size_t body = 0;
+    for (std::size_t k = 0; k < at.voussoir.size(); ++k) {
+      while (body < hinges.size() && static_cast<std::size_t>(hinges[body].joint) <= k) ++body;
+      at.voussoir[k] = bodies[body];
+    }
+    at.left = bodies.front();
+    at.right = bodies.back();
+    return at;
   }
 
   // The thrust by virtual work of the mechanism at the moved ring: each body's velocity per unit rate
@@ -290,6 +386,7 @@ class Path {
   Ring moved_;
   const Vec vL_, vR_;
   const double live_factor_;
+  int rolls_ = 0;
 };
 
 }  // namespace
@@ -303,6 +400,8 @@ const char* to_string(SpreadStatus s) {
     case SpreadStatus::no_mechanism: return "no_mechanism";
     case SpreadStatus::lp_failure: return "lp_failure";
     case SpreadStatus::not_collapsed: return "not_collapsed";
+    case SpreadStatus::unsettled: return "unsettled";
+    case SpreadStatus::not_converged: return "not_converged";
   }
   return "?";
 }
@@ -317,7 +416,8 @@ bool SpreadOptions::is_valid(std::string* why) const {
   if (!(left_share + right_share > 0)) return bad("left_share + right_share must be > 0 (the span must grow)");
   if (!std::isfinite(left_settlement_share)) return bad("left_settlement_share must be finite");
   if (!std::isfinite(right_settlement_share)) return bad("right_settlement_share must be finite");
-  if (!(increment_ratio > 0 && increment_ratio <= 0.1)) return bad("increment_ratio must lie in (0, 0.1]");
+  if (!(increment_ratio >= kLeastIncrementRatio && increment_ratio <= 0.1))
+    return bad("increment_ratio must lie in [1e-4, 0.1] (finer increments take longer without moving the capacity)");
   if (steps < 1 || steps > 100000) return bad("steps must be in [1, 100000]");
   if (!(stop_ratio >= 0)) return bad("stop_ratio must be >= 0 (infinity: to collapse)");
   return true;
@@ -355,26 +455,34 @@ std::vector<SpreadStep> printed_rows(const std::vector<SpreadStep>& all, int ste
   return rows;
 }
 
-SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread) {
-  std::string why;
-  if (!spread.is_valid(&why)) throw std::invalid_argument("SpreadOptions: " + why);
-  SpreadResult r;
-  const LimitResult base = analyse_limit(scene, limit);
-  r.ring = base.ring;
-  if (base.status == LimitStatus::inadmissible || !base.min_state.found()) {
-    r.status = base.status == LimitStatus::lp_failure ? SpreadStatus::lp_failure : SpreadStatus::inadmissible;
-    r.message = base.message.empty() ? "no thrust line fits inside the arch at d = 0" : base.message;
-    return r;
+// Every state of the path, or (SpreadOptions::whole_path false) the first and the last only.
+class Recorder {
+ public:
+  explicit Recorder(bool whole) : whole_(whole) {}
+  void add(const SpreadStep& s) {
+    if (whole_ || all_.size() < 2) all_.push_back(s);
+    else all_.back() = s;
   }
+  const SpreadStep& front() const { return all_.front(); }
+  const SpreadStep& back() const { return all_.back(); }
+  std::vector<SpreadStep> rows(int steps) const { return whole_ ? printed_rows(all_, steps) : all_; }
+
+ private:
+  bool whole_;
+  std::vector<SpreadStep> all_;
+};
+
+// The path on the ring `ring` (the limit analysis' `base` gives the state at d = 0 where it has none).
+SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOptions& limit, const SpreadOptions& spread) {
+  SpreadResult r;
+  r.ring = ring;
   const Ring& ring0 = r.ring;
   const double L = ring0.span;
   const double sides = spread.left_share + spread.right_share;
   Path path(ring0, limit, spread);
-  Placement start;
-  start.voussoir.assign(ring0.voussoirs.size(), Rigid{});
 
   State current;
-  const Outcome first = path.evaluate(start, 0, nullptr, current);
+  const Outcome first = path.start(current);
   if (first != Outcome::admissible) {
     if (first == Outcome::snap_through) {  // admissible, but nothing moves the springings apart
       r.status = SpreadStatus::no_mechanism;
@@ -393,12 +501,22 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
     return r;
   }
 
-  std::vector<SpreadStep> all{current.step};
+  Recorder all(spread.whole_path);
+  all.add(current.step);
   const double increment = spread.increment_ratio * L / sides;
   const double tolerance = kSpreadTolerance * L / sides;
   const double stop = spread.stop_ratio * L / sides;  // infinity without a stop
   // A span that grew by more than 2.5 L has outgrown any arch: both halves lie flat before that.
   const long most = static_cast<long>(std::ceil(2.5 / spread.increment_ratio));
+  auto failed = [&](Outcome o) {
+    r.status = o == Outcome::lp_failure ? SpreadStatus::lp_failure : SpreadStatus::unsettled;
+    r.message = o == Outcome::lp_failure
+                    ? "the LP of the minimum thrust stopped without an answer"
+                    : "the hinges found no state whose contacts are its hinges beyond a span increase of " +
+                          std::to_string(sides * current.step.d / L) + " L";
+    r.path = {all.front(), all.back()};
+    return r;
+  };
   State next;
   for (long i = 0;; ++i) {
     if (i == most) {
@@ -414,19 +532,15 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
     ++r.increments;
     if (o == Outcome::admissible) {
       std::swap(current, next);
-      all.push_back(current.step);
+      all.add(current.step);
       if (stops) {
         r.stopped = true;
         break;
       }
       continue;
     }
-    if (o == Outcome::lp_failure) {
-      r.status = SpreadStatus::lp_failure;
-      r.message = "the LP of the minimum thrust stopped without an answer";
-      return r;
-    }
-    // Collapse within this increment: bisect it from the current state with the current mechanism.
+    if (o == Outcome::lp_failure || o == Outcome::unsettled) return failed(o);
+    // Collapse within this increment: bisect it from the current state.
     double lo = 0, hi = stops ? to_stop : increment;
     Outcome last_bad = o;
     bool moved_on = false;
@@ -435,11 +549,7 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
       const double mid = 0.5 * (lo + hi);
       const Outcome om = path.advance(current, mid, next);
       ++r.increments;
-      if (om == Outcome::lp_failure) {
-        r.status = SpreadStatus::lp_failure;
-        r.message = "the LP of the minimum thrust stopped without an answer";
-        return r;
-      }
+      if (om == Outcome::lp_failure || om == Outcome::unsettled) return failed(om);
       if (om == Outcome::admissible) {
         lo = mid;
         std::swap(best, next);
@@ -451,16 +561,108 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
     }
     if (moved_on) {
       current = std::move(best);
-      all.push_back(current.step);
+      all.add(current.step);
     }
     r.collapse = last_bad == Outcome::inadmissible ? SpreadCollapse::inadmissible : SpreadCollapse::snap_through;
     break;
   }
   if (!r.stopped) r.d_max = current.step.d;
+  r.rolls = path.rolls();
   r.shape = shape_of(path, current);
-  r.path = printed_rows(all, spread.steps);
+  r.path = all.rows(spread.steps);
   r.status = SpreadStatus::success;
   return r;
+}
+
+// Whether two rings' hinges are at the same places (joints of one ring need not have the other's numbers).
+bool same_places(const std::vector<Hinge>& a, const std::vector<Hinge>& b, double L) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [&](const Hinge& x, const Hinge& y) {
+    return x.face == y.face && (x.point - y.point).norm() <= 1e-9 * L;
+  });
+}
+
+// The hinges at collapse that can roll on: those on a face, but not on a springing's joint.
+std::vector<Hinge> rolling_hinges(const Ring& ring, const std::vector<Hinge>& hinges) {
+  std::vector<Hinge> out;
+  const int last = static_cast<int>(ring.joints.size()) - 1;
+  for (const Hinge& h : hinges)
+    if (h.face != Face::axis && h.joint > 0 && h.joint < last) out.push_back(h);
+  return out;
+}
+
+// The longest arc length (m) of the two voussoirs on each side of each hinge.
+double coarsest_next_to(const Ring& ring, const std::vector<Hinge>& hinges) {
+  double most = 0;
+  const int n = static_cast<int>(ring.voussoirs.size());
+  for (const Hinge& h : hinges)
+    for (int k = std::max(h.joint - 2, 0); k < std::min(h.joint + 2, n); ++k)
+      most = std::max(most, ring.joints[static_cast<std::size_t>(k + 1)].s - ring.joints[static_cast<std::size_t>(k)].s);
+  return most;
+}
+
+// The capacity depends on where the ring has joints for the hinges to roll to (the hinges at collapse
+// sit where the thrust line grazes a face; a joint nearer that point lets the path go on): the path is
+// followed again on a ring whose voussoirs next to the hinges at collapse are halved, until they are
+// no longer than kSpreadJointSpacing L and the capacity moved by at most kSpreadCapacityTolerance of itself at
+// the last refinement.
+SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread) {
+  std::string why;
+  if (!spread.is_valid(&why)) throw std::invalid_argument("SpreadOptions: " + why);
+  const LimitResult base = analyse_limit(scene, limit);
+  if (base.status == LimitStatus::inadmissible || !base.min_state.found()) {
+    SpreadResult r;
+    r.ring = base.ring;
+    r.status = base.status == LimitStatus::lp_failure ? SpreadStatus::lp_failure : SpreadStatus::inadmissible;
+    r.message = base.message.empty() ? "no thrust line fits inside the arch at d = 0" : base.message;
+    return r;
+  }
+  const double sides = spread.left_share + spread.right_share;
+  SpreadOptions round = spread;  // the rounds to collapse, keeping the first and last states only
+  round.whole_path = false;
+  round.stop_ratio = std::numeric_limits<double>::infinity();
+  SpreadResult r = follow(base.ring, base, limit, round);
+  std::vector<double> fractions = r.ring.joint_fractions;
+  int increments = r.increments, rolls = r.rolls;
+  double change = 0;  // no refinement: nothing moved
+  bool stayed = false;  // a finer ring changed the state at d = 0: the last ring's path stands
+  for (int refinement = 0; r.status == SpreadStatus::success && refinement < kMostSpreadRefinements; ++refinement) {
+    const std::vector<Hinge> rolling = rolling_hinges(r.ring, r.path.back().hinges);
+    if (rolling.empty() || (refinement > 0 && coarsest_next_to(r.ring, rolling) <= kSpreadJointSpacing * r.ring.span &&
+                            change <= kSpreadCapacityTolerance))
+      break;
+    limit_detail::add_refinement(r.ring, rolling, fractions);
+    fractions = limit_detail::merged_fractions(std::move(fractions));
+    SpreadResult finer = follow(limit_detail::make_ring_at(scene, limit, fractions), base, limit, round);
+    increments += finer.increments;
+    rolls += finer.rolls;
+    if (finer.status != SpreadStatus::success) return finer;
+    // A finer ring that resolves the state at d = 0 into other contacts (a pointed arch's thrust line
+    // grazing its extrados over several of the new joints) starts another path: the last ring's stands
+    // (docs/spreading.md measures how far it has converged).
+    if (!same_places(finer.path.front().hinges, r.path.front().hinges, r.ring.span)) {
+      stayed = true;
+      break;
+    }
+    // Relative to the capacity, but not below kSpreadCapacityFloor of the span (an arch near t_min,
+    // whose capacity is next to nothing).
+    change = std::abs(finer.d_max - r.d_max) / std::max(finer.d_max, kSpreadCapacityFloor * r.ring.span / sides);
+    r = std::move(finer);
+  }
+  const bool converged = r.status != SpreadStatus::success || stayed || change <= kSpreadCapacityTolerance;
+  SpreadResult out = r;
+  if (spread.whole_path || spread.stop_ratio < std::numeric_limits<double>::infinity()) {
+    out = follow(r.ring, base, limit, spread);
+    out.increments += increments;
+    out.rolls += rolls;
+  } else {
+    out.increments = increments;
+    out.rolls = rolls;
+  }
+  if (out.status == SpreadStatus::success && !converged) {
+    out.status = SpreadStatus::not_converged;
+    out.message = "the capacity still moved by " + std::to_string(change) + " of itself at the last refinement of the joints";
+  }
+  return out;
 }
 
 }  // namespace ogive

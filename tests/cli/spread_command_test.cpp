@@ -245,6 +245,9 @@ TEST_CASE("cli: spread refuses bad input with one line naming the option, exit 2
       {{"--left-settlement-share", "nan"}, "--left-settlement-share"},
       {{"--left-settlement-share", "0,1"}, "--left-settlement-share"},
       {{"--increment-ratio", "abc"}, "--increment-ratio"},
+      {{"--increment-ratio", "1e-7"}, "--increment-ratio"},
+      {{"--increment-ratio", "1e-8"}, "--increment-ratio"},
+      {{"--increment-ratio", "0.2"}, "--increment-ratio"},
       {{"--joints-count", "4"}, "--joints-count"},
       {{"--support-displacement-ratio", "0.001"}, "--support-displacement-ratio"},
       {{"--left-spread-ratio", "0.001"}, "--left-spread-ratio"},
@@ -282,4 +285,25 @@ TEST_CASE("cli: spread --columns help gives every column its unit, and threads c
   const Run two = run({"spread", "--thickness-ratio", "0.06:0.09:4", "--span", "8,10", "--threads", "2"});
   REQUIRE(one.status == 0);
   CHECK(one.out == two.out);
+}
+
+TEST_CASE("cli: spread's finest increment gives the capacity of the default one, in bounded time and memory") {
+  // The increments are bounded below (kLeastIncrementRatio): at the finest, each of the semicircle's
+  // paths takes some 600 increments, and the summary keeps two states of it. The capacity is the
+  // default increment's to three significant digits (docs/spreading.md's table).
+  constexpr double kThreeDigits = 2.5e-3;
+  const std::vector<std::string> scene = {"spread", "--curve", "semicircular", "--thickness-ratio", "0.075",
+                                          "--columns", "spread_capacity_ratio"};
+  std::vector<std::string> finest = scene;
+  finest.insert(finest.end(), {"--increment-ratio", "1e-4"});
+  const Run fine = run(finest), standard = run(scene);
+  REQUIRE(fine.status == 0);
+  REQUIRE(standard.status == 0);
+  const double a = table(fine.out).number(0, "spread_capacity_ratio");
+  const double b = table(standard.out).number(0, "spread_capacity_ratio");
+  CHECK(close(a, b, kThreeDigits));
+  const Run refused = run({"spread", "--increment-ratio", "9e-5"});
+  CHECK(refused.status == 2);
+  CHECK(refused.out.empty());
+  CHECK(refused.err.find("--increment-ratio: must lie in [1e-4, 0.1]") != std::string::npos);
 }

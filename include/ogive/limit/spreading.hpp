@@ -6,31 +6,47 @@
 // (+right_share, -right_settlement_share) d (x right, y up: the settlements downwards positive), d
 // growing from 0 in increments of increment_ratio * L. The span grows: left_share + right_share > 0.
 //
-// Each increment starts from an admissible state of the moved ring: the limit analysis' program on the
-// voussoirs where they are now, every joint free (no hinge is imposed), for the state that does the least
-// work on the movement: the smallest H (left_share + right_share) + V_left (left_settlement_share -
+// The state at each d: the voussoirs where the current hinges put them, the limit analysis' program on
+// the voussoirs there, every joint free (no hinge is imposed), for the state that does the least work
+// on the movement: the smallest H (left_share + right_share) + V_left (left_settlement_share -
 // right_settlement_share) (V_left the left springing's vertical reaction; the smallest H when neither
 // settles; where the arch leaves room, a settling springing sheds load to the other). The joints where
-// its thrust line touches a face (or crosses a pin) are the hinges of the increment's mechanism;
-// from one increment to the next they may move to other joints (hinge migration), and an abandoned
-// hinge's opening stays in the voussoirs' places.
+// its thrust line touches a face (or crosses a pin) are its contacts; a state is settled when its
+// contacts are its hinges.
 //
-// Kinematics of an increment: the hinges, ascending along the arch, cut it into blocks; the voussoirs
-// before the first hinge move with the left springing, those after the last with the right one. The
-// blocks turn about the hinges by finite angles (exact rigid motions, not linearised) such that the
-// chain closes on the moved right springing. Three hinges fix the motion; with more (a pointed arch's
-// minimum-thrust state has two beside its crown, a symmetric pair) the motion is the one of least
-// squared hinge rotations, which for a symmetric arch under a symmetric movement is the symmetric one.
+// Rolling hinges: a joint that is not a current hinge is closed (its faces together, as at d = 0); an
+// opened no-tension joint touches only at its hinge's edge, so a thrust line must cross it there. The
+// pieces are placed from the ring at d = 0 with the current hinges only: the hinges, ascending along
+// the arch, cut it into blocks; the voussoirs before the first hinge move with the left springing,
+// those after the last with the right one; the blocks turn about the hinges by finite relative
+// rotations (exact rigid motions, not linearised) that close the chain on the moved right springing.
+// Three hinges fix the rotations; with more (a pointed arch's minimum-thrust state has two beside its
+// crown, a symmetric pair) they are the closing ones nearest the last state's carried on by its
+// mechanism's rates, the least squared rates (for a symmetric arch under a symmetric movement, the
+// symmetric motion). From one d to the next the hinges are carried on; where the program's contacts on
+// that placement are other joints, the hinges roll to them - a hinge that moves to another joint of
+// its face takes its relative rotation along, and its old joint closes; a new hinge starts from no
+// rotation - and the placement and the program are made again, until the contacts are the hinges.
 // A hinge turns one way only (its joint opens on the face opposite its contact; a pin either way): a
-// hinge the least-squares motion would close is left out, and the motion found again without it.
+// contact whose mechanism's rate would close it is no hinge, and a state whose rotations would close a
+// hinge is no state of the path.
 //
-// A joint's faces, once opened, no longer meet: the program takes each joint midway between its two
-// faces (exact at a turning hinge, whose contact point both faces share).
+// A joint is taken midway between its two faces: exact at a closed joint (the faces coincide) and at
+// a settled hinge, whose contact point both faces share and through which the thrust line passes.
+//
+// The joints: the limit analysis' ring at d = 0 (refined next to its hinges), then refined again next to
+// the hinges at collapse, halving the two voussoirs on each side of each, and the path followed again,
+// until those voussoirs are no longer than kSpreadJointSpacing L and the capacity moved by at most
+// kSpreadCapacityTolerance of itself at the last refinement: the hinges at collapse sit where the
+// thrust line grazes a face, and a joint nearer that point lets the path go on. The hinges refined
+// next to: those at collapse on a face, not on a springing's joint. A refinement that changes the
+// state at d = 0 (a pointed arch's thrust line grazing its extrados over several new joints) is not
+// taken: the last ring's path stands (the limit analysis' ring when it is the first).
 //
 // Collapse, at the first of (the last increment bisected to kSpreadTolerance of the span):
 //   inadmissible - no thrust line fits inside the moved voussoirs (the program is infeasible);
 //   snap_through - no mechanism of the current hinges moves the springings apart: the hinges are in a
-//                  line, or fewer than three remain that open.
+//                  line, or fewer than three remain that open, or their rotations would close one.
 //
 // Units: SI (m, N per metre of width). Positions as in limit.hpp: x from the left springing's intrados
 // at d = 0, y up.
@@ -48,6 +64,17 @@
 namespace ogive {
 
 inline constexpr double kSpreadTolerance = 1e-6;  // collapse movement located to this fraction of L
+// The finest increment (SpreadOptions::increment_ratio): from 1e-4 to 1e-5 no measured capacity moved by
+// as much as 1e-6 of the span (docs/spreading.md), and a path to collapse takes at most 25,000 of them.
+inline constexpr double kLeastIncrementRatio = 1e-4;
+// The refinements of the joints next to the hinges at collapse, at most (analyse_spreading), and the
+// longest voussoir there after them (of the span, in arc length along the axis).
+inline constexpr int kMostSpreadRefinements = 12;
+inline constexpr double kSpreadJointSpacing = 2.5e-4;
+// The capacity (the span's increase at collapse over L) is refined until it moves by at most this much
+// of itself (three significant digits), or of kSpreadCapacityFloor when it is smaller.
+inline constexpr double kSpreadCapacityTolerance = 1e-3;
+inline constexpr double kSpreadCapacityFloor = 1e-2;
 
 struct SpreadOptions {
   double left_share = 1;   // the left springing moves by -left_share * d (m per m of d), >= 0
@@ -56,9 +83,12 @@ struct SpreadOptions {
   // a horizontal share, a springing moving along a sloping line; without one, a pure settlement.
   double left_settlement_share = 0, right_settlement_share = 0;
   // The increment of the span's increase (left_share + right_share) * d over L between two
-  // re-solutions of the minimum-thrust state (where the hinges may move), in (0, 0.1].
+  // re-solutions of the minimum-thrust state (where the hinges may move), in [kLeastIncrementRatio, 0.1].
   double increment_ratio = 2.5e-4;
   int steps = 200;  // the path's rows: states at about d_max i / steps, i = 0 .. steps; >= 1
+  // false: SpreadResult::path keeps the state at d = 0 and the last one only, and the memory taken does
+  // not grow with the increments.
+  bool whole_path = true;
   // Stop where the span's increase over L reaches this, before collapse (SpreadResult::stopped): the
   // path's last state is there. >= 0 (0: the state at d = 0); infinity: to collapse.
   double stop_ratio = std::numeric_limits<double>::infinity();
@@ -90,6 +120,10 @@ enum class SpreadStatus {
   lp_failure,    // the LP library stopped without an answer
   not_collapsed, // no collapse before the span grew by 2.5 L, which no arch survives: path holds d = 0
                  // and the last state
+  unsettled,     // at some movement the hinges found no placement whose program's contacts are its
+                 // hinges (they rolled back and forth): path holds d = 0 and the last settled state
+  not_converged, // the capacity still moved by more than kSpreadCapacityTolerance of itself at the last of
+                 // kMostSpreadRefinements refinements of the joints: the finest ring's path is given
 };
 const char* to_string(SpreadStatus s);
 
@@ -107,8 +141,11 @@ struct SpreadResult {
   SpreadCollapse collapse = SpreadCollapse::inadmissible;
   double d_max = std::numeric_limits<double>::quiet_NaN();  // m, the movement parameter at collapse
   bool stopped = false;  // the path stopped at SpreadOptions::stop_ratio before collapse (d_max is NaN)
-  int increments = 0;             // increments taken (each one program, plus the bisection's)
-  std::vector<SpreadStep> path;   // d = 0, about `steps` states between, and the last admissible one
+  int increments = 0;             // increments taken (each one or more programs, plus the bisection's)
+  int rolls = 0;                  // times the hinges rolled to other joints (each one program more)
+  // d = 0, about `steps` states between, and the last admissible one (SpreadOptions::whole_path false:
+  // d = 0 and the last)
+  std::vector<SpreadStep> path;
   Ring ring;                      // the ring at d = 0
   SpreadShape shape;              // path.back()'s voussoirs and thrust line (a success's)
 };
