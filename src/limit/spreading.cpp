@@ -391,7 +391,9 @@ class Path {
 
 }  // namespace
 
-const char* to_string(SpreadCollapse c) { return c == SpreadCollapse::inadmissible ? "inadmissible" : "snap_through"; }
+const char* to_string(SpreadCollapse c) {
+  return c == SpreadCollapse::thrust_leaves_arch ? "thrust_leaves_arch" : "snap_through";
+}
 
 const char* to_string(SpreadStatus s) {
   switch (s) {
@@ -563,7 +565,7 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
       current = std::move(best);
       all.add(current.step);
     }
-    r.collapse = last_bad == Outcome::inadmissible ? SpreadCollapse::inadmissible : SpreadCollapse::snap_through;
+    r.collapse = last_bad == Outcome::inadmissible ? SpreadCollapse::thrust_leaves_arch : SpreadCollapse::snap_through;
     break;
   }
   if (!r.stopped) r.d_max = current.step.d;

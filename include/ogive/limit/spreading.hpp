@@ -44,7 +44,8 @@
 // taken: the last ring's path stands (the limit analysis' ring when it is the first).
 //
 // Collapse, at the first of (the last increment bisected to kSpreadTolerance of the span):
-//   inadmissible - no thrust line fits inside the moved voussoirs (the program is infeasible);
+//   thrust_leaves_arch - no thrust line fits inside the moved voussoirs (the program is infeasible): the
+//                  line of thrust would have to leave the arch;
 //   snap_through - no mechanism of the current hinges moves the springings apart: the hinges are in a
 //                  line, or fewer than three remain that open, or their rotations would close one.
 //
@@ -95,7 +96,7 @@ struct SpreadOptions {
   bool is_valid(std::string* why) const;
 };
 
-enum class SpreadCollapse { inadmissible, snap_through };
+enum class SpreadCollapse { thrust_leaves_arch, snap_through };
 const char* to_string(SpreadCollapse c);
 
 // One state of the mechanism.
@@ -138,7 +139,7 @@ struct SpreadShape {
 struct SpreadResult {
   SpreadStatus status = SpreadStatus::lp_failure;
   std::string message;
-  SpreadCollapse collapse = SpreadCollapse::inadmissible;
+  SpreadCollapse collapse = SpreadCollapse::thrust_leaves_arch;
   double d_max = std::numeric_limits<double>::quiet_NaN();  // m, the movement parameter at collapse
   bool stopped = false;  // the path stopped at SpreadOptions::stop_ratio before collapse (d_max is NaN)
   int increments = 0;             // increments taken (each one or more programs, plus the bisection's)
