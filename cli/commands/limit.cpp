@@ -58,8 +58,12 @@ struct LimitCommandOptions {
 };
 
 void add_analysis_options(CLI::App& cmd, LimitText& t) {
-  cmd.add_option("--joints", t.joints, "interior joints: radial (normal to the axis) or vertical")->capture_default_str();
-  cmd.add_option("--weight", t.weight, "voussoir (the ring's true weight at each centroid) or axis (rho g t per axis length)")
+  cmd.add_option("--joints", t.joints,
+                 "interior joints: radial (normal to the axis) or vertical; a list radial,vertical gives a row for each")
+      ->capture_default_str();
+  cmd.add_option("--weight", t.weight,
+                 "voussoir (the ring's true weight at each centroid) or axis (rho g t per axis length); a list gives a "
+                 "row for each")
       ->capture_default_str();
   cmd.add_option("--joints-count", t.joints_count, fmt::format("joints springing to springing, both included; odd, in [{}, {}]", kMinJointsCount,
                              kMaxJointsCount))
@@ -94,11 +98,10 @@ constexpr Inapplicable kNotForLimit[] = {
     {"--section", "the voussoirs carry no tension by construction: --section chooses the elastic analyses' model"},
 };
 
-// The options as the library's, refused with the option's name when they break a rule.
-LimitOptions limit_options(const LimitText& t, const CLI::App& cmd) {
+// The options as the library's, refused with the option's name when they break a rule: one per
+// combination of --joints and --weight (each a name or a list a,b), joints first, as the rows print them.
+std::vector<LimitOptions> limit_options(const LimitText& t, const CLI::App& cmd) {
   LimitOptions o;
-  o.joints = lookup(joint_orientations(), t.joints, "--joints");
-  o.weight = lookup(weight_models(), t.weight, "--weight");
   o.joints_count = t.joints_count;
   if (given(cmd, "--friction") && !(t.friction > 0))
     throw UsageError(fmt::format("--friction: must be > 0 (omit it for no sliding check), got {}", t.friction));
@@ -109,9 +112,24 @@ LimitOptions limit_options(const LimitText& t, const CLI::App& cmd) {
   if (!t.thrust_line.empty()) lookup(kThrustLines, t.thrust_line, "--thrust-line");
   if (t.repeats < 0 || t.repeats > 100000)
     throw UsageError(fmt::format("--repeats: must lie in [0, 100000] (0: no timing), got {}", t.repeats));
-  std::string why;
-  if (!o.is_valid(&why)) throw UsageError(as_option_message(why));
-  return o;
+  std::vector<LimitOptions> combinations;
+  for (const std::string& joints : split_names(t.joints))
+    for (const std::string& weight : split_names(t.weight)) {
+      o.joints = lookup(joint_orientations(), joints, "--joints");
+      o.weight = lookup(weight_models(), weight, "--weight");
+      std::string why;
+      if (!o.is_valid(&why)) throw UsageError(as_option_message(why));
+      combinations.push_back(o);
+    }
+  return combinations;
+}
+
+// The columns among joints and weight that take several values (printed by default, as a varying input).
+std::vector<std::string> varying_setup(const LimitText& t) {
+  std::vector<std::string> varying;
+  if (split_names(t.joints).size() > 1) varying.push_back("joints");
+  if (split_names(t.weight).size() > 1) varying.push_back("weight");
+  return varying;
 }
 
 void add_limit_setup(CsvRow& row, const LimitOptions& o) {
@@ -215,31 +233,39 @@ int run_limit(LimitCommandOptions& lo, const CLI::App& cmd, std::ostream& out) {
     write_all(out, columns.help(lo.columns));
     return kExitOk;
   }
-  LimitOptions o = limit_options(text, cmd);
+  std::vector<LimitOptions> combinations = limit_options(text, cmd);
   const ScenePlan plan(lo.scene, cmd);
   if (lines && kThrustLines.at(text.thrust_line) == ThrustLine::collapse && !given(cmd, "--point-load") &&
       !given(cmd, "--live-load") && lo.scene.file_loads.points.empty() && lo.scene.file_loads.live.empty())
     throw UsageError("--thrust-line collapse: a load factor needs a live load (--point-load, --live-load or a "
                      "--loads-file with point or live rows)");
-  if (lines) check_rows(plan.size(), o.joints_count);
-  columns.select(lo.columns, plan.varying_inputs());
-  o.horizontal_load_factor = (lines && kThrustLines.at(text.thrust_line) == ThrustLine::horizontal) ||
-                             std::any_of(kHorizontalColumns.begin(), kHorizontalColumns.end(),
-                                         [&](const std::string& c) { return columns.selected(c); });
+  if (lines) check_rows(plan.size() * combinations.size(), text.joints_count);
+  columns.select(lo.columns, plan.varying_inputs(), varying_setup(text));
+  const bool horizontal = (lines && kThrustLines.at(text.thrust_line) == ThrustLine::horizontal) ||
+                          std::any_of(kHorizontalColumns.begin(), kHorizontalColumns.end(),
+                                      [&](const std::string& c) { return columns.selected(c); });
+  for (LimitOptions& o : combinations) o.horizontal_load_factor = horizontal;
   // Each scene's analysis has its own LP model, so scenes run in parallel; timed scenes (--repeats) one
   // after another, each on a core of its own. A scene's joint rows (--thrust-line) wait in the reorder
   // window while other threads work: write_scenes bounds them by the starting ring's joints and the few
   // hundred that the loads and the refinement add (one thread beyond kChunkRows).
   const int threads = timed ? 1 : text.threads;
-  const std::size_t rows_per_scene = lines ? static_cast<std::size_t>(o.joints_count) + kRefinementRows : 1;
+  const std::size_t rows_per_scene =
+      combinations.size() * (lines ? static_cast<std::size_t>(text.joints_count) + kRefinementRows : 1);
   const bool all_answered = write_scenes(
       plan, columns, out, threads,
       [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
-        double median_seconds = 0;
-        const LimitResult r = analyse_timed(scene, o, text.repeats, &median_seconds);
-        emit(lines ? joint_rows(columns, p, scene, o, r, text.thrust_line)
-                   : summary_row(columns, p, scene, o, r, timed, median_seconds));
-        return r.status == LimitStatus::success || r.status == LimitStatus::inadmissible;
+        bool answered = true;
+        std::string text_rows;
+        for (const LimitOptions& o : combinations) {
+          double median_seconds = 0;
+          const LimitResult r = analyse_timed(scene, o, text.repeats, &median_seconds);
+          text_rows += lines ? joint_rows(columns, p, scene, o, r, text.thrust_line)
+                             : summary_row(columns, p, scene, o, r, timed, median_seconds);
+          answered = answered && (r.status == LimitStatus::success || r.status == LimitStatus::inadmissible);
+        }
+        emit(text_rows);
+        return answered;
       },
       rows_per_scene);
   return all_answered ? kExitOk : kExitNotConverged;

@@ -228,3 +228,26 @@ TEST_CASE("cli: asking for the collapse acceleration changes no other number of 
       CHECK(field(with.out, name, row) == field(without.out, name, row));
   }
 }
+
+TEST_CASE("cli: limit --joints and --weight take lists: a row for each, each the row of its own run") {
+  const Run both = limit_cli({"--eccentricity", "0,0.5", "--joints", "radial,vertical", "--weight", "voussoir,axis"});
+  REQUIRE(both.status == 0);
+  const auto rows = split(both.out, '\n');
+  REQUIRE(rows.size() == 1 + 2 * 4);
+  CHECK(split(rows[0], ',').at(2) == "joints");  // the lists are inputs that vary
+  std::size_t k = 1;
+  for (const char* eccentricity : {"0", "0.5"})
+    for (const char* joints : {"radial", "vertical"})
+      for (const char* weight : {"voussoir", "axis"}) {
+        const Run one = limit_cli({"--eccentricity", eccentricity, "--joints", joints, "--weight", weight,
+                                   "--all-columns"});
+        REQUIRE(one.status == 0);
+        CHECK(field(both.out, "joints", k) == joints);
+        CHECK(field(both.out, "weight", k) == weight);
+        for (const char* name : {"H_min", "H_max", "thickness_min_ratio", "hinges_min"})
+          CHECK(field(both.out, name, k) == field(one.out, name));
+        ++k;
+      }
+  CHECK(limit_cli({"--weight", "voussoir,"}).status == 2);
+  CHECK(limit_cli({"--joints", "radial,diagonal"}).status == 2);
+}
