@@ -133,7 +133,7 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"H_max_over_V", "", "limit: H_max / V, V half the total vertical load (the V column; with a symmetric scene, H_over_V's V_left)"},
     {"thickness_min_ratio", "", "limit, assess: t_min / span, the thinnest arch of the same axis that stands"},
     {"geometric_safety_factor", "", "limit, assess: t / t_min"},
-    {"hinges_min", "", "limit: hinges of the minimum-thrust state, x/L:face joined by ';' (face: intrados, extrados, or axis for a pin)"},
+    {"hinges_min", "", "limit: hinges of the minimum-thrust state, x/L:face joined by ';' (face: intrados, extrados, or axis for a pin; x from the left springing's axis point, so a hinge on a springing's outer face lies beyond [0, 1], e.g. -0.04 at t/L 0.08)"},
     {"hinges_max", "", "limit: hinges of the maximum-thrust state, x/L:face joined by ';'"},
     {"load_factor", "", "limit, assess: multiplier on the live load (every point and live load) at collapse (static LP)"},
     {"load_factor_mechanism", "", "limit: the same from the mechanism of those hinges by virtual work"},
