@@ -59,6 +59,7 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"fill_density", "kg/m^3", "fill density rho_f (load rho_f g max(0, h_f - y_extrados) per horizontal length)"},
     {"fill_height_ratio", "", "the fill's level h_f above the springing line / span"},
     {"fill_height", "m", "the fill's level h_f above the springing line"},
+    {"unit_weight", "N/m^3", "the masonry's unit weight gamma = rho g as given (--unit-weight; density is then gamma / g); empty: --density gave it"},
     {"loads_file", "", "the --loads-file whose loads the scene carries too"},
     {"horizontal_acceleration", "", "horizontal acceleration a / g, left to right positive, on the self-weight and fill"},
     {"method", "", "method that produced the numbers (closed-form, shooting, multiple-shooting)"},
@@ -227,7 +228,7 @@ const std::vector<std::string>& scene_columns() {
       "right_spread_ratio", "left_settlement_ratio", "right_settlement_ratio", "left_rotation", "right_rotation",
       "point_load", "point_load_at", "live_load", "live_load_from", "live_load_to", "fill_density",
       "fill_height_ratio", "loads_file", "horizontal_acceleration", "thickness", "rise", "radius", "point_load_x",
-      "live_load_from_x", "live_load_to_x", "fill_height"};
+      "live_load_from_x", "live_load_to_x", "fill_height", "unit_weight"};
   return columns;
 }
 
@@ -370,7 +371,8 @@ void add_scene_columns(CsvRow& row, const SceneParameters& p, const Curve* curve
   if (!std::isnan(p.rise)) row.add(p.rise);
   else if (curve && row.wants_next()) row.add(rounded(curve->rise()));
   else row.add(std::string_view{});
-  for (double v : {p.radius, p.point_load_x, p.live_load_from_x, p.live_load_to_x, p.fill_height}) add_parameter(row, v);
+  for (double v : {p.radius, p.point_load_x, p.live_load_from_x, p.live_load_to_x, p.fill_height, p.unit_weight})
+    add_parameter(row, v);
 }
 
 std::string sparse_row(const Columns& columns, const SceneParameters& p, const Curve* curve,

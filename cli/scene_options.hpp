@@ -32,6 +32,7 @@ struct SceneParameters {
   double thickness, rise, radius, fill_height, point_load_x, live_load_from_x, live_load_to_x;
   double force_unit = 1;  // N per unit of point_load and live_load, as given (--units: 1 or 1000)
   double youngs_modulus, poisson_ratio, density, gravity, shear_coefficient;
+  double unit_weight;  // N/m^3, --unit-weight as given (NaN: --density gave the density)
   bool plane_strain;
   double point_load, point_load_at, live_load, live_load_from, live_load_to, fill_density, fill_height_ratio;
   double horizontal_acceleration;

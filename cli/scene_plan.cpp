@@ -70,6 +70,7 @@ void refuse_inapplicable(const CurveFamily& family, const std::string& curve, co
 // shape four ways): at most one of each group.
 constexpr std::initializer_list<const char*> kSameQuantity[] = {
     {"--thickness-ratio", "--thickness"},
+    {"--density", "--unit-weight"},
     {"--eccentricity", "--rise-ratio", "--rise", "--radius"},
     {"--fill-height-ratio", "--fill-height"},
     {"--point-load-at", "--point-load-x"},
@@ -256,6 +257,7 @@ void ScenePlan::plan_axes(SceneOptions& o, const CLI::App& cmd) {
     }
     // A quantity given in its other form: this one's default does not apply.
     if (!is_given && a.flag == "--thickness-ratio" && thickness_flag_ == "--thickness") text.clear();
+    if (!is_given && a.flag == "--density" && given(cmd, "--unit-weight")) text.clear();
     if (!is_given && a.flag == "--eccentricity" && shape) text.clear();
     if (is_given && a.flag == "--fill-height") fill_in_metres_ = true;
     if (is_given && a.flag == "--fill-height" && text.rfind("crown", 0) == 0) {
@@ -345,6 +347,7 @@ SceneParameters ScenePlan::parameters(std::size_t index) const {
 // Values that make no scene stay as they are: build() refuses them.
 void ScenePlan::derive_metres(SceneParameters& p) const {
   const double L = p.span;
+  if (!std::isnan(p.unit_weight)) p.density = p.unit_weight / p.gravity;
   const auto ratio_of = [L](double metres) { return decimal_quotient(metres, L); };
   const auto metres_of = [L](double ratio) { return decimal_product(ratio, L); };
   if (!std::isnan(p.thickness)) p.thickness_ratio = ratio_of(p.thickness);

@@ -71,7 +71,7 @@ std::vector<std::string> default_warnings(const CLI::App& cmd, const std::string
   if (!given(cmd, "--thickness") && !given(cmd, "--thickness-ratio"))
     warnings.push_back(fmt::format("neither --thickness nor --thickness-ratio given: the default t/L of {} is used",
                                    default_of(cmd, "--thickness-ratio")));
-  if (!given(cmd, "--density"))
+  if (!given(cmd, "--density") && !given(cmd, "--unit-weight"))
     warnings.push_back(
         fmt::format("--density not given: the default {} kg/m^3 (travertine, the paper's) is used", default_of(cmd, "--density")));
   return warnings;

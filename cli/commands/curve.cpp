@@ -57,6 +57,7 @@ constexpr Inapplicable kNotForCurve[] = {
     {"--youngs-modulus", kMaterialWhy},
     {"--poisson-ratio", kMaterialWhy},
     {"--density", kMaterialWhy},
+    {"--unit-weight", kMaterialWhy},
     {"--gravity", kMaterialWhy},
     {"--shear-coefficient", kMaterialWhy},
     {"--plane-strain", kMaterialWhy},

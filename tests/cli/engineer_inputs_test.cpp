@@ -148,3 +148,19 @@ TEST_CASE("cli: warnings on stderr, the output unchanged: metres without --span,
   CHECK(run_command({"thrust", "--span", "10", "--point-load", "1e5", "--columns", "H"}).err.empty());
   CHECK(lines(run_command({"thrust", "--span", "10", "--point-load", "100,200", "--columns", "H"}).err).size() == 1);
 }
+
+TEST_CASE("cli: --unit-weight gives the density gamma / g, and refuses --density beside it") {
+  const Run gamma = run_command({"thrust", "--unit-weight", "22kN/m3", "--gravity", "9.81", "--columns",
+                                 "density,unit_weight,H"});
+  REQUIRE(gamma.status == 0);
+  CHECK(column(gamma.out, "unit_weight") == "22000");
+  const double rho = std::stod(column(gamma.out, "density"));
+  CHECK(std::abs(rho * 9.81 - 22000) <= ogive::kExact * 22000);
+  const Run same = run_command({"thrust", "--density", column(gamma.out, "density"), "--columns", "H"});
+  REQUIRE(same.status == 0);
+  const double H = std::stod(column(gamma.out, "H"));
+  CHECK(std::abs(std::stod(column(same.out, "H")) - H) <= ogive::kExact * H);
+  check_refused({"thrust", "--unit-weight", "22000", "--density", "2200"});
+  check_refused({"thrust", "--unit-weight", "2.2t/m3"});
+  check_refused({"curve", "--unit-weight", "22000"});
+}
