@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 #include <stdexcept>
+#include <string>
 
 #include "ogive/geometry/curve_families.hpp"
 #include "ogive/solve/solve.hpp"
@@ -71,3 +72,27 @@ TEST_CASE("auto: the closed form on circular arcs - the quadrature on smooth cur
   // The same survey with its breakpoints: verified shooting or the quadrature meets rtol.
   CHECK(solve(survey, o).ok());
 }
+
+namespace ogive {
+
+TEST_CASE("unverified rows say why in the user's words") {
+  // A fill whose level lies below the extrados everywhere and no self-weight: nothing loads the ring,
+  // every reaction is 0, and the relative difference of the verifying solves has no scale.
+  Scene s = paper_scene(0.0);
+  s.material.density = 0;
+  s.loads.fills.push_back({1800, 0.01});
+  const Solution unloaded = solve(s, Options{});
+  CAPTURE(unloaded.message);
+  CHECK(unloaded.status == Status::unverified);
+  CHECK(unloaded.H == 0);
+  CHECK(unloaded.message.find("no load reaches the ring") != std::string::npos);
+  // A raw CVODE solve: verification was turned off, which the message names as the command line does.
+  Options raw;
+  raw.method = Method::shooting;
+  raw.verify = false;
+  const Solution sol = solve(paper_scene(0.0), raw);
+  CHECK(sol.status == Status::unverified);
+  CHECK(sol.message == "not verified (--no-verify): no error estimate");
+}
+
+}  // namespace ogive
