@@ -228,6 +228,9 @@ double reaction_and_thrust_difference(const Reactions& a, const Reactions& refer
 // of the profiles (when both carry one): the error estimate of a solution a against a tighter one b. NaN
 // when either has no field.
 double solution_difference(const Solution& a, const Solution& b);
+// The same for two solved solutions from their reactions and profiles alone (a's field may have been
+// dropped once its profile was sampled, to free its memory).
+double sampled_solution_difference(const Solution& a, const Solution& b);
 
 // The error measure of a profile against a reference at the same stations: the largest difference of
 // the displacement (Ux, Uy) relative to the largest |U| of the reference, of psi relative to the
