@@ -313,9 +313,10 @@ StateVector springing_state_for(const Solution& from, const ArchModel& to) {
 // The work one scene's no-tension solves may spend, over all its tries, paths and verifying solves (in
 // the methods' own counts, Diagnostics::rhs_evaluations): the quadrature form's integrand evaluations,
 // and the CVODE right-hand sides of Newton shooting, single and multiple. A cracked arch at the defaults
-// takes some 10^4 to 10^5 of the first and 10^4 to 10^6 of the second (a verified scene at rtol 1e-11
-// with four support movements, 1.4 10^6); the budgets are a few seconds' work. A solve that finds its
-// budget spent stops with not_converged, and the row's message says which budget ran out.
+// takes some 10^4 to 10^5 of each (a verified scene at rtol 1e-11 with four support movements, 1.2 10^6
+// right-hand sides by single shooting, 5.3 10^5 by multiple shooting); the budgets are a few seconds'
+// work. A solve that finds its budget spent stops with not_converged, and the row's message says which
+// budget ran out.
 constexpr std::int64_t kQuadratureWork = 20'000'000;
 constexpr std::int64_t kCvodeWork = 2'000'000;
 struct NoTensionWork {
