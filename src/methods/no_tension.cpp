@@ -455,9 +455,9 @@ bool first_guess(const ArchModel& model, std::span<const StateVector> guesses,
   return false;
 }
 
-std::string work_budget_message(std::int64_t budget, Method method) {
-  return fmt::format("the work budget of {} {} ran out", budget,
-                     method == Method::quadrature ? "integrand evaluations" : "right-hand-side evaluations");
+std::string work_budget_message(std::int64_t budget, Method method, bool scene) {
+  return fmt::format("the {} budget of {} {} ran out", scene ? "scene's work" : "work", budget,
+                     method == Method::quadrature ? "integrand evaluations" : "CVODE right-hand-side evaluations");
 }
 
 Solution solve_no_tension(std::shared_ptr<const ArchModel> model, const Options& options, int segments,

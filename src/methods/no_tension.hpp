@@ -38,10 +38,11 @@ namespace ogive {
 // The work a solve may spend, in the units of its Diagnostics::rhs_evaluations: CVODE's right-hand-side
 // evaluations for Newton shooting, integrand and geometry evaluations for the quadrature form. A solve
 // that spends its budget stops with status not_converged and the message work_budget_message(budget,
-// method) ("the work budget of N ... ran out"). Counts, not times: the same scene stops at the same
-// point on any machine and for any number of threads.
+// method) ("the work budget of N ... ran out"; with `scene`, "the scene's work budget ...", for the
+// budget of all a scene's solves). Counts, not times: the same scene stops at the same point on any
+// machine and for any number of threads.
 inline constexpr std::int64_t kUnlimitedWork = std::numeric_limits<std::int64_t>::max();
-std::string work_budget_message(std::int64_t budget, Method method);
+std::string work_budget_message(std::int64_t budget, Method method, bool scene = false);
 
 // segments == 1: single shooting; otherwise multiple shooting over shooting_knots(model, segments).
 // Status success (provisional, as every method's: solve() judges it against rtol), not_converged (with

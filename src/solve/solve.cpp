@@ -358,8 +358,8 @@ Solution no_tension_once(const Scene& scene, const Options& options, const NoTen
   left -= sol.diagnostics.rhs_evaluations;
   if (left <= 0 && sol.status == Status::not_converged) {
     const std::int64_t whole = how.method == Method::quadrature ? kQuadratureWork : kCvodeWork;
-    sol.message = work_budget_message(whole, how.method) + " (over the scene's solves)";
-    if (how.work->ran_out.empty()) how.work->ran_out = fmt::format("{} ({})", sol.message, to_string(how.method));
+    sol.message = work_budget_message(whole, how.method, true);
+    if (how.work->ran_out.empty()) how.work->ran_out = fmt::format("{} in {}", sol.message, to_string(how.method));
   }
   return sol;
 }

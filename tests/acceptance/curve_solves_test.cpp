@@ -9,8 +9,6 @@
 #include <utility>
 #include <vector>
 
-#include <sys/resource.h>
-#include <unistd.h>
 
 #include "ogive/geometry/curve_families.hpp"
 #include "ogive/solve/solve.hpp"
@@ -118,17 +116,22 @@ TEST_CASE("curve solves: points sampled from the parabola reproduce its H/V and 
 
 namespace {
 
-// The process's resident memory now and at its peak so far, in MB (Linux).
-double resident_mb() {
-  std::ifstream statm("/proc/self/statm");
-  double pages = 0, resident = 0;
-  statm >> pages >> resident;
-  return resident * static_cast<double>(sysconf(_SC_PAGESIZE)) / 1e6;
-}
+// The process's peak resident memory (VmHWM, MB) since reset_peak() (Linux: writing 5 to
+// /proc/self/clear_refs resets it to the resident memory of the moment).
+void reset_peak() { std::ofstream("/proc/self/clear_refs") << "5"; }
 double peak_mb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1e3;  // kB
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1e3;  // kB
+  return 0;
+}
+double resident_mb() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmRSS:", 0) == 0) return std::stod(line.substr(6)) / 1e3;  // kB
+  return 0;
 }
 
 }  // namespace
@@ -149,6 +152,7 @@ Scene survey(int n) {
 // The growth of the process's peak resident memory over one solve (MB), what the survey costs: the
 // solve's numbers are kept, not its field (the command line writes a row and drops it).
 double solve_growth(const Scene& s, const Options& o, Solution& kept) {
+  reset_peak();
   const double before = resident_mb();
   {
     const Solution sol = solve(s, o);
