@@ -317,7 +317,7 @@ StateVector springing_state_for(const Solution& from, const ArchModel& to) {
 // right-hand sides by single shooting, 5.3 10^5 by multiple shooting); the budgets are a few seconds'
 // work. A solve that finds its budget spent stops with not_converged, and the row's message says which
 // budget ran out.
-constexpr std::int64_t kQuadratureWork = 20'000'000;
+constexpr std::int64_t kQuadratureWork = 10'000'000;
 constexpr std::int64_t kCvodeWork = 2'000'000;
 struct NoTensionWork {
   std::int64_t quadrature = kQuadratureWork, cvode = kCvodeWork;

@@ -16,7 +16,7 @@
 // bounded by counts, so that it ends the same way on any machine: Newton's 30 iterations of at most 40
 // halvings each, 40 solves a continuation path, a Newton shooting trial given up beyond 4 times the
 // costliest successful evaluation's right-hand sides (at least 5 000), and over all the scene's solves at
-// most 20 000 000 quadrature integrand evaluations and 2 000 000 CVODE right-hand sides; a scene that
+// most 10 000 000 quadrature integrand evaluations and 2 000 000 CVODE right-hand sides; a scene that
 // runs out is not_converged, the message naming the budget.
 #pragma once
 
