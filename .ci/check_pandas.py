@@ -24,7 +24,9 @@ OGIVE = sys.argv[1] if len(sys.argv) > 1 else "build/ogive"
 BOOLEAN = {"plane_strain", "crown_hinge", "cracked", "thrust_in_kern", "thrust_in_section", "within_tolerance"}
 TEXT = {"curve", "method", "integrator", "status", "message", "warning", "reference_method", "reference_status",
         "chosen_method", "file", "joints", "weight", "hinges_min", "hinges_max", "hinges_collapse", "hinges_horizontal", "state", "hinge",
-        "left_support", "right_support", "domain", "loads_file", "section"}
+        "left_support", "right_support", "domain", "loads_file", "section", "beam_model", "verdict", "governing",
+        "geometric_safety_factor_outcome", "load_factor_outcome", "horizontal_load_factor_outcome",
+        "spread_capacity_ratio_outcome", "max_thrust_eccentricity_outcome", "limit_status", "warnings"}
 
 RUNS = [
     (["thrust", "--eccentricity", "0:1:11"], ("eccentricity", 0.3, 1)),
@@ -42,6 +44,8 @@ RUNS = [
     (["curve", "--curve", "elliptical", "--rise-ratio", "0.2:0.4:3", "--stations", "5"], ("rise_ratio", 0.3, 5)),
     (["bench", "--eccentricity", "0.5", "--method", "closed-form,shooting", "--rtol", "1e-6,1e-8", "--repeats", "1"], None),
     (["limit", "--eccentricity", "0:1:5", "--thickness-ratio", "0.15"], ("eccentricity", 0.25, 1)),
+    (["assess", "--eccentricity", "0:1:5", "--thickness-ratio", "0.15", "--point-load", "1e5", "--require-thrust",
+      "section"], ("eccentricity", 0.25, 1)),
     (["limit", "--point-load", "2e5", "--thrust-line", "collapse"], None),
 ]
 

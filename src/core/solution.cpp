@@ -160,6 +160,10 @@ double reaction_and_thrust_difference(const Reactions& a, const Reactions& refer
 
 double solution_difference(const Solution& a, const Solution& b) {
   if (!a.field || !b.field) return std::numeric_limits<double>::quiet_NaN();
+  return sampled_solution_difference(a, b);
+}
+
+double sampled_solution_difference(const Solution& a, const Solution& b) {
   const double thickness = b.model->scene().thickness;
   const double reactions = reaction_and_thrust_difference(a.reactions, b.reactions, thickness);
   if (std::isnan(reactions) || b.profile.empty()) return reactions;

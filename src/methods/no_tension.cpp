@@ -40,12 +40,17 @@ SystemMatrix jacobian(const ArchModel& model, double c, double sn, const Section
   return J;
 }
 
-// Column 0: the state, y' = f(s, y); columns 1..: its variations, dY' = J(s, y) dY.
+// Column 0: the state, y' = f(s, y); columns 1..: its variations, dY' = J(s, y) dY. It counts its
+// evaluations and refuses any beyond allow()'s limit (CVODE then gives up the integration within a few
+// calls, as for an inadmissible state): what bounds a Newton trial's work and a solve's.
 class NoTensionSystem final : public OdeSystem {
  public:
   explicit NoTensionSystem(const ArchModel& model)
       : model_(model), t_(model.scene().thickness / model.scales().length) {}
+  std::int64_t calls() const { return calls_; }
+  void allow(std::int64_t calls) { limit_ = calls; }
   bool rhs(double s, const Eigen::Ref<const OdeMatrix>& Y, Eigen::Ref<OdeMatrix> dY) const override {
+    if (++calls_ > limit_) return false;
     const double th = model_.theta(s), c = std::cos(th), sn = std::sin(th);
     const auto y = Y.col(0);
     const double N = c * y[kFx] + sn * y[kFy], V = -sn * y[kFx] + c * y[kFy];
@@ -73,6 +78,8 @@ class NoTensionSystem final : public OdeSystem {
  private:
   const ArchModel& model_;
   double t_;
+  mutable std::int64_t calls_ = 0;
+  std::int64_t limit_ = std::numeric_limits<std::int64_t>::max();
 };
 
 // The statics on a grid: with the springing forces (Fx0, Fy0, M0), Fx = Fx0 - H(s), Fy = Fy0 + B(s),
@@ -201,10 +208,19 @@ struct Evaluation {
   std::size_t failed_piece = 0;
 };
 
+// A Newton trial whose integration takes more than kTrialFactor times the right-hand sides of the
+// costliest evaluation that succeeded (and more than kTrialFloor) is given up, as an inadmissible one
+// is (Newton halves its step): such a trial creeps toward a section whose resultant reaches its face,
+// where the curvature grows as 1 / u^2 and CVODE's steps shrink without end (measured: 200 000 steps,
+// CVODE's limit, for trials beside accepted states that took 60 to 2 000). Near the solution the trials
+// cost what the accepted states cost.
+constexpr std::int64_t kTrialFactor = 4;
+constexpr std::int64_t kTrialFloor = 5000;
+
 class Shooter {
  public:
-  Shooter(const ArchModel& model, const Options& options, int segments)
-      : model_(model), system_(model), split_(springing_split(model)), options_(options) {
+  Shooter(const ArchModel& model, const Options& options, int segments, std::int64_t budget)
+      : model_(model), system_(model), split_(springing_split(model)), options_(options), budget_(budget) {
     knots_ = segments == 1 ? required_knots(model) : shooting_knots(model, segments, true);
     K_ = knots_.size() - 1;
     multiple_ = segments > 1 && K_ > 1;
@@ -245,7 +261,17 @@ class Shooter {
     return true;
   }
 
-  Evaluation evaluate(const Eigen::VectorXd& x) { return multiple_ ? evaluate_multiple(x) : evaluate_single(x.head<3>()); }
+  // Whether the solve's budget of right-hand sides is spent.
+  bool spent() const { return system_.calls() >= budget_; }
+
+  Evaluation evaluate(const Eigen::VectorXd& x) {
+    const std::int64_t before = system_.calls();
+    const std::int64_t trial = succeeded_ > 0 ? std::max(kTrialFloor, kTrialFactor * succeeded_)
+                                              : std::numeric_limits<std::int64_t>::max() - before;
+    system_.allow(before + std::min(trial, std::max<std::int64_t>(budget_ - before, 0)));
+    Evaluation e = multiple_ ? evaluate_multiple(x) : evaluate_single(x.head<3>());
+    if (e.ok) succeeded_ = std::max(succeeded_, system_.calls() - before);
+    return e; }
 
  private:
   // Integrates [y | dY] over piece k; false on failure (recorded in e).
@@ -329,6 +355,8 @@ class Shooter {
   bool multiple_ = false;
   int size_ = 3;
   std::optional<CvodeIntegrator> carried_, fresh_;
+  std::int64_t budget_;
+  std::int64_t succeeded_ = 0;  // the most right-hand sides an evaluation that succeeded took
 };
 
 // The field: integrates the solved state from the start of its piece (column 0 only); kept as CVODE's
@@ -359,7 +387,7 @@ class NoTensionField final : public PiecewiseField {
 }  // namespace
 
 ShootingResidual no_tension_residual(const ArchModel& model, const Options& options, const StateVector& y0) {
-  Shooter shooter(model, options, 1);
+  Shooter shooter(model, options, 1, kUnlimitedWork);
   Eigen::VectorXd x;
   ShootingResidual out;
   if (!shooter.unknowns_from(y0, x)) return out;
@@ -427,8 +455,13 @@ bool first_guess(const ArchModel& model, std::span<const StateVector> guesses,
   return false;
 }
 
+std::string work_budget_message(std::int64_t budget, Method method, bool scene) {
+  return fmt::format("the {} budget of {} {} ran out", scene ? "scene's work" : "work", budget,
+                     method == Method::quadrature ? "integrand evaluations" : "CVODE right-hand-side evaluations");
+}
+
 Solution solve_no_tension(std::shared_ptr<const ArchModel> model, const Options& options, int segments,
-                          std::span<const StateVector> guesses) {
+                          std::span<const StateVector> guesses, std::int64_t budget) {
   Solution sol;
   sol.method = segments == 1 ? Method::shooting : Method::multiple_shooting;
   sol.model = model;
@@ -437,7 +470,7 @@ Solution solve_no_tension(std::shared_ptr<const ArchModel> model, const Options&
     sol.message = "the no-tension section does not take a crown hinge over the whole arch";
     return sol;
   }
-  Shooter shooter(*model, options, segments);
+  Shooter shooter(*model, options, segments, budget);
   sol.diagnostics.segments = static_cast<int>(shooter.knots().size() - 1);
   auto count_work = [&] {
     const IntegratorStats s = shooter.stats();
@@ -457,6 +490,7 @@ Solution solve_no_tension(std::shared_ptr<const ArchModel> model, const Options&
   }, sol);
   if (!started) {
     count_work();
+    if (sol.status == Status::not_converged && shooter.spent()) sol.message = work_budget_message(budget, sol.method);
     return sol;
   }
   // Converged when Newton's full step changes no unknown by more than rtol / 100 of its size: beside
@@ -471,7 +505,10 @@ Solution solve_no_tension(std::shared_ptr<const ArchModel> model, const Options&
       },
       1e-2 * options.rtol, x, e, sol);
   count_work();
-  if (!converged) return sol;
+  if (!converged) {
+    if (shooter.spent()) sol.message = work_budget_message(budget, sol.method);
+    return sol;
+  }
   BvpSolution bvp;
   bvp.y0 = e.y0;
   bvp.yS = e.yS;

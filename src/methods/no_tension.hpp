@@ -25,19 +25,34 @@
 // margin is not positive, the status is inadmissible.
 #pragma once
 
+#include <cstdint>
+#include <limits>
 #include <memory>
 #include <span>
+#include <string>
 
 #include "ogive/core/solution.hpp"
 
 namespace ogive {
 
+// The work a solve may spend, in the units of its Diagnostics::rhs_evaluations: CVODE's right-hand-side
+// evaluations for Newton shooting, integrand and geometry evaluations for the quadrature form. A solve
+// that spends its budget stops with status not_converged and the message work_budget_message(budget,
+// method) ("the work budget of N ... ran out"; with `scene`, "the scene's work budget ...", for the
+// budget of all a scene's solves). Counts, not times: the same scene stops at the same point on any
+// machine and for any number of threads.
+inline constexpr std::int64_t kUnlimitedWork = std::numeric_limits<std::int64_t>::max();
+std::string work_budget_message(std::int64_t budget, Method method, bool scene = false);
+
 // segments == 1: single shooting; otherwise multiple shooting over shooting_knots(model, segments).
 // Status success (provisional, as every method's: solve() judges it against rtol), not_converged (with
-// Diagnostics::newton_iterations), inadmissible, integrator_failure (the linear start could not be
-// integrated), not_applicable (a hinge inside the domain), singular_system (Newton's matrix).
+// Diagnostics::newton_iterations: Newton's kMaxNewtonIterations, or the work budget, ran out),
+// inadmissible, integrator_failure (the linear start could not be integrated), not_applicable (a hinge
+// inside the domain), singular_system (Newton's matrix). A Newton trial whose integration takes more than
+// 8 times the right-hand sides of the costliest evaluation that succeeded (and more than 20 000) is given
+// up as an inadmissible one is: Newton halves its step.
 Solution solve_no_tension(std::shared_ptr<const ArchModel> model, const Options& options, int segments,
-                          std::span<const StateVector> guesses = {});
+                          std::span<const StateVector> guesses = {}, std::int64_t budget = kUnlimitedWork);
 
 // Single shooting's residual (the end's three conditions, scaled) and its Jacobian with respect to the
 // springing's three unknown components, from the springing state y0 (its unknown components are taken,
@@ -75,7 +90,7 @@ ShootingResidual no_tension_residual(const ArchModel& model, const Options& opti
 // arch, as there). Diagnostics: rhs_evaluations = integrand and geometry evaluations, segments = the
 // final panels, steps = 0.
 Solution solve_no_tension_quadrature(std::shared_ptr<const ArchModel> model, const Options& options,
-                                     std::span<const StateVector> guesses = {});
+                                     std::span<const StateVector> guesses = {}, std::int64_t budget = kUnlimitedWork);
 // Its residual and Jacobian at the springing state y0, as no_tension_residual (ok false when a node is
 // inadmissible or the quadrature cannot meet its tolerance).
 ShootingResidual no_tension_quadrature_residual(const ArchModel& model, const Options& options, const StateVector& y0);

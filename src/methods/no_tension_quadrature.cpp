@@ -309,6 +309,7 @@ class AdaptiveQuadrature {
   bool integrate(const StateVector& y0, Integrands& total, std::array<double, kValues>& l1) {
     at_.reset();
     accuracy_ = std::numeric_limits<double>::infinity();
+    if (spent()) return false;
     // Admissibility first, on every node, before any integrand is formed.
     for (const Panel& p : panels_)
       for (const Point& g : p.nodes)
@@ -340,6 +341,7 @@ class AdaptiveQuadrature {
         const Panel& p = panels_[i];
         if (share[i] > threshold && p.b - p.a > min_width_ && !p.at_noise()) {
           const double mid = 0.5 * (p.a + p.b);
+          if (spent()) return false;
           for (auto [a, b] : {std::pair{p.a, mid}, std::pair{mid, p.b}}) {
             Panel half = make_panel(a, b, p.piece);
             for (const Point& g : half.nodes)
@@ -368,6 +370,9 @@ class AdaptiveQuadrature {
 
   const std::vector<Panel>& panels() const { return panels_; }
   std::int64_t evaluations() const { return evaluations_; }
+  // At most `evaluations` integrand evaluations: beyond, integrate() fails (as for an inadmissible node).
+  void allow(std::int64_t evaluations) { budget_ = evaluations; }
+  bool spent() const { return evaluations_ >= budget_; }
 
  private:
   static constexpr int kInitialPanels = 32;
@@ -417,6 +422,7 @@ class AdaptiveQuadrature {
   double tol_, t_, aV_, min_width_ = 0;
   double accuracy_ = std::numeric_limits<double>::infinity();
   std::int64_t evaluations_ = 0;
+  std::int64_t budget_ = kUnlimitedWork;
 };
 
 // One evaluation of the end's three conditions and their Jacobian in the springing's unknowns z.
@@ -471,6 +477,7 @@ class QuadratureShooter {
   }
   const std::shared_ptr<const Geometry>& geometry() const { return geometry_; }
   const AdaptiveQuadrature& quadrature() const { return quadrature_; }
+  AdaptiveQuadrature& quadrature() { return quadrature_; }
   const SpringingSplit& split() const { return split_; }
 
  private:
@@ -577,7 +584,7 @@ ShootingResidual no_tension_quadrature_residual(const ArchModel& model, const Op
 }
 
 Solution solve_no_tension_quadrature(std::shared_ptr<const ArchModel> model, const Options& options,
-                                     std::span<const StateVector> guesses) {
+                                     std::span<const StateVector> guesses, std::int64_t budget) {
   Solution sol;
   sol.method = Method::quadrature;
   sol.model = model;
@@ -588,6 +595,8 @@ Solution solve_no_tension_quadrature(std::shared_ptr<const ArchModel> model, con
   }
   const double tol = quadrature_tolerance(options.rtol);
   QuadratureShooter shooter(*model, tol);
+  const std::int64_t geometry_work = shooter.geometry()->evaluations();
+  shooter.quadrature().allow(budget > geometry_work ? budget - geometry_work : 0);
   auto count_work = [&] {
     sol.diagnostics.rhs_evaluations = shooter.quadrature().evaluations() + shooter.geometry()->evaluations();
     sol.diagnostics.segments = static_cast<int>(shooter.quadrature().panels().size());
@@ -602,6 +611,8 @@ Solution solve_no_tension_quadrature(std::shared_ptr<const ArchModel> model, con
   }, sol);
   if (!started) {
     count_work();
+    if (sol.status == Status::not_converged && shooter.quadrature().spent())
+      sol.message = work_budget_message(budget, sol.method);
     return sol;
   }
   // At the noise: the residual within 10 times what the integrals' tolerance, or the accuracy they
@@ -613,9 +624,14 @@ Solution solve_no_tension_quadrature(std::shared_ptr<const ArchModel> model, con
       },
       1e-2 * options.rtol, x, e, sol);
   count_work();
-  if (!converged) return sol;
+  if (!converged) {
+    if (shooter.quadrature().spent()) sol.message = work_budget_message(budget, sol.method);
+    return sol;
+  }
   // The last accepted evaluation is at x, but the panels may since have been refined by rejected trials:
   // evaluate once more, so that the field's panels hold the integrals at the solution.
+  // (one evaluation more, whatever the budget: its work is bounded by the panels' limits)
+  shooter.quadrature().allow(kUnlimitedWork);
   if (!shooter.quadrature().holds(e.y0)) e = shooter.evaluate(x);
   if (!e.ok) {
     sol.status = Status::not_converged;

@@ -197,10 +197,11 @@ PanelColumns integrate_panel(const ArchModel& model, const Panel& panel, const C
 }
 
 // One degree's transfer over the half arch and its boundary-value solve; the field is built only for
-// the degree that is returned (make_solution).
+// the degree that is returned (make_solution). The panels' columns are not kept (a survey of 10^5
+// points has 10^5 panels, and they would take kilobytes each): node_states integrates them again from
+// the springing, the same arithmetic in the same order, so the same numbers.
 struct Level {
   int degree = 0;
-  std::vector<PanelColumns> columns;
   Columns springing;                    // the columns at s = 0
   BvpSolution bvp;
   Eigen::Matrix<double, kColumns, 1> y0;  // the solved springing forces and 1: y(s) = Y(s) y0
@@ -216,11 +217,7 @@ Level solve_level(const ArchModel& model, const std::vector<Panel>& panels, int 
   const SpringingSplit split = springing_split(model);
   for (int k : {kUx, kUy, kPsi}) Y(k, kLoad) = split.start[k];
   level.springing = Y;
-  level.columns.reserve(panels.size());
-  for (const Panel& panel : panels) {
-    level.columns.push_back(integrate_panel(model, panel, rule, Y));
-    Y = level.columns.back().end;
-  }
+  for (const Panel& panel : panels) Y = integrate_panel(model, panel, rule, Y).end;
   // The whole transfer y(S) = Phi y(0) + p for the boundary-value solve the methods share. The given
   // springing components' columns are exact: a unit Ux0 or Uy0 is a rigid translation, a unit psi0 a
   // rigid rotation about the springing (Ux = -y, Uy = x at the domain's end: the crown, or the right
@@ -240,15 +237,17 @@ Level solve_level(const ArchModel& model, const std::vector<Panel>& panels, int 
 
 // The solved state of one degree at every node of every panel: Fx, Fy, M and psi from the columns, Ux
 // and Uy by integrating the solved integrands.
-NodeStates node_states(const std::vector<Panel>& panels, const Level& level) {
+NodeStates node_states(const ArchModel& model, const std::vector<Panel>& panels, const Level& level) {
   const ChebyshevRule& rule = chebyshev_rule(level.degree);
   const int n = level.degree + 1;
   NodeStates states;
   states.reserve(panels.size());
   StateVector y_start = level.springing * level.y0;
+  Columns Y = level.springing;
   Eigen::Matrix<double, Eigen::Dynamic, 2> integrand(n, 2), scaled(n, 2), integral(n, 2);
   for (std::size_t k = 0; k < panels.size(); ++k) {
-    const PanelColumns& columns = level.columns[k];
+    const PanelColumns columns = integrate_panel(model, panels[k], rule, Y);
+    Y = columns.end;
     Eigen::MatrixXd panel_states(kStateSize, n);
     for (int i : {kFx, kFy, kM, kPsi}) panel_states.row(i) = (columns.component(i) * level.y0).transpose();
     integrand.col(0) = columns.component(kUx) * level.y0;
@@ -310,7 +309,11 @@ std::vector<ArchState> node_profile(const ArchModel& model, const std::vector<Pa
 // length scale) and whether the domain is its half. A thread keeps them for the last curve it solved on,
 // so that a sweep over one curve or survey (thickness, material, loads, supports) evaluates the curve
 // at each panel's nodes once per degree, not once per scene: the same rows, computed in the same order.
+// Only for at most kKeptPanels panels (a survey of a few thousand points): a larger survey's rows would
+// take a kilobyte a panel, for a saving that its own solve dwarfs.
+constexpr std::size_t kKeptPanels = 8192;
 struct NodeGeometry {
+  bool keeps = true;  // whether rows are kept (at most kKeptPanels panels)
   std::weak_ptr<const Curve> curve;
   bool half = true;
   double length_scale = 0;
@@ -328,7 +331,8 @@ NodeGeometry& node_geometry(const ArchModel& model, const std::vector<Panel>& pa
     geometry.curve = model.scene().curve;
     geometry.half = model.half();
     geometry.length_scale = model.scales().length;
-    geometry.panels = std::move(ends);
+    geometry.keeps = ends.size() <= kKeptPanels;
+    geometry.panels = geometry.keeps ? std::move(ends) : std::vector<std::array<double, 4>>{};
     geometry.rows.clear();
   }
   return geometry;
@@ -338,7 +342,8 @@ NodeGeometry& node_geometry(const ArchModel& model, const std::vector<Panel>& pa
 // degree / 2 (the even-numbered nodes); from `geometry` where this curve's were computed before. The
 // count of the curve's evaluations that the rows take (whether or not they were kept).
 std::int64_t sample_nodes(const ArchModel& model, Panel& panel, int degree, NodeGeometry& geometry, std::size_t k) {
-  auto& kept = geometry.rows[{k, degree}];
+  Eigen::Matrix<double, Eigen::Dynamic, 4> unkept;
+  auto& kept = geometry.keeps ? geometry.rows[{k, degree}] : unkept;
   const bool refining = panel.nodes.rows() == degree / 2 + 1;
   if (kept.rows() == degree + 1) {
     panel.nodes = kept;
@@ -373,8 +378,17 @@ std::int64_t sample_nodes(const ArchModel& model, Panel& panel, int degree, Node
     }
     ++evaluations;
   }
-  kept = panel.nodes;
+  if (geometry.keeps) kept = panel.nodes;
   return evaluations;
+}
+
+// A coarser degree's solution as the comparison with the next reads it (sampled_solution_difference:
+// its reactions and profile), its field dropped: a survey's fields take most of the memory, and two
+// degrees' at once would double it. No profile where it was not solved (make_solution samples one
+// only then), which the comparison reads as not a number, as solution_difference does.
+Solution without_field(Solution sol) {
+  sol.field.reset();
+  return sol;
 }
 
 // The error of the finer of two degrees N and 2N, from the differences d1 = |x_N - x_2N| and
@@ -463,9 +477,10 @@ Solution solve_quadrature(std::shared_ptr<const ArchModel> model, const Options&
   const bool node_estimate = profiles && options.unprinted_profile;
   const bool sampled = profiles && !node_estimate;
   Level coarse = solve_level(*model, panels, degree);
-  NodeStates coarse_states = node_estimate ? node_states(panels, coarse) : NodeStates{};
+  NodeStates coarse_states = node_estimate ? node_states(*model, panels, coarse) : NodeStates{};
   Solution coarse_solution =
-      sampled ? make_solution(model, panels, coarse, node_states(panels, coarse), options.stations) : Solution{};
+      sampled ? without_field(make_solution(model, panels, coarse, node_states(*model, panels, coarse), options.stations))
+              : Solution{};
   Solution sol;
   NodeStates fine_states;
   double estimate = std::numeric_limits<double>::quiet_NaN();
@@ -475,15 +490,16 @@ Solution solve_quadrature(std::shared_ptr<const ArchModel> model, const Options&
     for (std::size_t k = 0; k < panels.size(); ++k) evaluations += sample_nodes(*model, panels[k], degree, geometry, k);
     Level fine = solve_level(*model, panels, degree);
     const double condition = fine.bvp.condition;
-    if (node_estimate) fine_states = node_states(panels, fine);
+    if (node_estimate) fine_states = node_states(*model, panels, fine);
     const Reactions fine_reactions = model->reactions(fine.bvp.y0, fine.bvp.yS);
     const Reactions coarse_reactions = model->reactions(coarse.bvp.y0, coarse.bvp.yS);
     const double thickness = model->scene().thickness;
     // The reactions' difference, as solution_difference measures it.
     double difference = reaction_difference(coarse_reactions, fine_reactions, thickness);
     if (sampled) {
-      sol = make_solution(model, panels, fine, node_states(panels, fine), options.stations);
-      difference = solution_difference(coarse_solution, sol);
+      sol = make_solution(model, panels, fine, node_states(*model, panels, fine), options.stations);
+      difference = coarse_solution.profile.empty() || !sol.field ? std::numeric_limits<double>::quiet_NaN()
+                                                                  : sampled_solution_difference(coarse_solution, sol);
     } else if (node_estimate) {
       const double fields = profile_difference(node_profile(*model, panels, at_doubled_nodes(coarse_states, degree / 2)),
                                                node_profile(*model, panels, fine_states), thickness);
@@ -507,14 +523,14 @@ Solution solve_quadrature(std::shared_ptr<const ArchModel> model, const Options&
         sol = make_solution(model, panels, fine, std::move(fine_states), 0);
         if (sol.field) sol.profile = std::move(nodes);
       } else if (!sampled) {
-        sol = make_solution(model, panels, fine, node_states(panels, fine), 0);
+        sol = make_solution(model, panels, fine, node_states(*model, panels, fine), 0);
       }
       break;
     }
     previous_difference = difference;
     coarse = std::move(fine);
     coarse_states = std::move(fine_states);
-    if (sampled) coarse_solution = std::move(sol);
+    if (sampled) coarse_solution = without_field(std::move(sol));
   }
   if (!sol.field) return sol;  // singular: finish_solution said so
   Diagnostics& d = sol.diagnostics;

@@ -1,6 +1,7 @@
 #include "methods/shooting.hpp"
 
 #include <algorithm>
+#include <initializer_list>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -188,6 +189,67 @@ std::vector<double> shooting_knots(const ArchModel& model, int segments, bool at
   return merge_knots(model, extra);
 }
 
+constexpr std::size_t kTogetherSegments = 4096;
+
+// Multiple shooting's segments integrated together with Adams (SegmentsSystem), in runs of at most
+// kTogetherSegments: one run up to that many (a survey of 10^5 points, cut at each one, would otherwise
+// hold every segment's columns in each of CVODE's twenty-odd vectors: a gigabyte). The first segment
+// carries the march's map (m + 1 columns), every later one starts afresh (kIntegratedColumns).
+class TogetherRuns {
+ public:
+  TogetherRuns(const ArchModel& model, const std::vector<double>& knots, const Options& options, int m)
+      : model_(model), knots_(knots), options_(options), tol_(cvode_tolerances(options)), m_(m) {}
+  // Integrates the run whose first segment is `first` (the first segment from Y0, the others from start).
+  template <class Start>
+  std::optional<IntegrationError> integrate(std::size_t first, const AffineState& Y0, const Start& start) {
+    const std::size_t K = knots_.size() - 1, last = std::min(K, first + kTogetherSegments);
+    if (integrator_) add(integrator_->stats());
+    integrator_.reset();
+    std::vector<int> widths(last - first, kIntegratedColumns);
+    if (first == 0) widths[0] = m_ + 1;
+    const std::vector<double> run_knots(knots_.begin() + static_cast<std::ptrdiff_t>(first),
+                                        knots_.begin() + static_cast<std::ptrdiff_t>(last) + 1);
+    system_.emplace(model_, run_knots, widths);
+    integrator_.emplace(*system_, options_.integrator, tol_.rtol, tol_.atol, options_.max_steps, widths,
+                        options_.restart_at_breakpoints);
+    first_ = first;
+    OdeMatrix initial(kStateSize, std::accumulate(widths.begin(), widths.end(), 0));
+    for (std::size_t k = first; k < last; ++k)
+      if (k == 0) initial.leftCols(m_ + 1) = Y0;
+      else initial.middleCols(system_->column(k - first), kIntegratedColumns) = start;
+    const double one = 1.0;
+    return integrator_->integrate(0.0, initial, std::span<const double>(&one, 1),
+                                  [&](std::size_t, const CvodeIntegrator::Matrix& Y) { end_ = Y; });
+  }
+  // Segment k's columns at its end (k in the last run integrated).
+  OdeMatrix end_of(std::size_t k, int width) const { return end_.middleCols(system_->column(k - first_), width); }
+  const SegmentsSystem* system() const { return system_ ? &*system_ : nullptr; }
+  IntegratorStats stats() const {
+    IntegratorStats s = done_;
+    if (integrator_) add_to(s, integrator_->stats());
+    return s;
+  }
+
+ private:
+  static void add_to(IntegratorStats& to, const IntegratorStats& st) {
+    to.steps += st.steps;
+    to.rhs_evaluations += st.rhs_evaluations;
+    to.error_test_failures += st.error_test_failures;
+    to.jacobian_evaluations += st.jacobian_evaluations;
+  }
+  void add(const IntegratorStats& st) { add_to(done_, st); }
+  const ArchModel& model_;
+  const std::vector<double>& knots_;
+  const Options& options_;
+  CvodeTolerances tol_;
+  int m_;
+  std::optional<SegmentsSystem> system_;
+  std::optional<CvodeIntegrator> integrator_;
+  IntegratorStats done_;  // of the runs before the current one
+  OdeMatrix end_;
+  std::size_t first_ = 0;
+};
+
 Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& options, int segments) {
   Solution sol;
   sol.method = segments == 1 ? Method::shooting : Method::multiple_shooting;
@@ -209,7 +271,9 @@ Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& o
   // the verified error estimate of slender arches lower.)
   const int m = unknown_count(*model);
   const bool later_segments = segments > 1 && K > 1;
-  // Adams integrates every segment in one run (SegmentsSystem); BDF one segment after the other.
+  // Adams integrates the segments together (SegmentsSystem), in runs of at most kTogetherSegments (one
+  // run up to that many: a survey of 10^5 points, cut at each one, would otherwise hold every segment's
+  // columns in each of CVODE's twenty-odd vectors, a gigabyte); BDF one segment after the other.
   const bool together = later_segments && options.integrator == Integrator::adams;
   CvodeIntegrator carried(system, options.integrator, tol.rtol, tol.atol, options.max_steps, m + 1,
                           options.restart_at_breakpoints);
@@ -230,34 +294,18 @@ Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& o
   // shooting, the hot path, allocates nothing for it).
   Eigen::Matrix<double, kStateSize, kIntegratedColumns> start = Eigen::Matrix<double, kStateSize, kIntegratedColumns>::Zero();
   for (int j = 0; j < 4; ++j) start(kIntegratedStarts[j], j) = 1.0;
-  std::vector<int> widths;  // columns per segment, when they are integrated together
-  std::optional<SegmentsSystem> segments_system;
-  std::optional<CvodeIntegrator> together_integrator;
-  OdeMatrix together_end;
-  if (together) {
-    widths.assign(K, kIntegratedColumns);
-    widths[0] = m + 1;
-    segments_system.emplace(*model, knots, widths);
-    together_integrator.emplace(*segments_system, options.integrator, tol.rtol, tol.atol, options.max_steps,
-                                widths, options.restart_at_breakpoints);
-  }
-  // At the first segment (k = 0), with the march's map at the springing: every segment at once.
-  auto integrate_together = [&](const AffineState& Y0) {
-    OdeMatrix initial(kStateSize, std::accumulate(widths.begin(), widths.end(), 0));
-    initial.leftCols(m + 1) = Y0;
-    for (std::size_t k = 1; k < K; ++k) initial.middleCols(segments_system->column(k), kIntegratedColumns) = start;
-    const double one = 1.0;
-    failure = together_integrator->integrate(0.0, initial, std::span<const double>(&one, 1),
-                                             [&](std::size_t, const CvodeIntegrator::Matrix& Y) { together_end = Y; });
-    failed_piece = 0;
-    return !failure;
-  };
+  std::optional<TogetherRuns> runs;
+  if (together) runs.emplace(*model, knots, options, m);
   March marched;
   const bool ok = march(*model, knots,
                         [&](std::size_t k, AffineState& Y) {
+                          if (together && k % kTogetherSegments == 0) {
+                            failure = runs->integrate(k, Y, start);
+                            failed_piece = k;
+                            if (failure) return false;
+                          }
                           if (together && k == 0) {
-                            if (!integrate_together(Y)) return false;
-                            Y = together_end.leftCols(m + 1);
+                            Y = runs->end_of(0, m + 1);
                             return true;
                           }
                           if (!later_segments || k == 0) {
@@ -267,7 +315,7 @@ Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& o
                             return true;
                           }
                           OdeMatrix G;
-                          if (together) G = together_end.middleCols(segments_system->column(k), kIntegratedColumns);
+                          if (together) G = runs->end_of(k, kIntegratedColumns);
                           else if (!integrate(*fresh, k, start, G)) return false;
                           SystemMatrix Phi = SystemMatrix::Identity();
                           for (int j = 0; j < 4; ++j) Phi.col(kIntegratedStarts[j]) = G.col(j);
@@ -277,10 +325,11 @@ Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& o
                           return true;
                         },
                         marched);
-  for (const CvodeIntegrator* integrator :
-       {&carried, fresh ? &*fresh : nullptr, together_integrator ? &*together_integrator : nullptr}) {
-    if (!integrator) continue;
-    const IntegratorStats& st = integrator->stats();
+  const IntegratorStats together_stats = runs ? runs->stats() : IntegratorStats{};
+  for (const IntegratorStats* stats : std::initializer_list<const IntegratorStats*>{
+           &carried.stats(), fresh ? &fresh->stats() : nullptr, &together_stats}) {
+    if (!stats) continue;
+    const IntegratorStats& st = *stats;
     sol.diagnostics.steps += st.steps;
     sol.diagnostics.rhs_evaluations += st.rhs_evaluations;
     sol.diagnostics.error_test_failures += st.error_test_failures;
@@ -289,7 +338,7 @@ Solution solve_shooting(std::shared_ptr<const ArchModel> model, const Options& o
   if (!ok) {
     sol.status = Status::integrator_failure;
     sol.message = failure ? failure_message(*failure, *model, failed_piece, K,
-                                            together ? &*segments_system : nullptr)
+                                            together ? runs->system() : nullptr)
                           : "integration failed";
     return sol;
   }

@@ -221,6 +221,9 @@ Solution solve_verified(const std::shared_ptr<const ArchModel>& model, const Opt
   }
 }
 
+// The message of a raw solve, which verification (Options::verify, the CLI's --no-verify) was asked to skip.
+constexpr const char* kNotVerified = "not verified (--no-verify): no error estimate";
+
 // Turns a provisional `success` into what the numbers are worth against rtol: ill_conditioned,
 // tolerance_not_met (estimate or residuals above rtol) or unverified (no estimate). The one place that
 // applies within_tolerance to a solution.
@@ -238,7 +241,17 @@ void judge_solution(Solution& sol, double rtol) {
   }
   if (std::isnan(d.error_estimate)) {
     sol.status = Status::unverified;
-    if (sol.message.empty()) sol.message = "not verified (Options::verify off): no error estimate";
+    // The estimate is relative to the reactions: where every one is zero (no load reaches the ring and
+    // the supports do not move) the solves' difference has no scale.
+    const Reactions& r = sol.reactions;
+    const bool unloaded = r.H_left == 0 && r.V_left == 0 && r.V_right == 0 && r.H_right == 0 && r.M_left == 0 &&
+                          r.M_right == 0;
+    // Unloaded is the cause whatever the verification said (its differences are 0 / 0).
+    if (unloaded)
+      sol.message = "not verified: no load reaches the ring and the supports do not move, so every reaction is 0 "
+                    "and a relative error has no scale";
+    else if (sol.message.empty())
+      sol.message = "not verified: no error estimate (the solves' difference is not a number)";
     return;
   }
   const double residual = std::max(d.boundary_residual, d.equilibrium_residual);
@@ -260,6 +273,7 @@ Solution solve_with(const std::shared_ptr<const ArchModel>& model, const Options
   const bool own_estimate = method == Method::closed_form || method == Method::quadrature;
   Solution sol = own_estimate || !options.verify ? solve_once(model, options, method, segments)
                                                  : solve_verified(model, options, method, segments);
+  if (!own_estimate && !options.verify && sol.message.empty()) sol.message = kNotVerified;
   judge_solution(sol, asked);
   // Stepping across a jump of curvature or of the load (--ignore-breakpoints), CVODE's errors change
   // erratically with its tolerance, so the difference of solves at three tolerances bounds nothing (the
@@ -344,11 +358,26 @@ StateVector springing_state_for(const Solution& from, const ArchModel& to) {
   return y;
 }
 
+// The work one scene's no-tension solves may spend, over all its tries, paths and verifying solves (in
+// the methods' own counts, Diagnostics::rhs_evaluations): the quadrature form's integrand evaluations,
+// and the CVODE right-hand sides of Newton shooting, single and multiple. A cracked arch at the defaults
+// takes some 10^4 to 10^5 of each (a verified scene at rtol 1e-11 with four support movements, 1.2 10^6
+// right-hand sides by single shooting, 5.3 10^5 by multiple shooting); the budgets are a few seconds'
+// work. A solve that finds its budget spent stops with not_converged, and the row's message says which
+// budget ran out.
+constexpr std::int64_t kQuadratureWork = 10'000'000;
+constexpr std::int64_t kCvodeWork = 2'000'000;
+struct NoTensionWork {
+  std::int64_t quadrature = kQuadratureWork, cvode = kCvodeWork;
+  std::string ran_out;  // the message of the first solve that spent its budget
+};
+
 // One no-tension solver: Newton shooting (segments 1: single, else multiple) or its quadrature form.
 struct NoTensionTry {
   Method method = Method::quadrature;
   int segments = 0;
   double rtol_factor = 1;  // on the rtol handed to the solver
+  NoTensionWork* work = nullptr;  // the scene's budget, drawn on by every solve (none: unbounded)
 };
 
 // One no-tension solve, raw (no verification), from a neighbouring solution's springing state, else from
@@ -367,8 +396,20 @@ Solution no_tension_once(const Scene& scene, const Options& options, const NoTen
     const Solution lin = solve(elastic, linear);
     if (lin.field) guesses.push_back(lin.springing_state);
   }
-  return how.method == Method::quadrature ? solve_no_tension_quadrature(model, options, guesses)
-                                          : solve_no_tension(model, options, how.segments, guesses);
+  if (!how.work)
+    return how.method == Method::quadrature ? solve_no_tension_quadrature(model, options, guesses)
+                                            : solve_no_tension(model, options, how.segments, guesses);
+  std::int64_t& left = how.method == Method::quadrature ? how.work->quadrature : how.work->cvode;
+  const std::int64_t budget = std::max<std::int64_t>(left, 0);
+  Solution sol = how.method == Method::quadrature ? solve_no_tension_quadrature(model, options, guesses, budget)
+                                                  : solve_no_tension(model, options, how.segments, guesses, budget);
+  left -= sol.diagnostics.rhs_evaluations;
+  if (left <= 0 && sol.status == Status::not_converged) {
+    const std::int64_t whole = how.method == Method::quadrature ? kQuadratureWork : kCvodeWork;
+    sol.message = work_budget_message(whole, how.method, true);
+    if (how.work->ran_out.empty()) how.work->ran_out = fmt::format("{} in {}", sol.message, to_string(how.method));
+  }
+  return sol;
 }
 
 // The no-tension scene `to`, traced from the solved scene of `start` (on_one_path) in steps of the
@@ -415,7 +456,9 @@ Solution reach(const Scene& scene, const Options& raw, const NoTensionTry& how, 
   Scene still = scene;
   still.left.spread = still.left.settlement = still.left.rotation = 0;
   still.right.spread = still.right.settlement = still.right.rotation = 0;
-  starts.push_back(still);
+  // Without movements `still` is the scene itself, whose solve has just failed: not solved again.
+  auto moves = [](const Support& a) { return a.spread != 0 || a.settlement != 0 || a.rotation != 0; };
+  if (moves(scene.left) || moves(scene.right)) starts.push_back(still);
   if (!scene.loads.empty() && scene.material.density > 0) {
     Scene unloaded = still;
     for (PointLoad& p : unloaded.loads.points) p.force = 0;
@@ -449,7 +492,10 @@ Solution verify_no_tension(const Scene& scene, const Options& options, const Opt
   double floor = coarse.diagnostics.error_estimate;
   Solution sol = coarse;
   sol.diagnostics.error_estimate = std::numeric_limits<double>::quiet_NaN();
-  if (!options.verify) return sol;
+  if (!options.verify) {
+    sol.message = kNotVerified;
+    return sol;
+  }
   const bool quadrature = how.method == Method::quadrature;
   if (!(quadrature ? raw.rtol / 16 >= 1e-14 : verifiable(raw) && room_below(verifying_options(raw)) >= 16)) {
     if (floor > options.rtol) sol.diagnostics.error_estimate = floor;
@@ -542,14 +588,20 @@ Solution solve_no_tension_scene(const Scene& scene, const Options& options, cons
   Solution best;
   int iterations = 0;
   Diagnostics spent;
-  for (const NoTensionTry& how : tries) {
+  // auto always verifies (Options::verify): with it off, every try's answer would be unverified and the
+  // search would run through every method.
+  Options asked = options;
+  if (options.method == Method::automatic) asked.verify = true;
+  NoTensionWork work;
+  for (NoTensionTry how : tries) {
+    how.work = &work;
     Options raw = options;
     raw.verify = false;
     raw.rtol = std::max(options.rtol * how.rtol_factor, 1e-14);
     Solution coarse = reach(scene, raw, how, continues ? previous : nullptr, iterations);
     add_work(spent, coarse.diagnostics);
     Solution sol = coarse.status == Status::success
-                       ? verify_no_tension(scene, options, raw, how, coarse, iterations, spent)
+                       ? verify_no_tension(scene, asked, raw, how, coarse, iterations, spent)
                        : coarse;
     set_work(sol.diagnostics, spent);
     judge_solution(sol, options.rtol);
@@ -561,6 +613,9 @@ Solution solve_no_tension_scene(const Scene& scene, const Options& options, cons
     if (best.ok() || at_floor || best.status == Status::inadmissible) break;
   }
   best.diagnostics.newton_iterations = iterations;
+  // A search cut short by a budget says so, whichever try's answer is kept.
+  if (!best.ok() && !work.ran_out.empty() && best.message.find("work budget") == std::string::npos)
+    best.message += (best.message.empty() ? "" : "; then ") + work.ran_out;
   return best;
 }
 

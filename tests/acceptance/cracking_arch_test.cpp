@@ -7,8 +7,10 @@
 
 #include <cmath>
 #include <cstddef>
+#include <string>
 #include <vector>
 
+#include "ogive/geometry/curve_families.hpp"
 #include "ogive/limit/limit.hpp"
 #include "ogive/solve/solve.hpp"
 #include "support/scenes.hpp"
@@ -178,6 +180,64 @@ TEST_CASE("no-tension: a sweep of loads continues from the previous load's solut
           along.diagnostics.error_estimate + fresh.diagnostics.error_estimate);
     previous = along;
   }
+}
+
+}  // namespace ogive
+
+namespace ogive {
+
+// Scenes that Newton cannot solve at the defaults, each of which took minutes or never ended: a row
+// each, within the work budgets (solve.hpp), whose message names what ran out; no success that a second
+// method does not confirm.
+void check_budget_row(const Scene& s) {
+  const Solution sol = solve(s, Options{});
+  CAPTURE(sol.message);
+  CHECK(sol.status == Status::not_converged);
+  CHECK(sol.message.find("work budget") != std::string::npos);
+}
+
+TEST_CASE("no-tension: scenes Newton cannot solve end in a not_converged row that names the budget: a filled elliptical arch") {
+  Scene fill = no_tension(0.0, 0.07448);  // ogive thrust --curve elliptical --rise-ratio 0.4865 ...
+  fill.curve = make_elliptical(10.0, 0.4865);
+  fill.loads.points.push_back({7820, 0.02659});
+  fill.loads.fills.push_back({1423, 0.4091});
+  fill.left.kind = fill.right.kind = SupportKind::pinned;
+  check_budget_row(fill);
+}
+
+TEST_CASE("no-tension: scenes Newton cannot solve end in a not_converged row that names the budget: thick semicircles spread") {
+  check_budget_row(no_tension(0.0, 0.6, 1e-4));
+  check_budget_row(no_tension(0.0, 0.999, 1e-4));
+}
+
+TEST_CASE("no-tension: Newton shooting at rtol 1.04e-11 with four support movements answers, and never says success unconfirmed") {
+  Scene s = no_tension(0.0, 0.08);
+  s.left.spread = 3e-3 * 10.0;
+  s.right.spread = 1e-3 * 10.0;
+  s.left.settlement = 2e-3 * 10.0;
+  s.right.rotation = 2e-3;
+  const Solution sol = solve(s, shooting(Method::shooting, 1.04e-11));
+  CAPTURE(sol.message);
+  CHECK(sol.status != Status::not_applicable);
+  if (sol.ok()) {
+    // Confirmed by the quadrature form, an independent method, within both estimates.
+    const Solution other = solve(s, shooting(Method::quadrature, 1e-9));
+    REQUIRE(other.ok());
+    CHECK(reaction_difference(sol.reactions, other.reactions, s.thickness) <=
+          sol.diagnostics.error_estimate + other.diagnostics.error_estimate);
+  }
+}
+
+TEST_CASE("no-tension: auto verifies with verification off, as it does on, and stops at the first method that succeeds") {
+  Options raw;
+  raw.verify = false;
+  const Scene s = no_tension(0.0, 0.08, 1e-4);
+  const Solution off = solve(s, raw), on = solve(s, Options{});
+  CAPTURE(off.message);
+  REQUIRE(off.ok());
+  CHECK(off.method == Method::quadrature);
+  CHECK(off.H_over_V == on.H_over_V);
+  CHECK(off.diagnostics.newton_iterations == on.diagnostics.newton_iterations);
 }
 
 }  // namespace ogive

@@ -3,7 +3,12 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <fstream>
+#include <numbers>
+#include <string>
+#include <utility>
 #include <vector>
+
 
 #include "ogive/geometry/curve_families.hpp"
 #include "ogive/solve/solve.hpp"
@@ -107,4 +112,75 @@ TEST_CASE("curve solves: points sampled from the parabola reproduce its H/V and 
   const double file = run(read_points_curve(OGIVE_DATA_DIR "/curves/parabola-40.csv"), 0.08,
                           Method::multiple_shooting, 1e-11).H_over_V;
   CHECK(relative_difference(file, parabola) <= 1e-4);
+}
+
+namespace {
+
+// The process's peak resident memory (VmHWM, MB) since reset_peak() (Linux: writing 5 to
+// /proc/self/clear_refs resets it to the resident memory of the moment).
+void reset_peak() { std::ofstream("/proc/self/clear_refs") << "5"; }
+double peak_mb() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1e3;  // kB
+  return 0;
+}
+double resident_mb() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmRSS:", 0) == 0) return std::stod(line.substr(6)) / 1e3;  // kB
+  return 0;
+}
+
+}  // namespace
+
+// Half an elliptical arch sampled at n points (100 000 is the most a points file may hold).
+Scene survey(int n) {
+  std::vector<std::pair<double, double>> xy;
+  for (int i = 0; i < n; ++i) {
+    const double t = std::numbers::pi / 2 * i / (n - 1);
+    xy.emplace_back(5 * (1 - std::cos(t)), 4 * std::sin(t));
+  }
+  Scene s;
+  s.curve = make_points_curve(xy);
+  s.thickness = 0.8;
+  return s;
+}
+
+// The growth of the process's peak resident memory over one solve (MB), what the survey costs: the
+// solve's numbers are kept, not its field (the command line writes a row and drops it).
+double solve_growth(const Scene& s, const Options& o, Solution& kept) {
+  reset_peak();
+  const double before = resident_mb();
+  {
+    const Solution sol = solve(s, o);
+    kept.status = sol.status;
+    kept.H_over_V = sol.H_over_V;
+    kept.diagnostics.error_estimate = sol.diagnostics.error_estimate;
+  }
+  return peak_mb() - before;
+}
+
+TEST_CASE("a survey of 100 000 points is solved with its profile within 200 MB (it took 0.9 GB)") {
+  Options profile;
+  profile.stations = 129;
+  Solution sol;
+  CHECK(solve_growth(survey(100000), profile, sol) <= 200);
+  CHECK(sol.status == Status::success);
+}
+
+TEST_CASE("a survey of 20 000 points over the whole arch is solved within 100 MB (it took 275 MB; 1.3 GB at 100 000)") {
+  // Multiple shooting over 40 000 segments, the whole arch cut at every point: in runs of 4096, whose
+  // CVODE vectors are a fixed part of it (100 000 points: 183 MB).
+  Options whole;
+  whole.whole_arch = true;
+  Solution over_whole, over_half;
+  const Scene s = survey(20000);
+  CHECK(solve_growth(s, whole, over_whole) <= 100);
+  CHECK(over_whole.status == Status::success);
+  solve_growth(s, Options{}, over_half);
+  CHECK(thrust_error(over_whole.H_over_V, over_half.H_over_V) <=
+        over_whole.diagnostics.error_estimate + over_half.diagnostics.error_estimate);
 }

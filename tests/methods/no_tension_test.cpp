@@ -7,11 +7,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "methods/damped_newton.hpp"
 #include "methods/no_tension.hpp"
 #include "ogive/model/section.hpp"
 #include "ogive/solve/solve.hpp"
@@ -269,6 +271,48 @@ TEST_CASE("no-tension: an rtol below what double precision supports is the best 
   const Solution met = solve(s, o);
   CHECK(met.ok());
   CHECK(reaction_difference(sol.reactions, met.reactions, s.thickness) <= supported);
+}
+
+}  // namespace ogive
+
+namespace ogive {
+
+TEST_CASE("no-tension: a solve stops at its work budget, with not_converged naming it, after the same work every time") {
+  // The thick semicircle spread by 1e-4 L: Newton does not converge from its first guess (its hinges
+  // open to a sliver of t), so a small budget runs out. It runs out at a count, not a time: the same
+  // work and iterations on every run.
+  const auto model = std::make_shared<const ArchModel>(no_tension(0.0, 0.6, 1e-4), false);
+  const Options o = shooting();
+  for (const Method m : {Method::shooting, Method::quadrature}) {
+    CAPTURE(std::string(to_string(m)));
+    constexpr std::int64_t kBudget = 30000;
+    auto run = [&] {
+      return m == Method::shooting ? solve_no_tension(model, o, 1, {}, kBudget)
+                                   : solve_no_tension_quadrature(model, o, {}, kBudget);
+    };
+    const Solution a = run(), b = run();
+    CHECK(a.status == Status::not_converged);
+    CHECK(a.message == work_budget_message(kBudget, m));
+    CHECK_FALSE(a.field);
+    // Beyond the budget only the evaluation under way: CVODE's few retries of a refused right-hand
+    // side, or the quadrature's nodes at the trial (15 a panel) and the two halves it was splitting.
+    const std::int64_t under_way = m == Method::shooting ? 100 : 15 * (a.diagnostics.segments + 2);
+    CHECK(a.diagnostics.rhs_evaluations <= kBudget + under_way);
+    CHECK(a.diagnostics.rhs_evaluations == b.diagnostics.rhs_evaluations);
+    CHECK(a.diagnostics.newton_iterations == b.diagnostics.newton_iterations);
+  }
+}
+
+TEST_CASE("no-tension: Newton shooting gives up a trial that creeps toward a face instead of integrating it to CVODE's step limit") {
+  // The same scene's single-shooting Newton, unbounded: its trials beyond the admissible states used to
+  // run to CVODE's 200 000 steps each (some 400 000 right-hand sides, seconds), while the accepted
+  // evaluations take a few hundred; 30 iterations spent some 10^7. Now such a trial stops at 4 times the
+  // costliest accepted evaluation (at least 5 000 right-hand sides).
+  const auto model = std::make_shared<const ArchModel>(no_tension(0.0, 0.6, 1e-4), false);
+  const Solution sol = solve_no_tension(model, shooting(), 1);
+  CAPTURE(sol.message);
+  CHECK(sol.diagnostics.newton_iterations <= kMaxNewtonIterations);
+  CHECK(sol.diagnostics.rhs_evaluations <= 1'000'000);
 }
 
 }  // namespace ogive

@@ -240,3 +240,17 @@ TEST_CASE("shooting: a CVODE failure is a status naming the flag and where - nev
   CHECK(sol.profile.empty());
   CHECK_THROWS_AS(sol.at(1.0), std::logic_error);
 }
+
+TEST_CASE("shooting: more segments than one Adams run holds are integrated in runs, verified as one run is") {
+  // 10 000 segments: three runs of at most 4096 segments each (a survey of 10^5 points would otherwise
+  // hold every segment in each of CVODE's vectors). The verified answer meets rtol against the closed form.
+  const Scene s = paper_scene(0.5, 0.08, 1e-4);
+  Options o;
+  o.method = Method::multiple_shooting;
+  o.segments = 10000;
+  const Solution sol = solve(s, o), exact = closed_form(s);
+  REQUIRE(sol.ok());
+  CHECK(sol.diagnostics.segments >= 10000);
+  CHECK(reaction_difference(sol.reactions, exact.reactions, s.thickness) <= o.rtol);
+  CHECK(thrust_error(sol.H_over_V, exact.H_over_V) <= o.rtol);
+}

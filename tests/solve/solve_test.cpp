@@ -8,6 +8,7 @@
 #include <limits>
 #include <memory>
 #include <stdexcept>
+#include <string>
 
 #include "ogive/geometry/curve_families.hpp"
 #include "ogive/solve/solve.hpp"
@@ -129,3 +130,27 @@ TEST_CASE("solution_difference: a profile difference that is not a number is kep
   CHECK(std::isnan(solution_difference(holed, exact)));
   CHECK(std::isnan(solution_difference(exact, holed)));
 }
+
+namespace ogive {
+
+TEST_CASE("unverified rows say why in the user's words") {
+  // A fill whose level lies below the extrados everywhere and no self-weight: nothing loads the ring,
+  // every reaction is 0, and the relative difference of the verifying solves has no scale.
+  Scene s = paper_scene(0.0);
+  s.material.density = 0;
+  s.loads.fills.push_back({1800, 0.01});
+  const Solution unloaded = solve(s, Options{});
+  CAPTURE(unloaded.message);
+  CHECK(unloaded.status == Status::unverified);
+  CHECK(unloaded.H == 0);
+  CHECK(unloaded.message.find("no load reaches the ring") != std::string::npos);
+  // A raw CVODE solve: verification was turned off, which the message names as the command line does.
+  Options raw;
+  raw.method = Method::shooting;
+  raw.verify = false;
+  const Solution sol = solve(paper_scene(0.0), raw);
+  CHECK(sol.status == Status::unverified);
+  CHECK(sol.message == "not verified (--no-verify): no error estimate");
+}
+
+}  // namespace ogive

@@ -236,6 +236,9 @@ double reaction_and_thrust_difference(const Reactions& a, const Reactions& refer
 // when either has no field, or when any of these differences is NaN (a station without numbers: never
 // dropped).
 double solution_difference(const Solution& a, const Solution& b);
+// The same for two solved solutions from their reactions and profiles alone (a's field may have been
+// dropped once its profile was sampled, to free its memory).
+double sampled_solution_difference(const Solution& a, const Solution& b);
 
 // The error measure of a profile against a reference at the same stations: the largest difference of
 // the displacement (Ux, Uy) relative to the largest |U| of the reference, of psi relative to the
