@@ -32,5 +32,17 @@ done
 first=$(grep -o '<section id="[a-z]*"' "$out/dom.html" | head -1)
 [[ $first == '<section id="verdict"' ]] || { echo "check_report: the first section is $first, not the verdict"; status=1; }
 grep -qE '<p class="word">(PASS|FAIL|NOT ASSESSED)</p>' "$out/dom.html" || { echo "check_report: no verdict in words"; status=1; }
-[[ $status -eq 0 ]] && echo "check_report: rendered $out/report.png and $out/report.pdf; H = $shown shown"
+# An arch that fails: the 12 m segmental bridge arch, 0.3 m ring, 100 kN/m at 3 m. The rendered page's
+# first words after its title are the verdict FAIL, governed by the load factor, as ogive assess says.
+"$build/ogive" report --curve segmental --span 12 --rise 3 --thickness 0.3 --fill-density 2000 --fill-height 3.8 \
+  --point-load 100kN --point-load-x 3 --output "$out/bridge.html" >/dev/null
+"$browser" "${flags[@]}" --dump-dom "file://$out/bridge.html" >"$out/bridge-dom.html" 2>"$out/bridge-dom.log"
+verdict=$("$build/ogive" assess --curve segmental --span 12 --rise 3 --thickness 0.3 --fill-density 2000 \
+  --fill-height 3.8 --point-load 100kN --point-load-x 3 --columns verdict,governing | tail -1)
+[[ $verdict == "1,fail,load_factor" ]] || { echo "check_report: assess says '$verdict' of the bridge"; status=1; }
+grep -q '<section id="verdict" class="fail"><h2>Verdict</h2>' "$out/bridge-dom.html" &&
+  grep -q '<p class="word">FAIL</p>' "$out/bridge-dom.html" &&
+  grep -q 'Governed by the collapse load factor' "$out/bridge-dom.html" ||
+  { echo "check_report: the bridge's rendered page does not open with FAIL governed by the load factor"; status=1; }
+[[ $status -eq 0 ]] && echo "check_report: rendered $out/report.png and $out/report.pdf; H = $shown shown; the bridge's page opens with FAIL"
 exit $status

@@ -171,7 +171,7 @@ TEST_CASE("a survey of 100 000 points is solved with its profile within 200 MB (
   CHECK(sol.status == Status::success);
 }
 
-TEST_CASE("a survey of 20 000 points over the whole arch is solved within 100 MB (it took 275 MB; 1.3 GB at 100 000)") {
+TEST_CASE("a survey of 20 000 points over the whole arch is solved within 100 MB (it took 275 MB, 1.3 GB at 100 000)") {
   // Multiple shooting over 40 000 segments, the whole arch cut at every point: in runs of 4096, whose
   // CVODE vectors are a fixed part of it (100 000 points: 183 MB).
   Options whole;
