@@ -201,8 +201,11 @@ TEST_CASE("metres: a length in metres and its ratio make the same scene, bit for
   };
   const auto ratio = [](std::int64_t r) { return fmt::format("0.{:03d}", r); };
   int pairs = 0;
-  for (const auto& [span, l] : spans)
+  for (const auto& each_span : spans)
     for (std::int64_t r : thousandths) {
+      // Named copies: CAPTURE's lambda cannot capture a structured binding (C++20 before P1091 in clang).
+      const auto& span = each_span.first;
+      const auto& l = each_span.second;
       CAPTURE(span);
       CAPTURE(r);
       const std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>> cases = {
@@ -214,7 +217,9 @@ TEST_CASE("metres: a length in metres and its ratio make the same scene, bit for
           {{"--live-load", "5e3", "--live-load-from-x", metres(r, l), "--live-load-to-x", metres(r + 500, l)},
            {"--live-load", "5e3", "--live-load-from", ratio(r), "--live-load-to", ratio(r + 500)}},
       };
-      for (const auto& [metre, over_span] : cases) {
+      for (const auto& each_case : cases) {
+        const auto& metre = each_case.first;
+        const auto& over_span = each_case.second;
         std::vector<std::string> a = {"thrust", "--span", span, "--all-columns"}, b = a;
         a.insert(a.end(), metre.begin(), metre.end());
         b.insert(b.end(), over_span.begin(), over_span.end());
