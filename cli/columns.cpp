@@ -80,6 +80,8 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"max_thrust_eccentricity_at", "m", "arc length from the left springing where it occurs"},
     {"thrust_in_kern", "", "true: compression everywhere and |thrust_eccentricity| <= 100 % (no tension in the section)"},
     {"thrust_in_section", "", "true: compression everywhere and |thrust_eccentricity| <= 300 % (resultant inside the masonry)"},
+    {"max_compressive_stress", "Pa", "largest compressive_stress along the arch (kPa with --units kN); empty if N is not a compression everywhere or the no-tension section's resultant leaves the section"},
+    {"max_compressive_stress_at", "m", "arc length from the left springing where it occurs"},
     {"steps", "", "CVODE steps, all solves of the row"},
     {"rhs_evaluations", "", "CVODE right-hand-side evaluations"},
     {"segments", "", "shooting segments (arcs for the closed form)"},
@@ -111,6 +113,7 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"thrust_y", "m", "where the resultant crosses the section (line of thrust), vertical"},
     {"compressed_depth", "", "no-tension section: the compressed depth c over t (1 while the resultant is in the kern; 0 at a hinge); empty for the elastic section"},
     {"cracked", "", "no-tension section: true where the resultant lies beyond the kern (the section is cracked); empty for the elastic section"},
+    {"compressive_stress", "Pa", "greatest compressive stress in the section, unit width, positive (kPa with --units kN): |N| / t + 6 |M| / t^2 (elastic section, or in the kern); cracked no-tension section 2 |N| / (3 (t/2 - |M / N|)); empty where N is not a compression or the resultant leaves the no-tension section"},
     {"warning", "", "tension, outside_section (|e| > 300 %), outside_kern (|e| > 100 %), no_normal_force, or empty"},
     {"reference_method", "", "check: what the row is compared with"},
     {"reference_status", "", "check: the reference's own status"},
@@ -199,10 +202,13 @@ double rounded(double value) {
 }
 
 // A force or moment unit (per metre of vault width) and the same in kN: what --units kN divides by 1000.
-std::string_view in_kilonewtons(std::string_view unit) {
+// A result's stress (Pa) prints in kPa, kN/m^2; an input in Pa (Young's modulus) is given in Pa whatever
+// --units says, and prints so.
+std::string_view in_kilonewtons(std::string_view unit, bool result) {
   if (unit == "N/m") return "kN/m";
   if (unit == "N m/m") return "kN m/m";
   if (unit == "N/m^2") return "kN/m^2";
+  if (unit == "Pa" && result) return "kPa";
   return {};
 }
 
@@ -273,7 +279,7 @@ void Columns::select(const ColumnText& ct, const std::vector<std::string>& varyi
     selection_.divisor.assign(all_.size(), 1.0);
     for (std::size_t i = scene_columns().size(); i < all_.size(); ++i) {
       const ColumnDoc* d = find_column_doc(all_[i]);
-      if (d && !in_kilonewtons(d->unit).empty()) selection_.divisor[i] = force_unit(ct.units);
+      if (d && !in_kilonewtons(d->unit, true).empty()) selection_.divisor[i] = force_unit(ct.units);
     }
   }
   std::vector<bool>& keep = selection_.keep;
@@ -317,9 +323,17 @@ bool Columns::selected(std::string_view name) const {
 
 std::string Columns::header() const {
   std::vector<std::string_view> kept;
+  bool stresses = false;  // a stress printed in kPa
   for (std::size_t i = 0; i < all_.size(); ++i)
-    if (selection_.keep[i]) kept.push_back(all_[i]);
-  std::string out = !selection_.divisor.empty() ? "# units: kN (forces in kN/m and moments in kN m/m per metre of vault width)\n" : "";
+    if (selection_.keep[i]) {
+      kept.push_back(all_[i]);
+      const ColumnDoc* d = find_column_doc(all_[i]);
+      stresses = stresses || (i >= scene_columns().size() && d && d->unit == "Pa");
+    }
+  std::string out;
+  if (!selection_.divisor.empty())
+    out = fmt::format("# units: kN (forces in kN/m and moments in kN m/m per metre of vault width{})\n",
+                      stresses ? "; stresses in kPa" : "");
   for (std::size_t k = 0; k < kept.size(); ++k) {
     if (k > 0) out += ',';
     out += kept[selection_.order.empty() ? k : selection_.order[k]];
@@ -331,10 +345,12 @@ std::string Columns::help(const ColumnText& ct) const {
   const bool kilonewtons = force_unit(ct.units) != 1.0;
   std::string out = "column,unit,meaning\n";
   CsvRow row;
-  for (const std::string& name : all_) {
+  for (std::size_t i = 0; i < all_.size(); ++i) {
+    const std::string& name = all_[i];
     const ColumnDoc* d = find_column_doc(name);
     const std::string_view unit = d ? d->unit : "";
-    row.add(name).add(kilonewtons && !in_kilonewtons(unit).empty() ? in_kilonewtons(unit) : unit);
+    const std::string_view kilo = in_kilonewtons(unit, i >= scene_columns().size());
+    row.add(name).add(kilonewtons && !kilo.empty() ? kilo : unit);
     row.add(d ? d->meaning : "");
     out += row.take();
   }

@@ -36,7 +36,7 @@ Columns profile_columns() {
   return Columns({"method", "integrator", "rtol", "status", "H_over_V", "error_estimate", "message", "s", "x", "y",
                   "theta", "intrados_x", "intrados_y", "extrados_x", "extrados_y", "Ux", "Uy", "psi", "N",
                   "shear_force", "M", "thrust_eccentricity", "thrust_x", "thrust_y", "compressed_depth", "cracked",
-                  "warning"},
+                  "compressive_stress", "warning"},
                  {"status", "message", "s", "x", "y", "theta", "intrados_x", "intrados_y", "extrados_x", "extrados_y",
                   "Ux", "Uy", "psi", "N", "shear_force", "M", "thrust_eccentricity", "thrust_x", "thrust_y",
                   "compressed_depth", "cracked", "warning"});
@@ -67,6 +67,7 @@ void add_station(CsvRow& row, const ArchState& st, double thickness) {
   add_parameter(row, st.compressed_depth);
   if (std::isnan(st.compressed_depth)) row.add(std::string_view{});
   else row.add_bool(st.cracked);
+  row.add(st.compressive_stress);
   row.add(section_warning(st));
 }
 

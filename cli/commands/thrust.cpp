@@ -32,9 +32,10 @@ Columns thrust_columns() {
   return Columns(
       {"method", "integrator", "rtol", "status", "domain", "H", "V", "H_over_V", "H_left", "V_left", "M_left",
        "H_right", "V_right", "M_right", "max_thrust_eccentricity", "max_thrust_eccentricity_at", "thrust_in_kern",
-       "thrust_in_section", "steps", "rhs_evaluations", "segments", "newton_iterations", "condition_estimate",
+       "thrust_in_section", "max_compressive_stress", "max_compressive_stress_at", "steps", "rhs_evaluations", "segments", "newton_iterations", "condition_estimate",
        "error_estimate", "boundary_residual", "equilibrium_residual", "message", "beam_model", "model_error_estimate"},
-      // The thrust line's summary is asked for by name (or --all-columns): it scans the whole field,
+      // The thrust line's and the stress's summaries are asked for by name (or --all-columns): each scans
+      // the whole field,
       // a few times the cost of the reactions in closed form, which a sweep of 10^6 scenes would feel.
       {"method", "status", "domain", "H", "V", "H_over_V", "H_left", "V_left", "M_left", "H_right", "V_right",
        "M_right", "error_estimate", "message"});
@@ -51,8 +52,9 @@ std::string_view domain_of(const Solution& sol) {
 
 // One scene's row for one solver combination.
 std::string thrust_row(const Columns& columns, const SceneParameters& p, const Scene& scene, const Options& o,
-                       const Solution& sol, bool summary) {
+                       const Solution& sol, bool summary, bool stresses) {
   const ThrustLineSummary line = summary ? summarize_thrust_line(sol) : ThrustLineSummary{};
+  const StressSummary stress = stresses ? summarize_compressive_stress(sol) : StressSummary{};
   CsvRow row(columns.keep());
   add_scene_columns(row, p, scene.curve.get());
   row.add(to_string(sol.method)).add(integrator_of(sol.method, o)).add(o.rtol);
@@ -63,6 +65,7 @@ std::string thrust_row(const Columns& columns, const SceneParameters& p, const S
   row.add(line.max_abs_e).add(line.max_abs_e_at);
   if (line.ok) row.add_bool(line.in_kern).add_bool(line.in_section);
   else row.add(std::string_view{}).add(std::string_view{});
+  row.add(stress.max_compressive_stress).add(stress.max_compressive_stress_at);
   const Diagnostics& d = sol.diagnostics;
   row.add(d.steps).add(d.rhs_evaluations).add(d.segments).add(d.newton_iterations);
   row.add(d.condition_estimate).add(d.error_estimate);
@@ -86,9 +89,10 @@ int run_thrust(ThrustOptions& to, const CLI::App& cmd, std::ostream& out) {
   for (Options& o : sweep.combinations) o.estimate_model_error = columns.selected("model_error_estimate");
   const bool summary = columns.selected("max_thrust_eccentricity") || columns.selected("max_thrust_eccentricity_at") ||
                        columns.selected("thrust_in_kern") || columns.selected("thrust_in_section");
-  // The summary prints eccentricities: their accuracy must be part of the error estimate (the profile
-  // itself is not printed).
-  if (summary)
+  const bool stresses = columns.selected("max_compressive_stress") || columns.selected("max_compressive_stress_at");
+  // The summaries print eccentricities and stresses: their accuracy must be part of the error estimate
+  // (the profile itself is not printed).
+  if (summary || stresses)
     for (Options& o : sweep.combinations) {
       o.stations = kSummaryStations;
       o.unprinted_profile = true;
@@ -105,7 +109,7 @@ int run_thrust(ThrustOptions& to, const CLI::App& cmd, std::ostream& out) {
           const Options& o = sweep.combinations[c];
           const Solution sol = solve(scene, o, continued ? &previous[c] : nullptr);
           if (continued && sol.field) previous[c] = sol;
-          text += thrust_row(columns, p, scene, o, sol, summary);
+          text += thrust_row(columns, p, scene, o, sol, summary, stresses);
           ok = ok && sol.ok();
         }
         emit(text);

@@ -7,11 +7,11 @@ namespace ogive {
 namespace {
 
 // One point of the domain (scaled arc length s): its state, the slope M' N - M N' (scaled), whose sign
-// is that of d(M/N)/ds, and N' (scaled).
+// is that of d(M/N)/ds, N' (scaled), and the compressive stress's slope (scaled; 0 where it has none).
 struct Probe {
   double s = 0;
   ArchState state;
-  double slope = 0, dN = 0;
+  double slope = 0, dN = 0, stress_slope = 0;
 };
 
 // The field's smooth pieces and their probes.
@@ -54,7 +54,8 @@ class Scan {
       model_.derivative(c, sn, y.data(), dy.data(), model_.load(s), model_.horizontal_load(s));
     const double N = c * y[kFx] + sn * y[kFy], V = -sn * y[kFx] + c * y[kFy];
     const double dN = c * dy[kFx] + sn * dy[kFy] + curvature(s * L) * L * V;
-    return {s, std::move(state), dy[kM] * N - y[kM] * dN, dN};
+    const CompressiveStress stress = compressive_stress(model_.scene().section, N, y[kM], model_.scene().thickness / L);
+    return {s, std::move(state), dy[kM] * N - y[kM] * dN, dN, stress.d_N * dN + stress.d_M * dy[kM]};
   }
 
   // 1/m at arc length x (m, inside a piece): a circular arc's own constant, read without evaluating the
@@ -84,15 +85,22 @@ class Scan {
   const ArchModel& model_;
 };
 
-// The largest |e| seen, and whether every normal force seen was a compression.
+// The largest |e| and compressive stress seen, and whether every normal force seen was a compression
+// (and every stress finite).
 struct Largest {
   double e = -1, at = 0;
-  bool compressed = true;
+  double stress = -1, stress_at = 0;
+  bool compressed = true, bounded = true;
   void see(const ArchState& st) {
     if (!(st.N < 0)) compressed = false;
     else if (std::abs(st.e) > e) {
       e = std::abs(st.e);
       at = st.s;
+    }
+    if (!(st.compressive_stress >= 0)) bounded = false;
+    else if (st.compressive_stress > stress) {
+      stress = st.compressive_stress;
+      stress_at = st.s;
     }
   }
 };
@@ -160,35 +168,59 @@ std::vector<ArchState> field_scan(const Solution& sol) {
   return out;
 }
 
-ThrustLineSummary summarize_thrust_line(const Solution& sol) {
-  ThrustLineSummary out;
-  if (!sol.field || !sol.model) return out;
-  out.ok = true;
+namespace {
+
+// The largest values over the field: the bracketing points' probes, then in each interval between
+// neighbours of one piece (a piece's last probe and the next one's first are the two insides apart,
+// across a jump) the zeros of `slope` refined (where it changes sign, or with `falls_only` where it
+// falls through zero: the maxima), and the largest N where N' falls through zero (a normal force that
+// turns tensile between two bracketing points need not change the sign of the slope).
+Largest scan_field(const Solution& sol, double Probe::*slope, bool falls_only) {
   const Scan scan(sol);
   const std::vector<Probe> probes = scan.probes(scan.points());
   Largest largest;
   for (const Probe& p : probes) largest.see(p.state);
-  // A tensile or vanishing normal force anywhere: the eccentricity has no bound, and the line of thrust
-  // is neither in the kern nor in the section.
-  if (!largest.compressed) return out;
+  // A tensile or vanishing normal force anywhere: nothing is bounded.
+  if (!largest.compressed) return largest;
   const double S = sol.model->length();
   const double tol = 1e-9 * (sol.model->half() ? 2 * S : S);
-  // Each interval between neighbours of one piece (a piece's last probe and the next one's first are
-  // the two insides apart, across a jump): the extrema of e where the slope changes sign, and the largest
-  // N where N' falls through zero (a normal force that turns tensile between two bracketing points need
-  // not change the sign of e's slope).
   for (std::size_t i = 0; i + 1 < probes.size(); ++i) {
     const Probe &p = probes[i], &q = probes[i + 1];
     if (q.s - p.s <= 1e-12 * S) continue;
-    if ((p.slope < 0) != (q.slope < 0) && p.slope != 0 && q.slope != 0)
-      refine(scan, p, q, &Probe::slope, tol, largest);
+    const bool changes = falls_only ? p.*slope > 0 && q.*slope < 0
+                                    : (p.*slope < 0) != (q.*slope < 0) && p.*slope != 0 && q.*slope != 0;
+    if (changes) refine(scan, p, q, slope, tol, largest);
     if (p.dN > 0 && q.dN < 0) refine(scan, p, q, &Probe::dN, tol, largest);
   }
-  if (!largest.compressed) return out;  // N reached zero between the bracketing points
+  return largest;
+}
+
+}  // namespace
+
+ThrustLineSummary summarize_thrust_line(const Solution& sol) {
+  ThrustLineSummary out;
+  if (!sol.field || !sol.model) return out;
+  out.ok = true;
+  // The extrema of e where its slope changes sign (maxima of |e| may be minima of e).
+  const Largest largest = scan_field(sol, &Probe::slope, false);
+  if (!largest.compressed) return out;  // N reached zero somewhere: e unbounded
   out.max_abs_e = largest.e;
   out.max_abs_e_at = largest.at;
   out.in_kern = largest.e <= 100;
   out.in_section = largest.e <= 300;
+  return out;
+}
+
+StressSummary summarize_compressive_stress(const Solution& sol) {
+  StressSummary out;
+  if (!sol.field || !sol.model) return out;
+  out.ok = true;
+  // The stress is smooth on each piece but where M = 0 (a kink of |M|: a minimum) and, for the no-tension
+  // section, C1 at the kern's edge: its maxima inside a piece are where its slope falls through zero.
+  const Largest largest = scan_field(sol, &Probe::stress_slope, true);
+  if (!largest.compressed || !largest.bounded) return out;
+  out.max_compressive_stress = largest.stress;
+  out.max_compressive_stress_at = largest.stress_at;
   return out;
 }
 

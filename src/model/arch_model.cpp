@@ -444,6 +444,7 @@ ArchState ArchModel::to_physical(double s, const StateVector& y, bool mirrored) 
     return st;
   }
   st.e = 600.0 * st.M / (st.N * t);
+  st.compressive_stress = compressive_stress(scene_.section, st.N, st.M, t).sigma;
   if (scene_.section == SectionKind::no_tension) {
     const SectionStrain ss = section_strain(SectionKind::no_tension, st.N / scales_.force, st.M / scales_.moment, t / L);
     st.compressed_depth = ss.compressed_depth;

@@ -1,6 +1,7 @@
 #include "ogive/model/section.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace ogive {
 
@@ -38,6 +39,31 @@ SectionStrain section_strain(SectionKind kind, double N, double M, double t) {
   s.eps_M = sigma * (t3 / 18) * dg;
   s.eps_N = (t3 / 18) * (g + e * dg);
   return s;
+}
+
+CompressiveStress compressive_stress(SectionKind kind, double N, double M, double t) {
+  CompressiveStress out;
+  const double P = -N, m = std::abs(M), sign = M > 0 ? 1.0 : M < 0 ? -1.0 : 0.0;
+  if (!(P > 0)) {
+    out.sigma = std::numeric_limits<double>::quiet_NaN();
+    return out;
+  }
+  if (kind == SectionKind::elastic || m <= P * t / 6) {
+    out.sigma = P / t + 6 * m / (t * t);
+    out.d_N = -1 / t;
+    out.d_M = sign * 6 / (t * t);
+    return out;
+  }
+  const double u = t / 2 - m / P;
+  if (!(u > 0)) {
+    out.sigma = std::numeric_limits<double>::quiet_NaN();
+    return out;
+  }
+  // sigma = 2 P / (3 u) with du/dP = m / P^2 and du/dm = -1 / P.
+  out.sigma = 2 * P / (3 * u);
+  out.d_N = -(2 / (3 * u) - 2 * m / (3 * u * u * P));
+  out.d_M = sign * 2 / (3 * u * u);
+  return out;
 }
 
 }  // namespace ogive

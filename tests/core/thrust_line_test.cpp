@@ -12,6 +12,7 @@
 #include "ogive/core/thrust_line.hpp"
 #include "ogive/geometry/curve_families.hpp"
 #include "support/scenes.hpp"
+#include "support/tolerances.hpp"
 
 using namespace ogive;
 
@@ -27,31 +28,37 @@ constexpr double kSummaryAgreement = 1e-10;
 // How far apart the two may place the maximum, relative to the arch's length (measured: at most 6.0e-8,
 // the fill's).
 constexpr double kPlaceAgreement = 1e-6;
+// The same for the largest compressive stress, relative to it (measured: at most 7.5e-13, the summary's
+// the smaller, at an upward point load's one-sided limit; round-off at the interior maxima of the pinned
+// arches and the segmental one, 0 where the maximum is at a springing).
+constexpr double kStressAgreement = 1e-10;
 
 struct Reference {
   double max_abs_e = 0, at = 0;
   bool compressed = true;
 };
 
-Reference dense_reference(const Solution& sol) {
+// The largest value(state) over a dense resampling, refined between the best station's neighbours.
+template <class Value>
+Reference dense_reference(const Solution& sol, Value value) {
   constexpr int kStations = 10001;
   const std::vector<ArchState> profile = sample_stations(sol, kStations, 0, kStations);
   Reference r;
   std::size_t best = 0;
   for (std::size_t k = 0; k < profile.size(); ++k) {
     if (!(profile[k].N < 0)) r.compressed = false;
-    if (std::abs(profile[k].e) > std::abs(profile[best].e)) best = k;
+    if (value(profile[k]) > value(profile[best])) best = k;
   }
-  r.max_abs_e = std::abs(profile[best].e);
+  r.max_abs_e = value(profile[best]);
   r.at = profile[best].s;
   auto abs_e = [&](double s) {
     const ArchState st = sol.at(s);
     if (!(st.N < 0)) r.compressed = false;
-    if (std::abs(st.e) > r.max_abs_e) {
-      r.max_abs_e = std::abs(st.e);
+    if (value(st) > r.max_abs_e) {
+      r.max_abs_e = value(st);
       r.at = st.s;
     }
-    return std::abs(st.e);
+    return value(st);
   };
   double lo = profile[best == 0 ? 0 : best - 1].s, hi = profile[std::min(best + 1, profile.size() - 1)].s;
   const double total = profile.back().s, golden = (std::sqrt(5.0) - 1) / 2;
@@ -142,7 +149,7 @@ TEST_CASE("thrust line: the summary's largest |e| - its place - kern and section
     const Solution sol = solve(c.scene, o);
     REQUIRE(sol.field);
     const ThrustLineSummary line = summarize_thrust_line(sol);
-    const Reference ref = dense_reference(sol);
+    const Reference ref = dense_reference(sol, [](const ArchState& st) { return std::abs(st.e); });
     REQUIRE(line.ok);
     if (!ref.compressed) {
       CHECK(std::isnan(line.max_abs_e));
@@ -162,6 +169,54 @@ TEST_CASE("thrust line: the summary's largest |e| - its place - kern and section
     if (std::abs(ref.max_abs_e - 300) > tolerance) CHECK(line.in_section == (ref.max_abs_e <= 300));
   }
   CHECK(compressed >= 20);
+}
+
+TEST_CASE("thrust line: the largest compressive stress and its place against a dense resampling") {
+  int compressed = 0;
+  for (const Case& c : cases()) {
+    CAPTURE(c.name);
+    Options o;
+    o.method = c.method;
+    const Solution sol = solve(c.scene, o);
+    REQUIRE(sol.field);
+    const StressSummary stress = summarize_compressive_stress(sol);
+    const Reference ref = dense_reference(
+        sol, [](const ArchState& st) { return std::isnan(st.compressive_stress) ? -1.0 : st.compressive_stress; });
+    REQUIRE(stress.ok);
+    if (!ref.compressed) {
+      CHECK(std::isnan(stress.max_compressive_stress));
+      continue;
+    }
+    ++compressed;
+    REQUIRE(std::isfinite(stress.max_compressive_stress));
+    // Both are values of the same field at its maximum (the summary's never above the truth).
+    CHECK(std::abs(stress.max_compressive_stress - ref.max_abs_e) <= kStressAgreement * ref.max_abs_e);
+    const double length = sol.model->half() ? 2 * sol.model->curve().length() : sol.model->curve().length();
+    const double mirrored = length - ref.at;
+    CHECK(std::min(std::abs(stress.max_compressive_stress_at - ref.at),
+                   std::abs(stress.max_compressive_stress_at - mirrored)) <= kPlaceAgreement * length);
+  }
+  CHECK(compressed >= 20);
+}
+
+TEST_CASE("thrust line: the largest compressive stress by hand from N and M at its place") {
+  Scene live = pinned(paper_scene(0.0, 0.08), false);  // an interior maximum
+  live.loads.live.push_back({5000.0, 0.0, 0.5});
+  Scene cracked = paper_scene(0.0, 0.06);  // the no-tension section cracked at the springings
+  cracked.section = SectionKind::no_tension;
+  for (const Scene& scene : {paper_scene(0.0, 0.08), live, cracked}) {
+    const Solution sol = solve(scene, Options{});
+    CAPTURE(sol.message);
+    REQUIRE(sol.ok());
+    const StressSummary stress = summarize_compressive_stress(sol);
+    const ArchState st = sol.at(stress.max_compressive_stress_at);
+    const double t = scene.thickness, P = -st.N, m = std::abs(st.M);
+    REQUIRE(P > 0);
+    const bool beyond_kern = scene.section == SectionKind::no_tension && m > P * t / 6;
+    if (scene.section == SectionKind::no_tension) CHECK(beyond_kern);  // the cracked formula is exercised
+    const double by_hand = beyond_kern ? 2 * P / (3 * (t / 2 - m / P)) : P / t + 6 * m / (t * t);
+    CHECK(close(stress.max_compressive_stress, by_hand, kExact));
+  }
 }
 
 TEST_CASE("thrust line: the closed form's estimate from the field's scan - the same status as from 129 stations") {

@@ -72,3 +72,45 @@ TEST_CASE("no-tension: the section's law is the linear stress block it was deriv
   CHECK_FALSE(section_strain(SectionKind::no_tension, -1, 0.51 * t, t).admissible);
   CHECK_FALSE(section_strain(SectionKind::no_tension, 0.1, 0, t).admissible);
 }
+
+TEST_CASE("compressive stress: the linear and the triangular block's peak, their resultants, continuity, slopes") {
+  const double t = 0.6, P = 2.0e5;  // m, N/m
+  // The elastic linear stress P/t + 6 m/t^2 is the face value of sigma(z) = P/t + 12 m z / t^3.
+  for (double m : {0.0, 0.02 * P * t, P * t / 6, 0.3 * P * t}) {
+    CAPTURE(m);
+    const CompressiveStress s = compressive_stress(SectionKind::elastic, -P, -m, t);
+    CHECK(close(s.sigma, P / t + 12 * m * (t / 2) / (t * t * t), kExact));
+  }
+  // Beyond the kern, the triangular block of depth c and peak sigma: its resultant 0.5 sigma c is P and
+  // acts c/3 from the face, at m / P from the axis.
+  for (double ratio : {0.2, 0.3, 0.45, 0.499}) {
+    CAPTURE(ratio);
+    const double m = ratio * P * t;
+    const CompressiveStress s = compressive_stress(SectionKind::no_tension, -P, m, t);
+    const double c = 2 * P / s.sigma;  // from the resultant
+    CHECK(close(P * (t / 2 - c / 3), m, kExact));
+  }
+  // The two laws meet at the kern's edge with the same value and slopes.
+  const double edge = P * t / 6;
+  const CompressiveStress in = compressive_stress(SectionKind::no_tension, -P, edge, t);
+  const CompressiveStress out = compressive_stress(SectionKind::no_tension, -P, edge * (1 + 1e-12), t);
+  CHECK(close(in.sigma, out.sigma, 1e-11));
+  CHECK(close(in.d_N, out.d_N, 1e-9));
+  CHECK(close(in.d_M, out.d_M, 1e-9));
+  // The slopes against central differences (step 1e-6 relative: the difference's error ~1e-10).
+  for (SectionKind kind : {SectionKind::elastic, SectionKind::no_tension})
+    for (double ratio : {0.1, -0.3, 0.4}) {
+      CAPTURE(ratio);
+      const double N = -P, M = ratio * P * t, hN = 1e-6 * P, hM = 1e-6 * P * t;
+      const CompressiveStress s = compressive_stress(kind, N, M, t);
+      const double dN = (compressive_stress(kind, N + hN, M, t).sigma - compressive_stress(kind, N - hN, M, t).sigma) / (2 * hN);
+      const double dM = (compressive_stress(kind, N, M + hM, t).sigma - compressive_stress(kind, N, M - hM, t).sigma) / (2 * hM);
+      CHECK(close(s.d_N, dN, 1e-7));
+      CHECK(close(s.d_M, dM, 1e-7));
+    }
+  // No compression, or the no-tension resultant on or beyond a face: no stress.
+  CHECK(std::isnan(compressive_stress(SectionKind::elastic, 0.0, 1.0, t).sigma));
+  CHECK(std::isnan(compressive_stress(SectionKind::elastic, P, 0.0, t).sigma));
+  CHECK(std::isnan(compressive_stress(SectionKind::no_tension, -P, P * t / 2, t).sigma));
+  CHECK(std::isfinite(compressive_stress(SectionKind::elastic, -P, P * t, t).sigma));
+}

@@ -33,6 +33,19 @@ struct ThrustLineSummary {
 // above the truth. Over a half model the left half is summarised (the right is its mirror image).
 ThrustLineSummary summarize_thrust_line(const Solution& solution);
 
+// The greatest compressive stress along the arch (ArchState::compressive_stress: the elastic section's
+// linear stress, the no-tension section's triangular block where it is cracked), found as the largest |e|
+// is: on each smooth piece, at its ends and where the stress's slope (from the model's equations) falls
+// through zero, bracketed and refined to 1e-9 of the arch's length. Every value compared is a true stress
+// of the field, so the printed maximum is never above the truth. NaN where the normal force is not a
+// compression everywhere, or the no-tension section's resultant leaves the section.
+struct StressSummary {
+  double max_compressive_stress = std::numeric_limits<double>::quiet_NaN();     // Pa
+  double max_compressive_stress_at = std::numeric_limits<double>::quiet_NaN();  // m, arc length
+  bool ok = false;  // false when the solution has no field to summarise
+};
+StressSummary summarize_compressive_stress(const Solution& solution);
+
 // The states at the scan's bracketing points (the pieces' ends and the points between): a few dozen
 // states that show the field's size (its largest force and couple) without sampling it densely.
 std::vector<ArchState> field_scan(const Solution& solution);

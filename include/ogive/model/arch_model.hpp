@@ -95,6 +95,10 @@ struct ArchState {
   // section is cracked (the resultant beyond the kern); NaN and false for the elastic section.
   double compressed_depth = std::numeric_limits<double>::quiet_NaN();
   bool cracked = false;
+  // Pa, the greatest compressive stress in the section (unit width), positive in compression
+  // (section.hpp, compressive_stress); NaN where N is not a compression or the no-tension section's
+  // resultant lies outside the section.
+  double compressive_stress = std::numeric_limits<double>::quiet_NaN();
 };
 
 class ArchModel {

@@ -38,4 +38,18 @@ struct SectionStrain {
 // its domain, admissible is false and the other fields are meaningless.
 SectionStrain section_strain(SectionKind kind, double N, double M, double t);
 
+// The greatest compressive stress in a section of depth t and unit width, positive in compression, and
+// its derivatives with respect to N and M. With P = -N > 0 and m = |M|: the elastic section's linear
+// stress, sigma = P / t + 6 m / t^2 (either section while the resultant is in the kern, m <= P t / 6);
+// the no-tension section beyond the kern, the triangular block over the compressed depth c = 3 u,
+// u = t/2 - m / P: sigma = 2 P / (3 u). The two meet with a continuous first derivative at the kern's
+// edge. sigma is NaN (and the derivatives 0) where N is not a compression, or where the no-tension
+// section's resultant lies on or beyond a face (u <= 0: no finite stress carries it). Any consistent
+// units (SI: N/m, N m/m and m give Pa; the model's scaled ones give scaled stresses).
+struct CompressiveStress {
+  double sigma = 0;
+  double d_N = 0, d_M = 0;  // d sigma / dN, d sigma / dM
+};
+CompressiveStress compressive_stress(SectionKind kind, double N, double M, double t);
+
 }  // namespace ogive
