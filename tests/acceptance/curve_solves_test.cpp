@@ -116,6 +116,20 @@ TEST_CASE("curve solves: points sampled from the parabola reproduce its H/V and 
 
 namespace {
 
+// Under AddressSanitizer the resident memory holds its shadow and its quarantine of freed blocks: no
+// measure of what a solve keeps. The memory bounds are asserted in the ordinary build only.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kMemoryMeasurable = false;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kMemoryMeasurable = false;
+#else
+constexpr bool kMemoryMeasurable = true;
+#endif
+#else
+constexpr bool kMemoryMeasurable = true;
+#endif
+
 // The process's peak resident memory (VmHWM, MB) since reset_peak() (Linux: writing 5 to
 // /proc/self/clear_refs resets it to the resident memory of the moment).
 void reset_peak() { std::ofstream("/proc/self/clear_refs") << "5"; }
@@ -167,7 +181,8 @@ TEST_CASE("a survey of 100 000 points is solved with its profile within 200 MB (
   Options profile;
   profile.stations = 129;
   Solution sol;
-  CHECK(solve_growth(survey(100000), profile, sol) <= 200);
+  const double growth = solve_growth(survey(100000), profile, sol);
+  if (kMemoryMeasurable) CHECK(growth <= 200);
   CHECK(sol.status == Status::success);
 }
 
@@ -178,7 +193,8 @@ TEST_CASE("a survey of 20 000 points over the whole arch is solved within 100 MB
   whole.whole_arch = true;
   Solution over_whole, over_half;
   const Scene s = survey(20000);
-  CHECK(solve_growth(s, whole, over_whole) <= 100);
+  const double growth = solve_growth(s, whole, over_whole);
+  if (kMemoryMeasurable) CHECK(growth <= 100);
   CHECK(over_whole.status == Status::success);
   solve_growth(s, Options{}, over_half);
   CHECK(thrust_error(over_whole.H_over_V, over_half.H_over_V) <=
