@@ -34,7 +34,7 @@ double crown_offset(const std::string& text) {
   }
   throw UsageError(fmt::format("--fill-height: crown, or crown+D for D m above the extrados' crown (e.g. crown+0.5), "
                                "got '{}'",
-                               text.substr(0, 40)));
+                               shown(text)));
 }
 
 const std::map<std::string, SupportKind> kSupportKinds = {{"clamped", SupportKind::clamped},

@@ -78,7 +78,7 @@ std::string resolved(std::string_view value, std::string_view option, const Dime
   std::string_view number = value.substr(0, at), unit = value.substr(at);
   while (!unit.empty() && unit.front() == ' ') unit.remove_prefix(1);
   if (unit.empty() || number.empty()) return std::string(value);  // a bare number, or a word (crown, none)
-  if (!d) throw UsageError(fmt::format("{}: takes no unit (a ratio or a count), got '{}'", option, value.substr(0, 40)));
+  if (!d) throw UsageError(fmt::format("{}: takes no unit (a ratio or a count), got '{}'", option, shown(value)));
   for (const Unit& u : d->units) {
     if (unit != u.name) continue;
     int shift = u.exponent - (d->force ? force_exponent : 0);
@@ -94,7 +94,7 @@ std::string resolved(std::string_view value, std::string_view option, const Dime
     const int own = std::stoi(std::string(digits));
     return fmt::format("{}e{}", number.substr(0, e), (negative ? -own : own) + shift);
   }
-  throw UsageError(fmt::format("{}: '{}' is not a unit of {} (takes {}; a bare number is in {})", option, unit,
+  throw UsageError(fmt::format("{}: '{}' is not a unit of {} (takes {}; a bare number is in {})", option, shown(unit),
                                d->what, unit_list(*d), d->force ? "--units" : d->units.front().name));
 }
 
@@ -110,7 +110,7 @@ std::string with_units_resolved(std::string_view text, std::string_view option, 
     const std::size_t end = text.find_first_of(range ? ":" : ",", start);
     const std::string_view value = text.substr(start, end == std::string_view::npos ? end : end - start);
     if (range && part == 2 && unit_start(value) != value.size())
-      throw UsageError(fmt::format("{}: a range's count takes no unit, got '{}'", option, value.substr(0, 40)));
+      throw UsageError(fmt::format("{}: a range's count takes no unit, got '{}'", option, shown(value)));
     out += range && part == 2 ? std::string(value) : resolved(value, option, d, force_exponent);
     if (end == std::string_view::npos) break;
     out += text[end];

@@ -19,13 +19,6 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
-// Printable form of user text for a message: control bytes become '?', long text is cut.
-std::string shown(std::string_view s) {
-  std::string out;
-  for (char ch : s.substr(0, 60)) out += (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) ? '?' : ch;
-  if (s.size() > 60) out += "...";
-  return out;
-}
 
 // 128-bit integers (a GCC and Clang extension) hold a range's decimal arithmetic exactly: 18 digits
 // times a million points.
@@ -310,6 +303,13 @@ std::vector<double> parse_values(std::string_view text, std::string_view option)
     if (comma == std::string_view::npos) break;
     pos = comma + 1;
   }
+  return out;
+}
+
+std::string shown(std::string_view s) {
+  std::string out;
+  for (char ch : s.substr(0, 60)) out += (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) ? '?' : ch;
+  if (s.size() > 60) out += "...";
   return out;
 }
 

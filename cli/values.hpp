@@ -21,6 +21,9 @@ inline constexpr std::size_t kMaxValues = 1'000'000;
 // Every value must be finite; `option` (e.g. "--span") names the option in messages.
 std::vector<double> parse_values(std::string_view text, std::string_view option);
 
+// Printable form of user text for a message (one line): control bytes become '?', text past 60 bytes is cut.
+std::string shown(std::string_view s);
+
 // One finite number, the whole text; nullopt-like failure throws UsageError.
 double parse_number(std::string_view text, std::string_view option);
 

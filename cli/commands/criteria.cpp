@@ -20,7 +20,7 @@ const std::map<std::string, ThrustRequirement> kThrustRequirements = {
 double required_value(const std::string& text, const char* flag) {
   if (text == "none") return std::numeric_limits<double>::quiet_NaN();
   const double v = parse_number(text, flag);
-  if (!(v > 0)) throw UsageError(fmt::format("{}: must be > 0, or none (not required), got '{}'", flag, text));
+  if (!(v > 0)) throw UsageError(fmt::format("{}: must be > 0, or none (not required), got '{}'", flag, shown(text)));
   return v;
 }
 
