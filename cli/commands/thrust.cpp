@@ -41,9 +41,6 @@ Columns thrust_columns() {
        "M_right", "error_estimate", "message"});
 }
 
-// The profile's stations when the thrust line is summarised (unprinted: the estimate covers the field).
-constexpr int kSummaryStations = 65;
-
 // "half" or "whole": the model a solution used (empty without one).
 std::string_view domain_of(const Solution& sol) {
   if (!sol.model) return "";

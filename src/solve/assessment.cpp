@@ -12,10 +12,6 @@
 namespace ogive {
 namespace {
 
-// The profile's stations when the thrust line is summarised: the estimate, and so the status, covers
-// the field whose largest |e| is compared (as `thrust` does for its summary columns).
-constexpr int kSummaryStations = 65;
-
 bool required(double value) { return !std::isnan(value); }
 
 CriterionResult result(Criterion c, Outcome o, double need = std::numeric_limits<double>::quiet_NaN()) {

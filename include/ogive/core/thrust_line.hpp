@@ -50,6 +50,11 @@ StressSummary summarize_compressive_stress(const Solution& solution);
 // states that show the field's size (its largest force and couple) without sampling it densely.
 std::vector<ArchState> field_scan(const Solution& solution);
 
+// The profile's stations a solve is asked for when a summary reads its field without printing it
+// (Options::stations with Options::unprinted_profile): the error estimate, and so the status, then covers
+// the field the summary reads. `thrust`'s summary columns and the assessment use it.
+inline constexpr int kSummaryStations = 65;
+
 // The bracketing points' spacing in tangent turn, and the fewest intervals a piece is cut into.
 inline constexpr double kScanTurn = 3.14159265358979323846 / 24;
 inline constexpr int kScanIntervals = 4;
