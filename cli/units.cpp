@@ -35,6 +35,9 @@ const Dimension kDensity{"a density", {{"kg/m3", 0}, {"kg/m^3", 0}, {"t/m3", 3},
 const Dimension kModulus{"a modulus",
                          {{"Pa", 0}, {"kPa", 3}, {"MPa", 6}, {"GPa", 9}, {"N/m2", 0}, {"N/m^2", 0}, {"N/mm2", 6},
                           {"N/mm^2", 6}}};
+const Dimension kStress{"a stress",
+                        {{"Pa", 0}, {"kPa", 3}, {"MPa", 6}, {"GPa", 9}, {"N/m2", 0}, {"N/m^2", 0}, {"N/mm2", 6},
+                         {"N/mm^2", 6}}};
 const Dimension kUnitWeight{"a unit weight", {{"N/m3", 0}, {"N/m^3", 0}, {"kN/m3", 3}, {"kN/m^3", 3}}};
 const Dimension kAcceleration{"an acceleration", {{"m/s2", 0}, {"m/s^2", 0}}};
 
@@ -45,6 +48,7 @@ const std::map<std::string_view, const Dimension*>& dimensions() {
       {"--live-load-from-x", &kLength}, {"--live-load-to-x", &kLength}, {"--point-load", &kLineForce},
       {"--live-load", &kPressure},    {"--density", &kDensity},         {"--fill-density", &kDensity},
       {"--youngs-modulus", &kModulus}, {"--unit-weight", &kUnitWeight}, {"--gravity", &kAcceleration},
+      {"--compressive-strength", &kStress},
   };
   return of;
 }

@@ -47,6 +47,7 @@ struct LimitText {
   std::string joints = "radial", weight = "voussoir", thrust_line;
   int joints_count = kDefaultJointsCount;
   double friction = 0;
+  std::string compressive_strength;
   int repeats = 0;
   int threads = 1;
 };
@@ -71,6 +72,8 @@ void add_analysis_options(CLI::App& cmd, LimitText& t) {
       ->capture_default_str();
   cmd.add_option("--friction", t.friction, "friction coefficient of the joints (> 0): adds the sliding check")
       ->check(finite_number());
+  add_compressive_strength_option(cmd, t.compressive_strength,
+                                  "the joints crush (stress blocks at the hinges); omitted: infinite strength");
   cmd.add_option("--thrust-line", t.thrust_line, "instead of the summary, one row per joint of the min, max, collapse or horizontal (the acceleration a_c of collapse) state");
   cmd.add_option("--repeats", t.repeats,
                  "solve each scene this many times and add median_seconds (benchmark; the scenes one after another)")
@@ -106,6 +109,7 @@ std::vector<LimitOptions> limit_options(const LimitText& t, const CLI::App& cmd)
   if (given(cmd, "--friction") && !(t.friction > 0))
     throw UsageError(fmt::format("--friction: must be > 0 (omit it for no sliding check), got {}", t.friction));
   o.friction = t.friction;
+  o.compressive_strength = compressive_strength_of(t.compressive_strength, cmd);
   // The loads are the scene's (--point-load, --live-load, --fill-density, --loads-file) and so are the
   // pins (--supports pinned, --crown-hinge); the rest of the scene options does not enter rigid voussoirs.
   refuse_inapplicable(cmd, "limit", kNotForLimit);

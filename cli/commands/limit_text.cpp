@@ -1,6 +1,14 @@
 #include "limit_text.hpp"
 
+#include <limits>
+
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+
+#include "cli.hpp"
+#include "option_text.hpp"
+#include "units.hpp"
+#include "values.hpp"
 
 namespace ogive::cli {
 
@@ -14,6 +22,20 @@ const std::map<std::string, JointOrientation>& joint_orientations() {
   static const std::map<std::string, JointOrientation> names = {{"radial", JointOrientation::radial},
                                                                 {"vertical", JointOrientation::vertical}};
   return names;
+}
+
+void add_compressive_strength_option(CLI::App& cmd, std::string& text, const char* what) {
+  cmd.add_option("--compressive-strength", text,
+                 fmt::format("the masonry's compressive strength f_c (> 0; Pa, or with a unit: 3.92MPa): {}", what));
+}
+
+double compressive_strength_of(const std::string& text, const CLI::App& cmd) {
+  if (!given(cmd, "--compressive-strength")) return std::numeric_limits<double>::infinity();
+  const double f_c = parse_number(with_units_resolved(text, "--compressive-strength", 0), "--compressive-strength");
+  if (!(f_c > 0))
+    throw UsageError(fmt::format("--compressive-strength: must be > 0 (Pa; omit it for infinite strength), got {}",
+                                 shown(text)));
+  return f_c;
 }
 
 std::string hinge_text(const std::vector<Hinge>& hinges, double span) {

@@ -8,7 +8,19 @@
 
 #include "ogive/limit/limit.hpp"
 
+namespace CLI {
+class App;
+}
+
 namespace ogive::cli {
+
+// --compressive-strength f_c of the rigid voussoirs (limit, draw, report, assess) and of the stress
+// ratio (thrust, profile): the text as given, in Pa or with a unit of stress (3.92MPa, 3920kPa, 3.92N/mm2;
+// not scaled by --units).
+void add_compressive_strength_option(CLI::App& cmd, std::string& text, const char* what);
+// The strength in Pa: infinity when the option is not given (Heyman's infinite strength); UsageError
+// naming the option for a value that is not a finite number > 0.
+double compressive_strength_of(const std::string& text, const CLI::App& cmd);
 
 // --weight's names: voussoir (the ring's true weight at each centroid) or axis (rho g t per axis length).
 const std::map<std::string, WeightModel>& weight_models();

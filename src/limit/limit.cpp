@@ -74,7 +74,7 @@ struct Work {
 // The program solved from the previous round's basis `keys` (when this ring has all its rows), whose
 // own optimal basis replaces it.
 template <class Solve>
-LimitLp::Answer solve_warm(const LimitLp& lp, std::vector<LimitLp::RowKey>& keys, Solve&& solve) {
+LimitLp::Answer solve_warm(LimitLp& lp, std::vector<LimitLp::RowKey>& keys, Solve&& solve) {
   const std::vector<int> warm = lp.rows(keys);
   LimitLp::Answer a = solve(warm.empty() ? nullptr : &warm);
   keys = lp.keys(a.basis);
@@ -82,9 +82,11 @@ LimitLp::Answer solve_warm(const LimitLp& lp, std::vector<LimitLp::RowKey>& keys
 }
 
 // The programs of `ring` in work's storage.
-LimitLp& programs_of(const Ring& ring, double friction, Work& work, std::unique_ptr<LimitLp>& lp) {
-  if (lp) lp->load(ring, friction);
-  else lp = std::make_unique<LimitLp>(ring, friction, &work.workspace);
+LimitLp& programs_of(const Ring& ring, const LimitOptions& options, Work& work, std::unique_ptr<LimitLp>& lp) {
+  if (lp) lp->load(ring, options.friction, options.compressive_strength);
+  else
+    lp = std::make_unique<LimitLp>(ring, options.friction, &work.workspace, limit_detail::LpSolver::dense,
+                                   limit_detail::LiveKind::vertical, options.compressive_strength);
   return *lp;
 }
 
@@ -106,7 +108,7 @@ struct MarginFunction {
     scene.thickness = t;
     Ring& ring = work.margin_ring;
     limit_detail::make_ring_at(scene, options, fractions_at(scene, t, options, refined), ring, work.scratch);
-    LimitLp& lp = programs_of(ring, options.friction, work, work.margin_lp);
+    LimitLp& lp = programs_of(ring, options, work, work.margin_lp);
     // A warm start needs the same joints (a load's joints can merge with others at some thickness).
     const bool warm = !basis.empty() && basis_joints == static_cast<int>(ring.joints.size());
     LimitLp::Answer a = lp.margin(load_factor, warm ? &basis : nullptr);
@@ -119,7 +121,8 @@ struct MarginFunction {
     if (a.outcome == LimitLp::Outcome::optimal && a.margin >= 0 && t < feasible_t) {
       feasible_t = t;
       feasible_refinement.clear();
-      const ThrustState st = thrust_state(ring, a.H, a.V, a.M, a.load_factor, kThinnestHingeTolerance);
+      const ThrustState st =
+          thrust_state(ring, a.H, a.V, a.M, a.load_factor, kThinnestHingeTolerance, options.compressive_strength);
       limit_detail::add_refinement(ring, st.hinges, feasible_refinement);
     }
     return a.margin;
@@ -188,7 +191,7 @@ const char* to_string(LimitStatus s) {
 }
 
 ThrustState thrust_state(const Ring& ring, double H, double V_left, double M_left, double load_factor,
-                         double hinge_tolerance) {
+                         double hinge_tolerance, double compressive_strength) {
   const limit_detail::LoadsLeftOfJoints left = limit_detail::loads_left_of_joints(ring);
   const bool live = ring.has_live_load();
   const double lambda = live ? load_factor : 0.0;
@@ -225,6 +228,15 @@ ThrustState thrust_state(const Ring& ring, double H, double V_left, double M_lef
     if (pin < ring.pins.size() && ring.pins[pin] == static_cast<int>(j)) {
       st.hinges.push_back({static_cast<int>(j), Face::axis, joint.axis});
       ++pin;
+      continue;
+    }
+    if (std::isfinite(compressive_strength)) {
+      // The stress block N / f_c deep: its centre, N / (2 f_c) inside the face, is where the joint turns.
+      const double h = d.norm(), N = std::max(0.0, (F.x() * d.y() - F.y() * d.x()) / h);
+      const double inside = N / (2 * compressive_strength * h);
+      const Eigen::Vector2d& at = st.crossing.back();
+      if (u - inside <= hinge_tolerance) st.hinges.push_back({static_cast<int>(j), Face::intrados, at});
+      if (u + inside >= 1.0 - hinge_tolerance) st.hinges.push_back({static_cast<int>(j), Face::extrados, at});
       continue;
     }
     if (u <= hinge_tolerance) st.hinges.push_back({static_cast<int>(j), Face::intrados, joint.intrados});
@@ -355,12 +367,14 @@ struct HorizontalCollapse {
   std::vector<Hinge> mechanism_hinges;  // the mechanism's (limit_detail::least_mechanism); empty: none
 };
 
-bool horizontal_collapse(const Ring& ring, double friction, Work& work, HorizontalCollapse& r, int& lp_solves) {
+bool horizontal_collapse(const Ring& ring, const LimitOptions& options, Work& work, HorizontalCollapse& r,
+                         int& lp_solves) {
   if (!(ring.total_dead() != 0.0)) return true;
-  if (work.horizontal_lp) work.horizontal_lp->load(ring, friction);
+  if (work.horizontal_lp) work.horizontal_lp->load(ring, options.friction, options.compressive_strength);
   else
-    work.horizontal_lp = std::make_unique<LimitLp>(ring, friction, &work.workspace, limit_detail::LpSolver::dense,
-                                                   limit_detail::LiveKind::horizontal);
+    work.horizontal_lp = std::make_unique<LimitLp>(ring, options.friction, &work.workspace,
+                                                   limit_detail::LpSolver::dense, limit_detail::LiveKind::horizontal,
+                                                   options.compressive_strength);
   LimitLp& lp = *work.horizontal_lp;
   const int solves_before = lp.solves();
   const LimitLp::Answer c = solve_warm(lp, work.horizontal_basis, [&](const std::vector<int>* w) { return lp.collapse(w); });
@@ -370,7 +384,7 @@ bool horizontal_collapse(const Ring& ring, double friction, Work& work, Horizont
   // The state: the ring pushed by a_c with its live load at factor 1.
   Ring shaken = ring;
   shaken.acceleration = c.load_factor;
-  r.state = thrust_state(shaken, c.H, c.V, c.M, 1.0);
+  r.state = thrust_state(shaken, c.H, c.V, c.M, 1.0, 1e-9, options.compressive_strength);
   r.state.load_factor = c.load_factor;
   limit_detail::LeastMechanism m = limit_detail::least_mechanism(ring, r.state.hinges, limit_detail::LiveKind::horizontal);
   r.mechanism = m.factor;
@@ -446,20 +460,24 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   const double load_factor = live ? 1.0 : 0.0;  // the H range and t_min: under the loads as given
 
   r.V = 0.5 * (ring.total_dead() + ring.total_live());
-  LimitLp& lp = programs_of(ring, options.friction, work, work.lp);
+  LimitLp& lp = programs_of(ring, options, work, work.lp);
   const int solves_before = lp.solves();
-  auto fail = [&](const char* problem) {
+  // `failure`: why the program failed when the LP itself did not (LimitLp::Answer::failure), or null.
+  auto fail = [&](const char* problem, const char* failure) {
     r.status = LimitStatus::lp_failure;
-    r.message = fmt::format("the LP of {} stopped without an answer", problem);
+    r.message = failure ? fmt::format("the LP of {} stopped without an answer: {}", problem, failure)
+                        : fmt::format("the LP of {} stopped without an answer", problem);
     r.lp_solves += lp.solves() - solves_before;
     return round;
   };
-  auto state = [&](const LimitLp::Answer& a) { return thrust_state(ring, a.H, a.V, a.M, a.load_factor); };
+  auto state = [&](const LimitLp::Answer& a) {
+    return thrust_state(ring, a.H, a.V, a.M, a.load_factor, 1e-9, options.compressive_strength);
+  };
 
   using Warm = const std::vector<int>*;
   LimitLp::Answer margin = solve_warm(lp, work.margin_basis, [&](Warm w) { return lp.margin(load_factor, w); });
   if (margin.outcome == LimitLp::Outcome::infeasible) margin.margin = kNoMargin;
-  else if (margin.outcome != LimitLp::Outcome::optimal) return fail("the feasibility margin");
+  else if (margin.outcome != LimitLp::Outcome::optimal) return fail("the feasibility margin", margin.failure);
   // A margin within the programs' tolerance of zero (the thrust vanishing at some joint leaves none to
   // give) is decided by the thrust programs' feasibility below.
   bool admissible = margin.margin >= -kMarginTolerance;
@@ -470,8 +488,8 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
     const LimitLp::Answer hi =
         solve_warm(lp, work.max_basis, [&](Warm w) { return lp.extreme_thrust(load_factor, true, w); });
     if (lo.outcome == LimitLp::Outcome::failure || lo.outcome == LimitLp::Outcome::unbounded)
-      return fail("the minimum thrust");
-    if (hi.outcome == LimitLp::Outcome::failure) return fail("the maximum thrust");
+      return fail("the minimum thrust", lo.failure);
+    if (hi.outcome == LimitLp::Outcome::failure) return fail("the maximum thrust", hi.failure);
     // A margin of zero to round-off can still leave the thrust programs infeasible: not admissible.
     admissible = lo.outcome == LimitLp::Outcome::optimal && hi.outcome != LimitLp::Outcome::infeasible;
     if (admissible) {
@@ -488,7 +506,7 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
       mechanism = limit_detail::least_mechanism(ring, r.collapse_state.hinges, limit_detail::LiveKind::vertical);
       r.load_factor_mechanism = mechanism.factor;
     } else if (c.outcome == LimitLp::Outcome::failure) {
-      return fail("the collapse load");
+      return fail("the collapse load", c.failure);
     }
     // infeasible: the dead loads alone cannot stand; unbounded: the live load cannot make a mechanism.
   }
@@ -526,7 +544,10 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   if (fails_virtual_work(r, "collapse load factor", r.load_factor(), r.load_factor_mechanism)) return round;
   if (!admissible) {
     r.status = LimitStatus::inadmissible;
-    const char* where = options.friction > 0 ? "inside the arch and its joints' friction cones" : "inside the arch";
+    std::string where = options.friction > 0 ? "inside the arch and its joints' friction cones" : "inside the arch";
+    if (std::isfinite(options.compressive_strength))
+      where += fmt::format(" clear of the stress blocks that crush its joints (compressive strength {:g} Pa)",
+                           options.compressive_strength);
     r.message = std::isnan(r.thickness_min)
                     ? fmt::format("no thrust line fits {} at any thickness up to {} m", where, t_cap)
                     : fmt::format("no thrust line fits {}: t < t_min", where);
@@ -603,7 +624,7 @@ HorizontalOutcome converge_horizontal(const Scene& scene, const LimitOptions& op
   auto round = [&](HorizontalCollapse& c) {
     limit_detail::make_ring_at(scene, options, fractions_at(scene, scene.thickness, options, refined), out.ring,
                                work.scratch);
-    if (!horizontal_collapse(out.ring, options.friction, work, c, out.lp_solves)) out.failed = true;
+    if (!horizontal_collapse(out.ring, options, work, c, out.lp_solves)) out.failed = true;
   };
   round(out.collapse);
   out.change = std::numeric_limits<double>::infinity();

@@ -102,22 +102,33 @@ LeastMechanism least_mechanism(const Ring& ring, const std::vector<Hinge>& hinge
 // resultant crosses the joint between its intrados point I and extrados point E (in compression) iff
 // m_j - I x F_j <= -mu h_j and m_j - E x F_j >= mu h_j, h_j = |E - I| W (W the total load, dead plus
 // live, in magnitude). At a pin (Ring::pins) also m_j - A x F_j = 0, A the joint's axis point.
+//
+// With a finite compressive strength f_c (Pa) the masonry crushes: the joint's normal force N_j = F_j . n_j
+// (n_j its normal towards the right-hand part; N > 0 in compression) bears on a stress block N_j / f_c
+// deep at the face, so the resultant stays N_j / (2 f_c) inside each face: both face rows gain
+// N_j^2 / (2 f_c) on their left (m_j - I x F_j + N_j^2 / (2 f_c) <= -mu h_j, and likewise at E), which
+// also bounds N_j <= f_c |E - I|. The set stays convex; every program is solved exactly on it by tangent
+// cuts (limit_lp.cpp), to the programs' feasibility tolerance. Infinite f_c: the rows above alone.
 class LimitLp {
  public:
   // `workspace`: the model to solve in (nullptr: one of its own); it must outlive this.
+  // `compressive_strength`: f_c, Pa, > 0 (infinity: Heyman's infinite strength).
   LimitLp(const Ring& ring, double friction, LpWorkspace* workspace = nullptr, LpSolver solver = LpSolver::dense,
-          LiveKind live = LiveKind::vertical);
+          LiveKind live = LiveKind::vertical,
+          double compressive_strength = std::numeric_limits<double>::infinity());
   ~LimitLp();
   LimitLp(const LimitLp&) = delete;
   LimitLp& operator=(const LimitLp&) = delete;
   // The programs of another ring (another thickness, say), in the storage of this one's.
-  void load(const Ring& ring, double friction);
+  void load(const Ring& ring, double friction, double compressive_strength = std::numeric_limits<double>::infinity());
 
   enum class Outcome { optimal, infeasible, unbounded, failure };
   struct Answer {
     Outcome outcome = Outcome::failure;
     double H = 0, V = 0, M = 0, load_factor = 0, margin = 0;  // SI units; margin dimensionless
     std::vector<int> basis;  // the optimal basis (which joint inequalities are tight), to warm-start
+    // Why a failure (outcome failure) failed when the LP itself did not (the crushing cuts); else null.
+    const char* failure = nullptr;
   };
   // The smallest or largest H of an admissible state under dead + load_factor * live (mu = 0).
   // `warm` (here and below): an optimal basis of the same question to start from (the previous ring's,
@@ -136,16 +147,21 @@ class LimitLp {
   Answer collapse(const std::vector<int>* warm = nullptr);
   // A row by what it says rather than by its index, which a finer ring changes: the arc length of its
   // joint (Joint::s) and its place among the joint's rows, or infinity and its place among the sign and
-  // cap rows after the joints.
+  // cap rows after the joints; a crushing cut (finite f_c) has its face row's key with `cut` the normal
+  // force (N/m, nonzero) it touches the crushing condition at (0 for every other row).
   struct RowKey {
     double s = 0;
     int place = 0;
+    double cut = 0;
     auto operator<=>(const RowKey&) const = default;
   };
   std::vector<RowKey> keys(const std::vector<int>& basis) const;
-  // The rows with those keys here; empty when one of them has none (its joint is not in this ring).
-  std::vector<int> rows(const std::vector<RowKey>& keys) const;
+  // The rows with those keys here (a cut's made anew when this ring has its joint); empty when one of
+  // them has none (its joint is not in this ring).
+  std::vector<int> rows(const std::vector<RowKey>& keys);
   int solves() const { return solves_; }
+  // The linear programs solved for the crushing cuts beyond the first of each program (0 with infinite f_c).
+  int cut_rounds() const;
   // Programs the dense method handed to Clp (a basis it found singular, or its step limit).
   int clp_fallbacks() const;
 

@@ -19,6 +19,8 @@
 #include <limits>
 #include <vector>
 
+#include <Eigen/LU>
+
 #include <ClpSimplex.hpp>
 #include <CoinFinite.hpp>
 
@@ -57,8 +59,20 @@ constexpr double kCollapseScaleRatio = 1e3;
 
 using Inequality = DenseRow;
 
-// LimitLp's rows end with the caps: unknown c's z_c <= cap at 2c and -z_c <= cap at 2c + 1 from there.
-constexpr int kCapRows = 2 * kUnknowns;
+// LimitLp's rows: the joints', then the sign rows of H and lambda, then the caps (unknown c's z_c <= cap at
+// 2c and -z_c <= cap at 2c + 1 from there), then (finite f_c) the crushing cuts.
+constexpr int kSignRows = 2;
+
+// The crushing condition of a face (finite f_c) holds at a vertex when violated by no more than this, in
+// the program's units (W L, as every row): the tolerance of the LP's own rows. A tangent cut at the
+// vertex's own normal force is violated exactly as much, so the LP leaves it there.
+constexpr double kCrushingTolerance = kFeasibility;
+// The programs one question may solve for its crushing cuts: with the Newton step below, a handful;
+// plain tangent cuts alone (each round quarters the violation) within about twenty.
+constexpr int kMaxCutRounds = 60;
+// Newton's steps on the tight rows, and the residual (in the rows' units) at which it has converged.
+constexpr int kMaxNewtonSteps = 30;
+constexpr double kNewtonResidual = 1e-14;
 
 // A program with the unknowns in `fixed` (NaN: free) held: the free unknowns, and every row's right-hand
 // side with the held unknowns moved there.
@@ -123,25 +137,98 @@ struct LimitLp::Impl {
   // lambda = lambda_scale times the program's own unknown (1 but in the collapse at the loads' scale)
   double lambda_scale = 1;
   mutable int fallbacks = 0;
-  std::vector<RowKey> keys;  // each row's, ascending
+  std::vector<RowKey> keys;  // each joint, sign and cap row's, ascending
   // Work areas kept from one program (and one ring) to the next.
   LoadsLeftOfJoints left;
   mutable Held held;
 
+  // Crushing (finite f_c): f_c in the program's units (f_c L / W; infinity: none), and for each joint its
+  // normal force N = a . z + c and the index of its intrados row (the extrados row follows it).
+  double strength = std::numeric_limits<double>::infinity();
+  struct Normal {
+    std::array<double, kUnknowns> a{};
+    double c = 0;
+    int face_row = 0;
+  };
+  std::vector<Normal> normals;
+  std::vector<int> row_face;  // per joint row: 2 j + face (0 intrados, 1 extrados) of a face row, else -1
+  // The cuts, rows cuts_begin on: joint, face and the normal force (N/m) they touch the condition at.
+  struct Cut {
+    int joint = 0, face = 0;
+    double force = 0;
+  };
+  int cuts_begin = 0;
+  std::vector<Cut> cuts, previous_cuts;  // previous_cuts: the last ring's (warm starts by index)
+  std::size_t previous_joints = 0;
+  int cut_rounds = 0;
+
   // Maximises objective . z (scaled unknowns) with the unknowns in `fixed` (NaN: free) held.
   Answer optimise(const Objective& objective, const std::array<double, kUnknowns>& fixed,
-                  const std::vector<int>* warm = nullptr) const;
-  // The optimum of the dense method or of Clp: the free unknowns (the held ones as given) and the basis.
-  Answer dense(const Held& h, const std::array<double, kUnknowns>& fixed, const Objective& objective,
+                  const std::vector<int>* warm = nullptr);
+  // The optimum of the dense method or of Clp: the scaled unknowns (the held ones as given) and the basis.
+  struct Solved {
+    Outcome outcome = Outcome::failure;
+    std::array<double, kUnknowns> z{};
+    std::vector<int> basis;
+  };
+  Solved solve(const Held& h, const std::array<double, kUnknowns>& fixed, const Objective& objective,
+               const std::vector<int>* warm) const {
+    return solver == LpSolver::dense ? dense(h, fixed, objective, warm) : clp(h, fixed, objective, warm);
+  }
+  Solved dense(const Held& h, const std::array<double, kUnknowns>& fixed, const Objective& objective,
                const std::vector<int>* warm) const;
-  Answer clp(const Held& h, const std::array<double, kUnknowns>& fixed, const Objective& objective,
+  Solved clp(const Held& h, const std::array<double, kUnknowns>& fixed, const Objective& objective,
              const std::vector<int>* warm) const;
   // The answer in SI units from the scaled unknowns z; unbounded where an unknown the objective pushes
   // reached its cap.
   Answer unscaled(std::array<double, kUnknowns> z, const Objective& objective) const;
+  Answer finish(const Solved& s, const Objective& objective) const {
+    Answer a;
+    a.outcome = s.outcome;
+    if (s.outcome != Outcome::optimal) return a;
+    a = unscaled(s.z, objective);
+    a.basis = s.basis;
+    return a;
+  }
+
+  // The crushing program (finite f_c): optimise's question solved exactly by tangent cuts.
+  Answer crushed(const Objective& objective, const std::array<double, kUnknowns>& fixed,
+                 const std::vector<int>* warm);
+  double normal_force(int joint, const std::array<double, kUnknowns>& z) const {
+    const Normal& n = normals[static_cast<std::size_t>(joint)];
+    double N = n.c;
+    for (int c = 0; c < kUnknowns; ++c) N += n.a[c] * z[c];
+    return N;
+  }
+  // How far z breaks the crushing condition of the joint's face (> 0: broken), in the rows' units.
+  double crushing(int joint, int face, const std::array<double, kUnknowns>& z) const {
+    const Inequality& row = rows[static_cast<std::size_t>(normals[static_cast<std::size_t>(joint)].face_row + face)];
+    double g = -row.b;
+    for (int c = 0; c < kUnknowns; ++c) g += row.a[c] * z[c];
+    const double N = normal_force(joint, z);
+    return g + N * N / (2 * strength);
+  }
+  // The tangent cut of the face's condition at normal force N0 (program units; N^2 >= 2 N0 N - N0^2).
+  Inequality cut_row(int joint, int face, double N0) const;
+  // Appends the cut at N0 (unless the face has one there already); its row.
+  int add_cut(int joint, int face, double N0);
+  // The face (2 j + face) whose condition row r stands for, or -1 for a row of no face.
+  int face_of(int r) const {
+    if (r >= cuts_begin) {
+      const Cut& c = cuts[static_cast<std::size_t>(r - cuts_begin)];
+      return 2 * c.joint + c.face;
+    }
+    return r < joint_rows ? row_face[static_cast<std::size_t>(r)] : -1;
+  }
+  // Newton's method on the basis' rows, each face's as its exact condition: the tangent cuts at its
+  // solution (the optimum when the basis' rows are the optimum's active ones); false when it fails.
+  bool newton(const Solved& s, const std::vector<int>& free);
+  // A warm basis with the last ring's cuts made anew here (when the joints are as many).
+  std::vector<int> carried(const std::vector<int>& warm);
 };
 
-LimitLp::LimitLp(const Ring& ring, double friction, LpWorkspace* workspace, LpSolver solver, LiveKind live)
+LimitLp::LimitLp(const Ring& ring, double friction, LpWorkspace* workspace, LpSolver solver, LiveKind live,
+                 double compressive_strength)
     : impl_(std::make_unique<Impl>()) {
   impl_->live = live;
   if (!workspace) {
@@ -150,10 +237,10 @@ LimitLp::LimitLp(const Ring& ring, double friction, LpWorkspace* workspace, LpSo
   }
   impl_->workspace = workspace->impl_.get();
   impl_->solver = solver;
-  load(ring, friction);
+  load(ring, friction, compressive_strength);
 }
 
-void LimitLp::load(const Ring& ring, double friction) {
+void LimitLp::load(const Ring& ring, double friction, double compressive_strength) {
   // The force scale: every load in magnitude (1 for a ring loaded with nothing, where any scale will do).
   double W = 0, dead = 0, live = 0;
   for (const Voussoir& v : ring.voussoirs) {
@@ -169,6 +256,14 @@ void LimitLp::load(const Ring& ring, double friction) {
   impl_->span = L;
   std::vector<Inequality>& rows = impl_->rows;
   rows.clear();
+  Impl& p = *impl_;
+  const bool crushing = std::isfinite(compressive_strength);
+  p.strength = crushing ? compressive_strength * L / W : std::numeric_limits<double>::infinity();
+  p.previous_cuts.swap(p.cuts);
+  p.previous_joints = p.normals.size();
+  p.cuts.clear();
+  p.normals.clear();
+  p.row_face.clear();
   LoadsLeftOfJoints& left = impl_->left;
   loads_left_of_joints(ring, left);
   std::size_t pin = 0;
@@ -195,6 +290,15 @@ void LimitLp::load(const Ring& ring, double friction) {
     auto dead = [&](const Eigen::Vector2d& Q) { return a == 0 ? Q.x() * D - MD : Q.x() * D - MD + (Q.y() * aG - aMG); };
     rows.push_back({{I.y(), -I.x(), 1.0, factor(I), h}, -dead(I)});
     rows.push_back({{-E.y(), E.x(), -1.0, -factor(E), h}, dead(E)});
+    if (crushing) {
+      // N = n . F, n the normal towards the right-hand part, F = (H + aG, V - D - lambda P).
+      const Eigen::Vector2d d = (E - I) / h, n(d.y(), -d.x());
+      Impl::Normal normal;
+      normal.a = {n.x(), n.y(), 0.0, horizontal ? n.x() * G : -n.y() * P, 0.0};
+      normal.c = a == 0 ? -n.y() * D : -n.y() * D + n.x() * aG;
+      normal.face_row = static_cast<int>(first);
+      p.normals.push_back(normal);
+    }
     if (pin < ring.pins.size() && ring.pins[pin] == static_cast<int>(j)) {
       const Eigen::Vector2d A = ring.joints[j].axis / L;
       rows.push_back({{A.y(), -A.x(), 1.0, factor(A), 0.0}, -dead(A), true});
@@ -210,6 +314,9 @@ void LimitLp::load(const Ring& ring, double friction) {
       }
     }
     for (std::size_t r = first; r < rows.size(); ++r) keys.push_back({ring.joints[j].s, static_cast<int>(r - first)});
+    if (crushing)
+      for (std::size_t r = first; r < rows.size(); ++r)
+        p.row_face.push_back(r - first < 2 ? static_cast<int>(2 * j + (r - first)) : -1);
   }
   const std::size_t tail = rows.size();
   impl_->joint_rows = static_cast<int>(tail);
@@ -230,6 +337,7 @@ void LimitLp::load(const Ring& ring, double friction) {
     for (double a : row.a) sum += a * a;
     row.norm = std::sqrt(sum);
   }
+  p.cuts_begin = static_cast<int>(rows.size());
 }
 
 LimitLp::~LimitLp() = default;
@@ -250,7 +358,8 @@ LimitLp::Answer LimitLp::Impl::unscaled(std::array<double, kUnknowns> z, const O
 }
 
 LimitLp::Answer LimitLp::Impl::optimise(const Objective& objective, const std::array<double, kUnknowns>& fixed,
-                                        const std::vector<int>* warm) const {
+                                        const std::vector<int>* warm) {
+  if (std::isfinite(strength)) return crushed(objective, fixed, warm);
   Held& h = held;
   hold(rows, fixed, h);
   if (h.infeasible) {
@@ -258,14 +367,142 @@ LimitLp::Answer LimitLp::Impl::optimise(const Objective& objective, const std::a
     infeasible.outcome = Outcome::infeasible;
     return infeasible;
   }
-  return solver == LpSolver::dense ? dense(h, fixed, objective, warm) : clp(h, fixed, objective, warm);
+  return finish(solve(h, fixed, objective, warm), objective);
 }
 
-LimitLp::Answer LimitLp::Impl::dense(const Held& h, const std::array<double, kUnknowns>& fixed,
+Inequality LimitLp::Impl::cut_row(int joint, int face, double N0) const {
+  // The face's row a . z <= b plus (2 N0 N - N0^2) / (2 f_c), N = n . z + c: linear in z.
+  const Normal& n = normals[static_cast<std::size_t>(joint)];
+  Inequality row = rows[static_cast<std::size_t>(n.face_row + face)];
+  const double k = N0 / strength;
+  double sum = 0;
+  for (int c = 0; c < kUnknowns; ++c) {
+    row.a[c] += k * n.a[c];
+    sum += row.a[c] * row.a[c];
+  }
+  row.b += N0 * N0 / (2 * strength) - k * n.c;
+  row.norm = std::sqrt(sum);
+  return row;
+}
+
+int LimitLp::Impl::add_cut(int joint, int face, double N0) {
+  const double force = N0 * weight;
+  for (std::size_t i = 0; i < cuts.size(); ++i)
+    if (cuts[i].joint == joint && cuts[i].face == face && cuts[i].force == force) return cuts_begin + static_cast<int>(i);
+  rows.push_back(cut_row(joint, face, N0));
+  cuts.push_back({joint, face, force});
+  return static_cast<int>(rows.size()) - 1;
+}
+
+std::vector<int> LimitLp::Impl::carried(const std::vector<int>& warm) {
+  std::vector<int> out = warm;
+  for (int& r : out) {
+    const int i = r - cuts_begin;
+    if (i < 0 || i < static_cast<int>(cuts.size())) continue;  // this ring's row
+    if (i >= static_cast<int>(previous_cuts.size()) || previous_joints != normals.size()) return warm;
+    const Cut& c = previous_cuts[static_cast<std::size_t>(i)];
+    r = add_cut(c.joint, c.face, c.force / weight);
+  }
+  return out;
+}
+
+bool LimitLp::Impl::newton(const Solved& s, const std::vector<int>& free) {
+  const int k = static_cast<int>(free.size());
+  if (static_cast<int>(s.basis.size()) != k || k == 0) return false;
+  using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kUnknowns, kUnknowns>;
+  using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kUnknowns, 1>;
+  std::array<double, kUnknowns> z = s.z;
+  Matrix J(k, k);
+  Vector g(k);
+  double residual = std::numeric_limits<double>::infinity();
+  for (int step = 0; step <= kMaxNewtonSteps; ++step) {
+    for (int i = 0; i < k; ++i) {
+      const int r = s.basis[static_cast<std::size_t>(i)], f = face_of(r);
+      if (f < 0) {  // a row of no face: linear, tight
+        const Inequality& row = rows[static_cast<std::size_t>(r)];
+        double v = -row.b;
+        for (int c = 0; c < kUnknowns; ++c) v += row.a[c] * z[c];
+        g(i) = v;
+        for (int c = 0; c < k; ++c) J(i, c) = row.a[free[static_cast<std::size_t>(c)]];
+        continue;
+      }
+      const int joint = f / 2, face = f % 2;
+      const Normal& n = normals[static_cast<std::size_t>(joint)];
+      const Inequality& row = rows[static_cast<std::size_t>(n.face_row + face)];
+      g(i) = crushing(joint, face, z);
+      const double slope = normal_force(joint, z) / strength;
+      for (int c = 0; c < k; ++c) {
+        const int u = free[static_cast<std::size_t>(c)];
+        J(i, c) = row.a[u] + slope * n.a[u];
+      }
+    }
+    residual = g.cwiseAbs().maxCoeff();
+    if (!std::isfinite(residual)) return false;
+    if (residual <= kNewtonResidual || step == kMaxNewtonSteps) break;
+    Eigen::FullPivLU<Matrix> lu(J);
+    lu.setThreshold(1e-12);
+    if (!lu.isInvertible()) return false;  // two rows of one face, say
+    const Vector dz = lu.solve(-g);
+    for (int c = 0; c < k; ++c) z[free[static_cast<std::size_t>(c)]] += dz(c);
+  }
+  if (!(residual <= kNewtonResidual)) return false;
+  for (int i = 0; i < k; ++i) {
+    const int f = face_of(s.basis[static_cast<std::size_t>(i)]);
+    if (f >= 0) {
+      const double N = normal_force(f / 2, z);
+      if (N != 0) add_cut(f / 2, f % 2, N);
+    }
+  }
+  return true;
+}
+
+LimitLp::Answer LimitLp::Impl::crushed(const Objective& objective, const std::array<double, kUnknowns>& fixed,
+                                       const std::vector<int>* warm) {
+  // Outer approximation: the face rows are the tangent cuts at N = 0 of the convex crushing conditions;
+  // each round solves the program on the cuts so far and adds, at every face whose condition the optimum
+  // breaks, the cut at its normal force there (Kelley: each round about quarters the violation), and at
+  // the faces of the optimal basis the cuts at the solution of their exact conditions (Newton), which
+  // are tight at the true optimum when the basis names its active faces: then the next program's vertex
+  // is that optimum. An infeasible program on the cuts is infeasible on the conditions too.
+  std::vector<int> basis;
+  if (warm) basis = carried(*warm);
+  const std::vector<int>* start = warm ? &basis : nullptr;
+  Held& h = held;
+  for (int round = 0; round < kMaxCutRounds; ++round) {
+    if (round > 0) ++cut_rounds;
+    hold(rows, fixed, h);
+    if (h.infeasible) {
+      Answer infeasible;
+      infeasible.outcome = Outcome::infeasible;
+      return infeasible;
+    }
+    const Solved s = solve(h, fixed, objective, start);
+    if (s.outcome != Outcome::optimal) return finish(s, objective);
+    const std::size_t before = cuts.size();
+    bool broken = false;
+    for (std::size_t j = 0; j < normals.size(); ++j)
+      for (int face = 0; face < 2; ++face)
+        if (crushing(static_cast<int>(j), face, s.z) > kCrushingTolerance) {
+          broken = true;
+          const double N = normal_force(static_cast<int>(j), s.z);
+          if (N != 0) add_cut(static_cast<int>(j), face, N);
+        }
+    // A face broken by no more than the LP leaves a row (its cut at this very N is there already): done.
+    if (!broken || cuts.size() == before) return finish(s, objective);
+    newton(s, h.free);
+    basis = s.basis;
+    start = &basis;
+  }
+  Answer a;
+  a.failure = "the crushing conditions were still broken after the most rounds of tangent cuts";
+  return a;
+}
+
+LimitLp::Impl::Solved LimitLp::Impl::dense(const Held& h, const std::array<double, kUnknowns>& fixed,
                                      const Objective& objective, const std::vector<int>* warm) const {
   // The start: the caps of the free unknowns, each on the side the objective pushes it (its dual the
   // objective's coefficient): a vertex no worse than the optimum, whatever the rows.
-  const int caps = static_cast<int>(rows.size()) - kCapRows;
+  const int caps = joint_rows + kSignRows;
   std::vector<int> start;
   for (int c : h.free) start.push_back(caps + 2 * c + (objective[c] < 0 ? 1 : 0));
   const DenseLpAnswer d = solve_dense_lp(rows, h.b, h.free, objective, start, warm, kFeasibility);
@@ -275,19 +512,19 @@ LimitLp::Answer LimitLp::Impl::dense(const Held& h, const std::array<double, kUn
     ++fallbacks;
     return clp(h, fixed, objective, warm);
   }
+  Solved a;
   if (d.outcome == DenseLpAnswer::Outcome::infeasible) {
-    Answer a;
     a.outcome = Outcome::infeasible;
     return a;
   }
-  std::array<double, kUnknowns> z = fixed;
-  for (int c : h.free) z[c] = d.z[c];
-  Answer a = unscaled(z, objective);
+  a.outcome = Outcome::optimal;
+  a.z = fixed;
+  for (int c : h.free) a.z[c] = d.z[c];
   a.basis = d.basis;
   return a;
 }
 
-LimitLp::Answer LimitLp::Impl::clp(const Held& h, const std::array<double, kUnknowns>& fixed,
+LimitLp::Impl::Solved LimitLp::Impl::clp(const Held& h, const std::array<double, kUnknowns>& fixed,
                                    const Objective& objective, const std::vector<int>* warm) const {
   // The free unknowns become the dual's rows; every inequality with a free coefficient a column.
   const std::vector<int>& free = h.free;
@@ -338,7 +575,7 @@ LimitLp::Answer LimitLp::Impl::clp(const Held& h, const std::array<double, kUnkn
     model.createStatus();  // the slack basis, whatever the workspace's previous program left
   }
   model.dual();
-  Answer a;
+  Solved a;
   // The dual infeasible (no y) <=> the primal unbounded, prevented by the caps; the dual unbounded <=>
   // the primal infeasible.
   if (model.isProvenDualInfeasible()) {
@@ -346,31 +583,52 @@ LimitLp::Answer LimitLp::Impl::clp(const Held& h, const std::array<double, kUnkn
     return a;
   }
   if (!model.isProvenOptimal() || model.secondaryStatus() != 0) return a;  // failure
-  std::array<double, kUnknowns> z = fixed;
+  a.outcome = Outcome::optimal;
+  a.z = fixed;
   const double* price = model.getRowPrice();
-  for (int k = 0; k < m; ++k) z[free[k]] = price[k];
-  a = unscaled(z, objective);
+  for (int k = 0; k < m; ++k) a.z[free[k]] = price[k];
   for (int c = 0; c < columns; ++c)
     if (model.getColumnStatus(c) == ClpSimplex::basic) a.basis.push_back(kept[c]);
   return a;
 }
 
 std::vector<LimitLp::RowKey> LimitLp::keys(const std::vector<int>& basis) const {
+  const Impl& p = *impl_;
   std::vector<RowKey> out;
-  for (int r : basis) out.push_back(impl_->keys[static_cast<std::size_t>(r)]);
-  return out;
-}
-
-std::vector<int> LimitLp::rows(const std::vector<RowKey>& keys) const {
-  std::vector<int> out;
-  const std::vector<RowKey>& all = impl_->keys;
-  for (const RowKey& k : keys) {
-    const auto it = std::lower_bound(all.begin(), all.end(), k);
-    if (it == all.end() || !(*it == k)) return {};
-    out.push_back(static_cast<int>(it - all.begin()));
+  for (int r : basis) {
+    if (r < p.cuts_begin) {
+      out.push_back(p.keys[static_cast<std::size_t>(r)]);
+      continue;
+    }
+    const Impl::Cut& c = p.cuts[static_cast<std::size_t>(r - p.cuts_begin)];
+    RowKey key = p.keys[static_cast<std::size_t>(p.normals[static_cast<std::size_t>(c.joint)].face_row + c.face)];
+    key.cut = c.force;
+    out.push_back(key);
   }
   return out;
 }
+
+std::vector<int> LimitLp::rows(const std::vector<RowKey>& keys) {
+  Impl& p = *impl_;
+  std::vector<int> out;
+  const std::vector<RowKey>& all = p.keys;
+  for (const RowKey& k : keys) {
+    const auto it = std::lower_bound(all.begin(), all.end(), RowKey{k.s, k.place, 0.0});
+    if (it == all.end() || it->s != k.s || it->place != k.place) return {};
+    const int r = static_cast<int>(it - all.begin());
+    if (k.cut == 0) {
+      out.push_back(r);
+      continue;
+    }
+    // A cut: made anew at its force on this ring's face (none without crushing).
+    const int f = std::isfinite(p.strength) && r < p.joint_rows ? p.row_face[static_cast<std::size_t>(r)] : -1;
+    if (f < 0) return {};
+    out.push_back(p.add_cut(f / 2, f % 2, k.cut / p.weight));
+  }
+  return out;
+}
+
+int LimitLp::cut_rounds() const { return impl_->cut_rounds; }
 
 LimitLp::Answer LimitLp::extreme_thrust(double load_factor, bool largest, const std::vector<int>* warm) {
   ++solves_;
@@ -399,9 +657,14 @@ LimitLp::Answer LimitLp::collapse(const std::vector<int>* warm) {
   // coefficient also times dead / live.
   if (p.live == LiveKind::vertical && dead > 0 && live > 0 &&
       (live > kCollapseScaleRatio * dead || dead > kCollapseScaleRatio * live)) {
+    // (With crushing, the cuts and the normal forces too, and f_c in the same unit: the condition
+    // N^2 / (2 f_c) scales with the rows when N and f_c both do.)
     const std::vector<Inequality> given = p.rows;
+    const std::vector<Impl::Normal> given_normals = p.normals;
+    const std::size_t given_cuts = p.cuts.size();
     const double to_dead = p.weight / dead, per_lambda = dead / live;
-    for (int r = 0; r < p.joint_rows; ++r) {
+    for (int r = 0; r < static_cast<int>(p.rows.size()); ++r) {
+      if (r >= p.joint_rows && r < p.cuts_begin) continue;  // the sign and cap rows
       Inequality& row = p.rows[static_cast<std::size_t>(r)];
       row.b *= to_dead;
       row.a[kLambda] *= to_dead * per_lambda;
@@ -409,13 +672,25 @@ LimitLp::Answer LimitLp::collapse(const std::vector<int>* warm) {
       for (double x : row.a) sum += x * x;
       row.norm = std::sqrt(sum);
     }
-    const double weight = p.weight;
+    for (Impl::Normal& n : p.normals) {
+      n.c *= to_dead;
+      n.a[kLambda] *= to_dead * per_lambda;
+    }
+    const double weight = p.weight, strength = p.strength;
     p.weight = dead;
+    p.strength *= to_dead;
     p.lambda_scale = per_lambda;
     Answer a = p.optimise(pushing(kLambda, true), {nan, nan, nan, nan, 0.0}, warm);
     p.rows = given;
+    p.normals = given_normals;
     p.weight = weight;
+    p.strength = strength;
     p.lambda_scale = 1;
+    // The cuts made meanwhile, in the program's own units again (at the same force: the same rows).
+    for (std::size_t i = given_cuts; i < p.cuts.size(); ++i) {
+      const Impl::Cut& c = p.cuts[i];
+      p.rows.push_back(p.cut_row(c.joint, c.face, c.force / p.weight));
+    }
     return a;
   }
   return p.optimise(pushing(kLambda, true), {nan, nan, nan, nan, 0.0}, warm);

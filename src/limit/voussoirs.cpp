@@ -529,6 +529,9 @@ bool LimitOptions::is_valid(std::string* why) const {
                             kMinJointsCount, kMaxJointsCount, joints_count));
   if (!std::isfinite(friction) || friction < 0)
     return fail(fmt::format("friction: must be finite and >= 0 (0: no sliding check), got {}", friction));
+  if (!(compressive_strength > 0))
+    return fail(fmt::format("compressive_strength: must be > 0 (Pa; infinity: no crushing), got {}",
+                            compressive_strength));
   return true;
 }
 

@@ -79,6 +79,13 @@ struct LimitOptions {
   // Coulomb friction coefficient of the joints; 0: no sliding check (sliding is excluded). When > 0,
   // every joint must also satisfy |shear| <= friction * normal force.
   double friction = 0;
+  // The masonry's compressive strength f_c (Pa, > 0; infinity: Heyman's infinite strength). Finite, the
+  // joints crush: rigid-perfectly-plastic in compression, no tension, a joint of length h with normal
+  // force N (N/m, compression positive) bears it on a stress block N / f_c deep at the face, so its
+  // resultant stays at least N / (2 f_c) inside each face: |M| <= N (h/2 - N/(2 f_c)) about the joint's
+  // middle, and N <= f_c h. Every number of the result honours it (the thrust range, t_min, the collapse
+  // load factor and a_c); a hinge then sits N / (2 f_c) inside its face (thrust_state).
+  double compressive_strength = std::numeric_limits<double>::infinity();
   // Also the horizontal acceleration of collapse a_c (LimitResult::horizontal_state): one program per
   // round on rings of its own (LimitResult::horizontal_ring), refined next to its hinges alone.
   bool horizontal_load_factor = false;
@@ -177,7 +184,9 @@ const char* to_string(Face f);
 struct Hinge {
   int joint = 0;  // index into Ring::joints
   Face face = Face::intrados;
-  Eigen::Vector2d point;  // m, the hinge: the joint's intrados, extrados or axis point
+  // m, the hinge: the joint's intrados, extrados or axis point; with a finite compressive strength a
+  // face hinge's is the stress block's centre, N / (2 f_c) inside the face (thrust_state).
+  Eigen::Vector2d point;
 };
 
 // One thrust line in equilibrium: the reactions and, for each joint, where the resultant crosses it.
@@ -288,9 +297,13 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options);
 // The state of a thrust line with reactions (H, V_left) and left-support moment M_left about the origin
 // (N m/m), under the ring's dead loads and `load_factor` times its live load (ignored without one):
 // where it crosses each joint. The hinges are the ring's pins and the joints crossed at a face to
-// `hinge_tolerance` of the joint's length.
+// `hinge_tolerance` of the joint's length, the hinge at the face's point. With a finite
+// `compressive_strength` f_c (Pa; LimitOptions::compressive_strength) a hinge is where the crossing lies
+// N / (2 f_c) inside a face (N the joint's normal force; to the same tolerance), at the crossing: the
+// centre of the stress block the joint turns on.
 ThrustState thrust_state(const Ring& ring, double H, double V_left, double M_left, double load_factor,
-                         double hinge_tolerance = 1e-9);
+                         double hinge_tolerance = 1e-9,
+                         double compressive_strength = std::numeric_limits<double>::infinity());
 
 // The kinematic (upper-bound) multiplier of the ring's live load for the mechanism whose hinges are
 // given: the voussoirs between consecutive hinges rotate as rigid bodies, those before the first and
