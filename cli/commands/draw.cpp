@@ -30,6 +30,7 @@
 #include "commands.hpp"
 #include "criteria.hpp"
 #include "interrupt.hpp"
+#include "limit_text.hpp"
 #include "ogive/limit/limit.hpp"
 #include "ogive/limit/spreading.hpp"
 #include "ogive/output/html_report.hpp"
@@ -63,6 +64,7 @@ struct DrawOptions {
   SolverText solver_text;
   DrawTargets targets;
   ColumnText columns;
+  std::string compressive_strength;  // the limit analysis' f_c as given (--compressive-strength)
 };
 
 Columns draw_columns() {
@@ -74,8 +76,9 @@ Columns draw_columns() {
 // maximum thrust states as lines with their hinges (none where the arch cannot stand), and with a live
 // load the collapse mechanism; under a horizontal acceleration also the collapse state of the
 // acceleration a_c, with its four hinges.
-void add_limit_drawing(const Scene& scene, DrawingOptions& drawing) {
+void add_limit_drawing(const Scene& scene, double compressive_strength, DrawingOptions& drawing) {
   LimitOptions options;
+  options.compressive_strength = compressive_strength;
   options.horizontal_load_factor = scene.horizontal_acceleration != 0;
   const LimitResult r = analyse_limit(scene, options);
   add_limit_analysis(drawing, scene, r);
@@ -323,13 +326,16 @@ int run_draw(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
     refuse_inapplicable(cmd, "draw --spread-stage", kStageMoves);
     refuse_inapplicable(cmd, "draw --spread-stage", kNotForSpreadStage);
   }
+  const double compressive_strength = compressive_strength_of(d.compressive_strength, cmd);
+  if (std::isfinite(compressive_strength) && !to.limit)
+    throw UsageError("--compressive-strength: the strength of the rigid voussoirs of --limit's analysis; give --limit");
   const ScenePlan plan(d.scene, cmd);
   check_target_count(to, plan.size(), "drawing");
   const auto drawing_of = [&](const SceneParameters& p, const Scene& scene, Solution& sol) {
     sol = solve(scene, o);
     DrawingOptions drawing;
     drawing.title = draw_title(p);
-    if (to.limit) add_limit_drawing(scene, drawing);
+    if (to.limit) add_limit_drawing(scene, compressive_strength, drawing);
     if (to.spread_stage) add_spread_drawing(scene, *to.spread_stage, drawing);
     return arch_svg(scene, sol, drawing);
   };
@@ -392,6 +398,7 @@ int run_report(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
   report.solver = o;
   report.inputs = given_inputs(cmd);
   report.require = criteria_of(d.criteria);
+  report.limit.compressive_strength = compressive_strength_of(d.compressive_strength, cmd);
   report.warnings = default_warnings(cmd, d.scene.curve);
   report.date = report_date();
   if (to.output == "-")
@@ -424,6 +431,9 @@ std::shared_ptr<DrawOptions> add_picture_options(CLI::App& cmd, const char* outp
                  "points of the thrust line, springing to springing; must lie in [2, 1000000]")
       ->check(whole_count())
       ->capture_default_str();
+  add_compressive_strength_option(cmd, options->compressive_strength,
+                                  "the limit analysis' joints crush (stress blocks at its hinges); omitted: infinite "
+                                  "strength");
   cmd.add_option("--output", to.output, output_help);
   return options;
 }

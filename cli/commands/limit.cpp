@@ -2,6 +2,7 @@
 // collapse load; one row per scene, or (--thrust-line) one per joint of one state.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -140,11 +141,13 @@ void add_limit_setup(CsvRow& row, const LimitOptions& o) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   row.add(to_string(o.joints)).add(to_string(o.weight)).add(o.joints_count);
   row.add(o.friction > 0 ? o.friction : nan);
+  row.add(std::isfinite(o.compressive_strength) ? o.compressive_strength : nan);
 }
 
 // The columns of limit: a summary per scene, or (--thrust-line) one row per joint of one state.
 Columns limit_columns(bool lines, bool timed) {
-  std::vector<std::string> results = {"joints", "weight", "joints_count", "friction"}, defaults;
+  std::vector<std::string> results = {"joints", "weight", "joints_count", "friction", "compressive_strength"},
+                           defaults;
   const std::vector<std::string> summary = {
       "status", "H_min", "H_max", "V", "H_min_over_V", "H_max_over_V", "thickness_min_ratio",
       "geometric_safety_factor", "hinges_min", "hinges_max", "load_factor", "load_factor_mechanism",

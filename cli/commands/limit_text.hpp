@@ -2,6 +2,8 @@
 // "x/L:face".
 #pragma once
 
+#include <cmath>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -21,6 +23,10 @@ void add_compressive_strength_option(CLI::App& cmd, std::string& text, const cha
 // The strength in Pa: infinity when the option is not given (Heyman's infinite strength); UsageError
 // naming the option for a value that is not a finite number > 0.
 double compressive_strength_of(const std::string& text, const CLI::App& cmd);
+// A compressive stress (Pa) over f_c; NaN (an empty field) at infinite strength or without a stress.
+inline double stress_ratio(double stress, double compressive_strength) {
+  return std::isfinite(compressive_strength) ? stress / compressive_strength : std::numeric_limits<double>::quiet_NaN();
+}
 
 // --weight's names: voussoir (the ring's true weight at each centroid) or axis (rho g t per axis length).
 const std::map<std::string, WeightModel>& weight_models();

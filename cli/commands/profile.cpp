@@ -12,6 +12,7 @@
 #include "cli.hpp"
 #include "columns.hpp"
 #include "commands.hpp"
+#include "limit_text.hpp"
 #include "ogive/core/thrust_line.hpp"
 #include "ogive/solve/solve.hpp"
 #include "option_text.hpp"
@@ -29,6 +30,7 @@ struct ProfileOptions {
   Options solver;
   SolverText solver_text;
   ColumnText columns;
+  std::string compressive_strength;  // --compressive-strength as given (stress_ratio)
   int threads = 1;
 };
 
@@ -36,7 +38,7 @@ Columns profile_columns() {
   return Columns({"method", "integrator", "rtol", "status", "H_over_V", "error_estimate", "message", "s", "x", "y",
                   "theta", "intrados_x", "intrados_y", "extrados_x", "extrados_y", "Ux", "Uy", "psi", "N",
                   "shear_force", "M", "thrust_eccentricity", "thrust_x", "thrust_y", "compressed_depth", "cracked",
-                  "compressive_stress", "warning"},
+                  "compressive_stress", "stress_ratio", "warning"},
                  {"status", "message", "s", "x", "y", "theta", "intrados_x", "intrados_y", "extrados_x", "extrados_y",
                   "Ux", "Uy", "psi", "N", "shear_force", "M", "thrust_eccentricity", "thrust_x", "thrust_y",
                   "compressed_depth", "cracked", "warning"});
@@ -57,7 +59,7 @@ std::string_view section_warning(const ArchState& st) {
 }
 
 // One station's fields, after the scene's (the row's mark).
-void add_station(CsvRow& row, const ArchState& st, double thickness) {
+void add_station(CsvRow& row, const ArchState& st, double thickness, double compressive_strength) {
   // The section's two ends, so that a plot shows the thrust line against the masonry.
   const SectionFaces faces = section_faces(CurvePoint{st.x, st.y, st.theta, 0.0}, thickness);
   row.add(st.s).add(st.x).add(st.y).add(st.theta);
@@ -68,13 +70,14 @@ void add_station(CsvRow& row, const ArchState& st, double thickness) {
   if (std::isnan(st.compressed_depth)) row.add(std::string_view{});
   else row.add_bool(st.cracked);
   row.add(st.compressive_stress);
+  row.add(stress_ratio(st.compressive_stress, compressive_strength));
   row.add(section_warning(st));
 }
 
 // A solved scene's rows, one per station. The solve verified the profile at o.stations; longer profiles
 // are sampled piece by piece from the verified field, so that memory does not grow with the stations.
 void emit_stations(const Columns& columns, const SceneParameters& p, const Scene& scene, const Options& o,
-                   const Solution& sol, int stations, const Emit& emit) {
+                   const Solution& sol, int stations, double compressive_strength, const Emit& emit) {
   // The scene's fields are formatted once, then each station's after them.
   CsvRow row(columns.keep());
   add_scene_columns(row, p, scene.curve.get());
@@ -88,7 +91,7 @@ void emit_stations(const Columns& columns, const SceneParameters& p, const Scene
                                : sample_stations(sol, stations, first, count);
     std::string text;
     for (const ArchState& st : piece) {
-      add_station(row, st, scene.thickness);
+      add_station(row, st, scene.thickness, compressive_strength);
       text += row.take_to_mark();
     }
     emit(text);
@@ -112,6 +115,7 @@ int run_profile(ProfileOptions& po, const CLI::App& cmd, std::ostream& out) {
   }
   SolverSweep sweep = solver_sweep(po.solver, po.solver_text);
   const int stations = po.solver.stations;
+  const double compressive_strength = compressive_strength_of(po.compressive_strength, cmd);
   check_stations(stations);
   const ScenePlan plan(po.scene, cmd);
   check_rows(plan.size() * sweep.combinations.size(), stations);
@@ -138,7 +142,7 @@ int run_profile(ProfileOptions& po, const CLI::App& cmd, std::ostream& out) {
             continue;
           }
           ok = ok && sol.ok();
-          emit_stations(columns, p, scene, o, sol, stations, emit);
+          emit_stations(columns, p, scene, o, sol, stations, compressive_strength, emit);
         }
         return ok;
       },
@@ -157,6 +161,8 @@ Run add_profile_options(CLI::App& cmd) {
                  "stations, equally spaced in arc length, springing to springing; must lie in [2, 1000000]")
       ->check(whole_count())
       ->capture_default_str();
+  add_compressive_strength_option(cmd, options->compressive_strength,
+                                  "adds stress_ratio, each station's compressive stress over f_c");
   add_column_options(cmd, options->columns);
   add_threads_option(cmd, options->threads);
   return [options, &cmd](std::ostream& out) { return run_profile(*options, cmd, out); };

@@ -1,4 +1,5 @@
 // ogive thrust: the reactions H, V and H/V, one row per scene and solver combination.
+#include <cmath>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -9,6 +10,7 @@
 #include "cli.hpp"
 #include "columns.hpp"
 #include "commands.hpp"
+#include "limit_text.hpp"
 #include "ogive/core/thrust_line.hpp"
 #include "ogive/solve/solve.hpp"
 #include "row_writer.hpp"
@@ -25,6 +27,7 @@ struct ThrustOptions {
   Options solver;
   SolverText solver_text;
   ColumnText columns;
+  std::string compressive_strength;  // --compressive-strength as given (max_stress_ratio)
   int threads = 1;
 };
 
@@ -32,7 +35,7 @@ Columns thrust_columns() {
   return Columns(
       {"method", "integrator", "rtol", "status", "domain", "H", "V", "H_over_V", "H_left", "V_left", "M_left",
        "H_right", "V_right", "M_right", "max_thrust_eccentricity", "max_thrust_eccentricity_at", "thrust_in_kern",
-       "thrust_in_section", "max_compressive_stress", "max_compressive_stress_at", "steps", "rhs_evaluations", "segments", "newton_iterations", "condition_estimate",
+       "thrust_in_section", "max_compressive_stress", "max_compressive_stress_at", "max_stress_ratio", "steps", "rhs_evaluations", "segments", "newton_iterations", "condition_estimate",
        "error_estimate", "boundary_residual", "equilibrium_residual", "message", "beam_model", "model_error_estimate"},
       // The thrust line's and the stress's summaries are asked for by name (or --all-columns): each scans
       // the whole field,
@@ -49,7 +52,7 @@ std::string_view domain_of(const Solution& sol) {
 
 // One scene's row for one solver combination.
 std::string thrust_row(const Columns& columns, const SceneParameters& p, const Scene& scene, const Options& o,
-                       const Solution& sol, bool summary, bool stresses) {
+                       const Solution& sol, bool summary, bool stresses, double compressive_strength) {
   const ThrustLineSummary line = summary ? summarize_thrust_line(sol) : ThrustLineSummary{};
   const StressSummary stress = stresses ? summarize_compressive_stress(sol) : StressSummary{};
   CsvRow row(columns.keep());
@@ -63,6 +66,7 @@ std::string thrust_row(const Columns& columns, const SceneParameters& p, const S
   if (line.ok) row.add_bool(line.in_kern).add_bool(line.in_section);
   else row.add(std::string_view{}).add(std::string_view{});
   row.add(stress.max_compressive_stress).add(stress.max_compressive_stress_at);
+  row.add(stress_ratio(stress.max_compressive_stress, compressive_strength));
   const Diagnostics& d = sol.diagnostics;
   row.add(d.steps).add(d.rhs_evaluations).add(d.segments).add(d.newton_iterations);
   row.add(d.condition_estimate).add(d.error_estimate);
@@ -86,7 +90,9 @@ int run_thrust(ThrustOptions& to, const CLI::App& cmd, std::ostream& out) {
   for (Options& o : sweep.combinations) o.estimate_model_error = columns.selected("model_error_estimate");
   const bool summary = columns.selected("max_thrust_eccentricity") || columns.selected("max_thrust_eccentricity_at") ||
                        columns.selected("thrust_in_kern") || columns.selected("thrust_in_section");
-  const bool stresses = columns.selected("max_compressive_stress") || columns.selected("max_compressive_stress_at");
+  const bool stresses = columns.selected("max_compressive_stress") || columns.selected("max_compressive_stress_at") ||
+                        columns.selected("max_stress_ratio");
+  const double compressive_strength = compressive_strength_of(to.compressive_strength, cmd);
   // The summaries print eccentricities and stresses: their accuracy must be part of the error estimate
   // (the profile itself is not printed).
   if (summary || stresses)
@@ -106,7 +112,7 @@ int run_thrust(ThrustOptions& to, const CLI::App& cmd, std::ostream& out) {
           const Options& o = sweep.combinations[c];
           const Solution sol = solve(scene, o, continued ? &previous[c] : nullptr);
           if (continued && sol.field) previous[c] = sol;
-          text += thrust_row(columns, p, scene, o, sol, summary, stresses);
+          text += thrust_row(columns, p, scene, o, sol, summary, stresses, compressive_strength);
           ok = ok && sol.ok();
         }
         emit(text);
@@ -121,6 +127,8 @@ Run add_thrust_options(CLI::App& cmd) {
   auto options = std::make_shared<ThrustOptions>();
   add_scene_options(cmd, options->scene);
   add_solver_options(cmd, options->solver, options->solver_text);
+  add_compressive_strength_option(cmd, options->compressive_strength,
+                                  "adds max_stress_ratio, the greatest compressive stress over f_c");
   add_column_options(cmd, options->columns);
   add_threads_option(cmd, options->threads);
   return [options, &cmd](std::ostream& out) { return run_thrust(*options, cmd, out); };

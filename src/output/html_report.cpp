@@ -268,7 +268,7 @@ bool ReportOptions::is_valid(std::string* why) const {
     if (why) *why = fmt::format("spread_points: must lie in [2, 41], got {}", spread_points);
     return false;
   }
-  return solver.is_valid(why) && require.is_valid(why);
+  return solver.is_valid(why) && require.is_valid(why) && limit.is_valid(why);
 }
 
 std::string html_report(const Scene& scene, const ReportOptions& options) {
@@ -285,6 +285,7 @@ std::string html_report(const Scene& scene, const Solution& sol, const ReportOpt
   AssessmentOptions assessment;
   assessment.require = options.require;
   assessment.elastic = options.solver;
+  assessment.limit = options.limit;
   const Assessment a = assess(scene, assessment);
   const LimitResult& lim = a.limit;
   DrawingOptions drawing;

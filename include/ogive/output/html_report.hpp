@@ -45,7 +45,8 @@ struct ReportOptions {
   std::vector<std::pair<std::string, std::string>> inputs;  // the inputs as given: option, value
   Options solver;     // for the scene's solution and each point of the spreading chart
   int spread_points = 9;  // points of the chart (d = 0 and log-spaced 1e-6 L .. 1e-2 L), in [2, 41]
-  AssessmentCriteria require;         // the verdict's criteria (the limit analysis: LimitOptions' defaults)
+  AssessmentCriteria require;         // the verdict's criteria
+  LimitOptions limit;                 // the limit analysis' options (its horizontal_load_factor is the assessment's)
   std::vector<std::string> warnings;  // the caller's, in words, shown after the assessment's
   std::string date;                   // shown beside the version; empty: none
 
@@ -54,7 +55,7 @@ struct ReportOptions {
 };
 
 // The page (UTF-8 HTML). The scene must be valid (Scene::validate). It is solved with options.solver,
-// analysed by the limit analysis (default options) and, for the chart, solved with the no-tension
+// analysed by the limit analysis (options.limit) and, for the chart, solved with the no-tension
 // section at each spread. Throws std::invalid_argument naming the field for invalid options.
 std::string html_report(const Scene& scene, const ReportOptions& options);
 // The same page with the scene's solution given: `solution` must be solve(scene, options.solver) (a
