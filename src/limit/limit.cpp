@@ -43,6 +43,32 @@ std::vector<double> fractions_at(const Scene& scene, double t, const LimitOption
   return limit_detail::merged_fractions(std::move(f));
 }
 
+// The fraction between a load's joints and their neighbours on either side (crushing): far above
+// kFractionGap, far below the refinement's voussoirs.
+constexpr double kLoadSide = 1e-7;
+
+// With crushing, a hinge at a load's edge (under a point load, say) sits N / (2 f_c) inside the face, and
+// the section on one side of the load's line is not the one on the other: the joint through the
+// extrados point under the load carries it on one side only (the voussoir whose stretch ends there has
+// it), and the section just beyond, without the load, can be the one that crushes. So once a state has a
+// hinge inside a face (a stress block above the hinge tolerance) the next ring has a joint a hair's
+// breadth on either side of each load joint: without them the hinge closes in on the load joint only
+// linearly with the refinement. (Radial joints only: a vertical joint at the load is its line.)
+void add_stress_block_joints(const Scene& scene, const LimitOptions& options, const Ring& ring,
+                             const std::vector<Hinge>& hinges, std::vector<double>& out) {
+  if (!std::isfinite(options.compressive_strength) || options.joints != JointOrientation::radial) return;
+  const bool inside = std::any_of(hinges.begin(), hinges.end(), [&](const Hinge& h) {
+    if (h.face == Face::axis) return false;
+    const Joint& j = ring.joints[static_cast<std::size_t>(h.joint)];
+    const Eigen::Vector2d& face = h.face == Face::intrados ? j.intrados : j.extrados;
+    return (h.point - face).norm() > 1e-9 * (j.extrados - j.intrados).norm();
+  });
+  if (!inside) return;
+  for (double f : limit_detail::load_fractions(*scene.curve, scene.thickness, scene.loads, options))
+    for (double side : {-kLoadSide, kLoadSide})
+      if (f + side > 0 && f + side < 1) out.push_back(f + side);
+}
+
 // A joint whose force is below this fraction of the ring's load carries none (ThrustState::forceless).
 constexpr double kForceless = 1e-9;
 
@@ -533,8 +559,10 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
     r.message = "the LP of the feasibility margin stopped without an answer while searching t_min";
     return round;
   }
-  for (const ThrustState* st : {&r.min_state, &r.max_state, &r.collapse_state})
+  for (const ThrustState* st : {&r.min_state, &r.max_state, &r.collapse_state}) {
     limit_detail::add_refinement(ring, st->hinges, round.refinement);
+    add_stress_block_joints(scene, options, ring, st->hinges, round.refinement);
+  }
   if (!std::isnan(r.thickness_min))
     round.refinement.insert(round.refinement.end(), f.feasible_refinement.begin(), f.feasible_refinement.end());
   // The next ring is refined next to every joint the collapse state touches; the result lists the
@@ -632,6 +660,7 @@ HorizontalOutcome converge_horizontal(const Scene& scene, const LimitOptions& op
   for (int k = 0; k < kMaxLimitRefinements && !out.failed; ++k) {
     std::vector<double> refinement;
     limit_detail::add_refinement(out.ring, out.collapse.state.hinges, refinement);
+    add_stress_block_joints(scene, options, out.ring, out.collapse.state.hinges, refinement);
     if (refinement.empty()) {
       out.change = 0;
       break;
