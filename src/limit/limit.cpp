@@ -33,40 +33,41 @@ constexpr double kMarginTolerance = 1e-11;
 // negative number for the root-finder, which needs only the sign.
 constexpr double kNoMargin = -1.0;
 
-// The joints of the ring of thickness t: the refined fractions and those at the loads' edges, which
-// move with the faces as the thickness changes.
-std::vector<double> fractions_at(const Scene& scene, double t, const LimitOptions& options,
-                                 const std::vector<double>& refined) {
-  std::vector<double> f = refined;
-  const std::vector<double> at_loads = limit_detail::load_fractions(*scene.curve, t, scene.loads, options);
-  f.insert(f.end(), at_loads.begin(), at_loads.end());
-  return limit_detail::merged_fractions(std::move(f));
-}
-
-// The fraction between a load's joints and their neighbours on either side (crushing): far above
+// The fraction between a load's joints and their neighbours on either side (beside_loads): far above
 // kFractionGap, far below the refinement's voussoirs.
 constexpr double kLoadSide = 1e-7;
 
-// With crushing, a hinge at a load's edge (under a point load, say) sits N / (2 f_c) inside the face, and
-// the section on one side of the load's line is not the one on the other: the joint through the
-// extrados point under the load carries it on one side only (the voussoir whose stretch ends there has
-// it), and the section just beyond, without the load, can be the one that crushes. So once a state has a
-// hinge inside a face (a stress block above the hinge tolerance) the next ring has a joint a hair's
-// breadth on either side of each load joint: without them the hinge closes in on the load joint only
-// linearly with the refinement. (Radial joints only: a vertical joint at the load is its line.)
-void add_stress_block_joints(const Scene& scene, const LimitOptions& options, const Ring& ring,
-                             const std::vector<Hinge>& hinges, std::vector<double>& out) {
-  if (!std::isfinite(options.compressive_strength) || options.joints != JointOrientation::radial) return;
-  const bool inside = std::any_of(hinges.begin(), hinges.end(), [&](const Hinge& h) {
+// The joints of the ring of thickness t: the refined fractions and those at the loads' edges, which
+// move with the faces as the thickness changes; with `beside_loads`, also a joint a hair's breadth on
+// either side of each load's joint.
+//
+// Why beside_loads (crushing): a hinge at a load's edge (under a point load, say) sits N / (2 f_c) inside
+// the face, and the section on one side of the load's line is not the one on the other: the radial joint
+// through the extrados point under the load carries it on one side only (the voussoir whose stretch ends
+// there has it), and the section just beyond, without the load, can be the one that crushes. Without the
+// neighbours the hinge closes in on the load's joint only linearly with the refinement. (A vertical joint
+// at the load is its line: the neighbours do no harm.)
+std::vector<double> fractions_at(const Scene& scene, double t, const LimitOptions& options,
+                                 const std::vector<double>& refined, bool beside_loads) {
+  std::vector<double> f = refined;
+  const std::vector<double> at_loads = limit_detail::load_fractions(*scene.curve, t, scene.loads, options);
+  f.insert(f.end(), at_loads.begin(), at_loads.end());
+  if (beside_loads)
+    for (double x : at_loads)
+      for (double side : {-kLoadSide, kLoadSide})
+        if (x + side > 0 && x + side < 1) f.push_back(x + side);
+  return limit_detail::merged_fractions(std::move(f));
+}
+
+// Whether a hinge lies inside its face by more than the hinge tolerance (a crushing joint's stress
+// block): then the rings that follow have joints beside the loads' (fractions_at).
+bool stress_blocks(const Ring& ring, const std::vector<Hinge>& hinges) {
+  return std::any_of(hinges.begin(), hinges.end(), [&](const Hinge& h) {
     if (h.face == Face::axis) return false;
     const Joint& j = ring.joints[static_cast<std::size_t>(h.joint)];
     const Eigen::Vector2d& face = h.face == Face::intrados ? j.intrados : j.extrados;
     return (h.point - face).norm() > 1e-9 * (j.extrados - j.intrados).norm();
   });
-  if (!inside) return;
-  for (double f : limit_detail::load_fractions(*scene.curve, scene.thickness, scene.loads, options))
-    for (double side : {-kLoadSide, kLoadSide})
-      if (f + side > 0 && f + side < 1) out.push_back(f + side);
 }
 
 // A joint whose force is below this fraction of the ring's load carries none (ThrustState::forceless).
@@ -89,10 +90,13 @@ struct Work {
   // The previous round's optimal bases of the margin, the extreme thrusts and the collapse, by row key:
   // the next, finer ring starts from them (most of its joints are the coarser ring's).
   std::vector<LimitLp::RowKey> margin_basis, min_basis, max_basis, collapse_basis, horizontal_basis;
+  // A state had a hinge inside its face (crushing): the rings from then on have joints beside the loads'.
+  bool beside_loads = false;
 
   // Before another scene: nothing of the last one is reused, only the storage.
   void forget() {
     scratch.forget();
+    beside_loads = false;
     for (auto* basis : {&margin_basis, &min_basis, &max_basis, &collapse_basis, &horizontal_basis}) basis->clear();
   }
 };
@@ -129,11 +133,13 @@ struct MarginFunction {
   double feasible_t = std::numeric_limits<double>::infinity();
   std::vector<double> feasible_refinement;  // around the hinges of the thinnest admissible arch so far
   int basis_joints = 0;                     // the joints of the ring whose margin gave `basis`
+  bool feasible_blocks = false;             // the thinnest admissible arch's hinges: stress_blocks
 
   double operator()(double t) {
     scene.thickness = t;
     Ring& ring = work.margin_ring;
-    limit_detail::make_ring_at(scene, options, fractions_at(scene, t, options, refined), ring, work.scratch);
+    limit_detail::make_ring_at(scene, options, fractions_at(scene, t, options, refined, work.beside_loads), ring,
+                               work.scratch);
     LimitLp& lp = programs_of(ring, options, work, work.margin_lp);
     // A warm start needs the same joints (a load's joints can merge with others at some thickness).
     const bool warm = !basis.empty() && basis_joints == static_cast<int>(ring.joints.size());
@@ -150,6 +156,7 @@ struct MarginFunction {
       const ThrustState st =
           thrust_state(ring, a.H, a.V, a.M, a.load_factor, kThinnestHingeTolerance, options.compressive_strength);
       limit_detail::add_refinement(ring, st.hinges, feasible_refinement);
+      feasible_blocks = stress_blocks(ring, st.hinges);
     }
     return a.margin;
   }
@@ -478,8 +485,8 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   const Curve& curve = *scene.curve;
   Round round;
   LimitResult& r = round.result;
-  limit_detail::make_ring_at(scene, options, fractions_at(scene, scene.thickness, options, refined), r.ring,
-                             work.scratch);
+  limit_detail::make_ring_at(scene, options, fractions_at(scene, scene.thickness, options, refined, work.beside_loads),
+                             r.ring, work.scratch);
   const Ring& ring = r.ring;
   require_loaded(scene, ring);
   const bool live = ring.has_live_load();
@@ -561,10 +568,12 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   }
   for (const ThrustState* st : {&r.min_state, &r.max_state, &r.collapse_state}) {
     limit_detail::add_refinement(ring, st->hinges, round.refinement);
-    add_stress_block_joints(scene, options, ring, st->hinges, round.refinement);
+    if (stress_blocks(ring, st->hinges)) work.beside_loads = true;
   }
-  if (!std::isnan(r.thickness_min))
+  if (!std::isnan(r.thickness_min)) {
     round.refinement.insert(round.refinement.end(), f.feasible_refinement.begin(), f.feasible_refinement.end());
+    if (f.feasible_blocks) work.beside_loads = true;
+  }
   // The next ring is refined next to every joint the collapse state touches; the result lists the
   // mechanism's hinges (a thrust line along a face touches a run of joints, of which the mechanism needs
   // one).
@@ -650,7 +659,8 @@ HorizontalOutcome converge_horizontal(const Scene& scene, const LimitOptions& op
   HorizontalOutcome out;
   std::vector<double> refined = limit_detail::uniform_fractions(options.joints_count);
   auto round = [&](HorizontalCollapse& c) {
-    limit_detail::make_ring_at(scene, options, fractions_at(scene, scene.thickness, options, refined), out.ring,
+    limit_detail::make_ring_at(scene, options,
+                               fractions_at(scene, scene.thickness, options, refined, work.beside_loads), out.ring,
                                work.scratch);
     if (!horizontal_collapse(out.ring, options, work, c, out.lp_solves)) out.failed = true;
   };
@@ -660,7 +670,7 @@ HorizontalOutcome converge_horizontal(const Scene& scene, const LimitOptions& op
   for (int k = 0; k < kMaxLimitRefinements && !out.failed; ++k) {
     std::vector<double> refinement;
     limit_detail::add_refinement(out.ring, out.collapse.state.hinges, refinement);
-    add_stress_block_joints(scene, options, out.ring, out.collapse.state.hinges, refinement);
+    if (stress_blocks(out.ring, out.collapse.state.hinges)) work.beside_loads = true;
     if (refinement.empty()) {
       out.change = 0;
       break;
