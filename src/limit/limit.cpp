@@ -17,8 +17,6 @@ using limit_detail::LimitLp;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-using limit_detail::cross;
-
 // The thinnest arch the search for t_min tries, relative to the span.
 constexpr double kThinnestResolved = 1e-6;
 
@@ -41,12 +39,10 @@ constexpr double kLoadSide = 1e-7;
 // move with the faces as the thickness changes; with `beside_loads`, also a joint a hair's breadth on
 // either side of each load's joint.
 //
-// Why beside_loads (crushing): a hinge at a load's edge (under a point load, say) sits N / (2 f_c) inside
-// the face, and the section on one side of the load's line is not the one on the other: the radial joint
-// through the extrados point under the load carries it on one side only (the voussoir whose stretch ends
-// there has it), and the section just beyond, without the load, can be the one that crushes. Without the
-// neighbours the hinge closes in on the load's joint only linearly with the refinement. (A vertical joint
-// at the load is its line: the neighbours do no harm.)
+// Why beside_loads (crushing): a hinge under a load sits N / (2 f_c) inside the face, and the sections on
+// the two sides of the load's line differ: the radial joint through the extrados point under the load
+// carries it on one side only, and the section just beyond, without it, can be the one that crushes;
+// without the neighbours the hinge closes in on the load's joint only linearly with the refinement.
 std::vector<double> fractions_at(const Scene& scene, double t, const LimitOptions& options,
                                  const std::vector<double>& refined, bool beside_loads) {
   std::vector<double> f = refined;
@@ -69,9 +65,6 @@ bool stress_blocks(const Ring& ring, const std::vector<Hinge>& hinges) {
     return (h.point - face).norm() > 1e-9 * (j.extrados - j.intrados).norm();
   });
 }
-
-// A joint whose force is below this fraction of the ring's load carries none (ThrustState::forceless).
-constexpr double kForceless = 1e-9;
 
 // A joint whose crossing lies this close to a face (relative to the joint) is a hinge of the thinnest
 // arch: at t_min the margin is zero to the root-finder's tolerance, not to round-off.
@@ -221,61 +214,6 @@ const char* to_string(LimitStatus s) {
     case LimitStatus::not_converged: return "not_converged";
   }
   return "unknown";
-}
-
-ThrustState thrust_state(const Ring& ring, double H, double V_left, double M_left, double load_factor,
-                         double hinge_tolerance, double compressive_strength) {
-  const limit_detail::LoadsLeftOfJoints left = limit_detail::loads_left_of_joints(ring);
-  const bool live = ring.has_live_load();
-  const double lambda = live ? load_factor : 0.0;
-  ThrustState st;
-  st.H = H;
-  st.V_left = V_left;
-  st.load_factor = live ? load_factor : kNaN;
-  st.V_right = ring.total_dead() + lambda * ring.total_live() - V_left;
-  st.crossing.reserve(ring.joints.size());
-  // The scale below which a joint's force is none: the loads' (vanishing at no joint of a ring with
-  // weight, where the thrust is at least the weight's share).
-  const std::size_t last = ring.joints.size() - 1;
-  const double forceless = kForceless * (std::abs(left.dead[last].force) + std::abs(lambda * left.live[last].force) +
-                                         std::abs(ring.acceleration * left.dead[last].force));
-  std::size_t pin = 0;
-  for (std::size_t j = 0; j < ring.joints.size(); ++j) {
-    const Joint& joint = ring.joints[j];
-    // The force of the part left of the joint on the part right of it, and its moment about the origin.
-    // (A horizontal acceleration a adds a times the dead load left of it, and that load's moment.)
-    const double a = ring.acceleration;
-    const Eigen::Vector2d F(a == 0 ? H : H + a * left.dead[j].force,
-                            V_left - left.dead[j].force - lambda * left.live[j].force);
-    const double moment = a == 0 ? M_left - left.dead[j].moment - lambda * left.live[j].moment
-                                 : M_left - left.dead[j].moment - lambda * left.live[j].moment -
-                                       a * left.dead[j].height_moment;
-    // Its line meets the joint I + u (E - I) where (I + u d) x F = moment.
-    const Eigen::Vector2d d = joint.extrados - joint.intrados;
-    const double u = (moment - cross(joint.intrados, F)) / cross(d, F);
-    st.crossing.push_back(joint.intrados + u * d);
-    if (F.norm() <= forceless && !(pin < ring.pins.size() && ring.pins[pin] == static_cast<int>(j))) {
-      st.forceless = true;
-      continue;
-    }
-    if (pin < ring.pins.size() && ring.pins[pin] == static_cast<int>(j)) {
-      st.hinges.push_back({static_cast<int>(j), Face::axis, joint.axis});
-      ++pin;
-      continue;
-    }
-    if (std::isfinite(compressive_strength)) {
-      // The stress block N / f_c deep: its centre, N / (2 f_c) inside the face, is where the joint turns.
-      const double h = d.norm(), N = std::max(0.0, (F.x() * d.y() - F.y() * d.x()) / h);
-      const double inside = N / (2 * compressive_strength * h);
-      const Eigen::Vector2d& at = st.crossing.back();
-      if (u - inside <= hinge_tolerance) st.hinges.push_back({static_cast<int>(j), Face::intrados, at});
-      if (u + inside >= 1.0 - hinge_tolerance) st.hinges.push_back({static_cast<int>(j), Face::extrados, at});
-      continue;
-    }
-    if (u <= hinge_tolerance) st.hinges.push_back({static_cast<int>(j), Face::intrados, joint.intrados});
-    if (u >= 1.0 - hinge_tolerance) st.hinges.push_back({static_cast<int>(j), Face::extrados, joint.extrados});
-  }
-  return st;
 }
 
 namespace {
@@ -473,6 +411,17 @@ bool fails_virtual_work(LimitResult& r, const char* what, double static_factor, 
   return true;
 }
 
+// Why no thrust line stands: where it would have to fit, and whether a thicker arch would stand (t_min
+// below `t_cap`).
+std::string inadmissible_message(const LimitOptions& options, double t_min, double t_cap) {
+  std::string where = options.friction > 0 ? "inside the arch and its joints' friction cones" : "inside the arch";
+  if (std::isfinite(options.compressive_strength))
+    where += fmt::format(" clear of the stress blocks that crush its joints (compressive strength {:g} Pa)",
+                         options.compressive_strength);
+  return std::isnan(t_min) ? fmt::format("no thrust line fits {} at any thickness up to {} m", where, t_cap)
+                           : fmt::format("no thrust line fits {}: t < t_min", where);
+}
+
 // One analysis on the ring whose joints are `refined` and the loads' (fractions_at), and where the next
 // ring should be finer: next to every hinge of its states and of the thinnest arch.
 struct Round {
@@ -495,17 +444,14 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   r.V = 0.5 * (ring.total_dead() + ring.total_live());
   LimitLp& lp = programs_of(ring, options, work, work.lp);
   const int solves_before = lp.solves();
-  // `failure`: why the program failed when the LP itself did not (LimitLp::Answer::failure), or null.
-  auto fail = [&](const char* problem, const char* failure) {
+  auto fail = [&](const char* problem, const char* failure) {  // failure: LimitLp::Answer::failure
     r.status = LimitStatus::lp_failure;
-    r.message = failure ? fmt::format("the LP of {} stopped without an answer: {}", problem, failure)
-                        : fmt::format("the LP of {} stopped without an answer", problem);
+    r.message = fmt::format("the LP of {} stopped without an answer{}{}", problem, failure ? ": " : "", failure ? failure : "");
     r.lp_solves += lp.solves() - solves_before;
     return round;
   };
-  auto state = [&](const LimitLp::Answer& a) {
-    return thrust_state(ring, a.H, a.V, a.M, a.load_factor, 1e-9, options.compressive_strength);
-  };
+  const double f_c = options.compressive_strength;
+  auto state = [&](const LimitLp::Answer& a) { return thrust_state(ring, a.H, a.V, a.M, a.load_factor, 1e-9, f_c); };
 
   using Warm = const std::vector<int>*;
   LimitLp::Answer margin = solve_warm(lp, work.margin_basis, [&](Warm w) { return lp.margin(load_factor, w); });
@@ -581,13 +527,7 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   if (fails_virtual_work(r, "collapse load factor", r.load_factor(), r.load_factor_mechanism)) return round;
   if (!admissible) {
     r.status = LimitStatus::inadmissible;
-    std::string where = options.friction > 0 ? "inside the arch and its joints' friction cones" : "inside the arch";
-    if (std::isfinite(options.compressive_strength))
-      where += fmt::format(" clear of the stress blocks that crush its joints (compressive strength {:g} Pa)",
-                           options.compressive_strength);
-    r.message = std::isnan(r.thickness_min)
-                    ? fmt::format("no thrust line fits {} at any thickness up to {} m", where, t_cap)
-                    : fmt::format("no thrust line fits {}: t < t_min", where);
+    r.message = inadmissible_message(options, r.thickness_min, t_cap);
     return round;
   }
   r.status = LimitStatus::success;

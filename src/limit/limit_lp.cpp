@@ -196,9 +196,7 @@ struct LimitLp::Impl {
                  const std::vector<int>* warm);
   double normal_force(int joint, const std::array<double, kUnknowns>& z) const {
     const Normal& n = normals[static_cast<std::size_t>(joint)];
-    double N = n.c;
-    for (int c = 0; c < kUnknowns; ++c) N += n.a[c] * z[c];
-    return N;
+    return n.c + n.a[0] * z[0] + n.a[1] * z[1] + n.a[2] * z[2] + n.a[3] * z[3] + n.a[4] * z[4];
   }
   // How far z breaks the crushing condition of the joint's face (> 0: broken), in the rows' units.
   double crushing(int joint, int face, const std::array<double, kUnknowns>& z) const {
@@ -362,11 +360,7 @@ LimitLp::Answer LimitLp::Impl::optimise(const Objective& objective, const std::a
   if (std::isfinite(strength)) return crushed(objective, fixed, warm);
   Held& h = held;
   hold(rows, fixed, h);
-  if (h.infeasible) {
-    Answer infeasible;
-    infeasible.outcome = Outcome::infeasible;
-    return infeasible;
-  }
+  if (h.infeasible) return finish(Solved{Outcome::infeasible, {}, {}}, objective);
   return finish(solve(h, fixed, objective, warm), objective);
 }
 
@@ -471,11 +465,7 @@ LimitLp::Answer LimitLp::Impl::crushed(const Objective& objective, const std::ar
   for (int round = 0; round < kMaxCutRounds; ++round) {
     if (round > 0) ++cut_rounds;
     hold(rows, fixed, h);
-    if (h.infeasible) {
-      Answer infeasible;
-      infeasible.outcome = Outcome::infeasible;
-      return infeasible;
-    }
+    if (h.infeasible) return finish(Solved{Outcome::infeasible, {}, {}}, objective);
     const Solved s = solve(h, fixed, objective, start);
     if (s.outcome != Outcome::optimal) return finish(s, objective);
     const std::size_t before = cuts.size();
@@ -513,10 +503,7 @@ LimitLp::Impl::Solved LimitLp::Impl::dense(const Held& h, const std::array<doubl
     return clp(h, fixed, objective, warm);
   }
   Solved a;
-  if (d.outcome == DenseLpAnswer::Outcome::infeasible) {
-    a.outcome = Outcome::infeasible;
-    return a;
-  }
+  if (d.outcome == DenseLpAnswer::Outcome::infeasible) return Solved{Outcome::infeasible, {}, {}};
   a.outcome = Outcome::optimal;
   a.z = fixed;
   for (int c : h.free) a.z[c] = d.z[c];
@@ -657,8 +644,7 @@ LimitLp::Answer LimitLp::collapse(const std::vector<int>* warm) {
   // coefficient also times dead / live.
   if (p.live == LiveKind::vertical && dead > 0 && live > 0 &&
       (live > kCollapseScaleRatio * dead || dead > kCollapseScaleRatio * live)) {
-    // (With crushing, the cuts and the normal forces too, and f_c in the same unit: the condition
-    // N^2 / (2 f_c) scales with the rows when N and f_c both do.)
+    // (With crushing the cuts, the normal forces and f_c too: N^2 / (2 f_c) scales as the rows.)
     const std::vector<Inequality> given = p.rows;
     const std::vector<Impl::Normal> given_normals = p.normals;
     const std::size_t given_cuts = p.cuts.size();
