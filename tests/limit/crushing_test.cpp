@@ -57,9 +57,11 @@ Scene loaded_segmental() {
   return s;
 }
 
-LimitResult analyse(const Scene& scene, double f_c) {
+// With `acceleration`, a_c too.
+LimitResult analyse(const Scene& scene, double f_c, bool acceleration = false) {
   LimitOptions o;
   o.compressive_strength = f_c;
+  o.horizontal_load_factor = acceleration;
   return analyse_limit(scene, o);
 }
 
@@ -135,10 +137,7 @@ TEST_CASE("crushing: a very large strength gives Heyman's numbers") {
 TEST_CASE("crushing: the optimum's hinges sit N / (2 f_c) inside their faces, and virtual work agrees") {
   for (const Scene& scene : {loaded_semicircle(), loaded_segmental()}) {
     for (double f_c : {2e7, 5e6, 3e6}) {
-      LimitOptions o;
-      o.compressive_strength = f_c;
-      o.horizontal_load_factor = true;
-      const LimitResult r = analyse_limit(scene, o);
+      const LimitResult r = analyse(scene, f_c, true);
       INFO("f_c = " << f_c << ": " << r.message);
       REQUIRE(r.status == LimitStatus::success);
       for (const ThrustState* st : {&r.min_state, &r.max_state, &r.collapse_state}) {
@@ -164,10 +163,7 @@ TEST_CASE("crushing: the capacities fall monotonically with the strength") {
     double load_factor = std::numeric_limits<double>::infinity(), range = load_factor, safety = load_factor;
     double acceleration = load_factor;
     for (double f_c : {std::numeric_limits<double>::infinity(), 1e8, 2e7, 1e7, 5e6, 3e6}) {
-      LimitOptions o;
-      o.compressive_strength = f_c;
-      o.horizontal_load_factor = true;
-      const LimitResult r = analyse_limit(scene, o);
+      const LimitResult r = analyse(scene, f_c, true);
       INFO("f_c = " << f_c << ": " << r.message);
       REQUIRE(r.status == LimitStatus::success);
       CHECK(r.load_factor() < load_factor);
