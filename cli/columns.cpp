@@ -133,7 +133,7 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"weight", "", "limit, spread: voussoir (each voussoir's weight at its centroid) or axis (rho g t per axis length)"},
     {"joints_count", "", "limit, spread: joints springing to springing, both included"},
     {"friction", "", "limit: friction coefficient of the joints; empty: no sliding check"},
-    {"compressive_strength", "Pa", "limit, assess: the masonry's compressive strength f_c (kPa with --units kN, as the stresses); empty: infinite (no crushing)"},
+    {"compressive_strength", "Pa", "limit, spread, assess: the masonry's compressive strength f_c (kPa with --units kN, as the stresses); empty: infinite (no crushing)"},
     {"H_min", "N/m", "limit: minimum horizontal thrust of an admissible state"},
     {"H_max", "N/m", "limit: maximum horizontal thrust of an admissible state"},
     {"H_min_over_V", "", "limit: H_min / V, V half the total vertical load (the V column; with a symmetric scene, H_over_V's V_left)"},

@@ -52,6 +52,7 @@ struct SpreadText {
   int steps = SpreadOptions{}.steps;
   double increment_ratio = SpreadOptions{}.increment_ratio;
   double left_settlement_share = 0, right_settlement_share = 0;
+  std::string compressive_strength;  // as given (--compressive-strength)
   bool path = false;
   int threads = 1;
 };
@@ -100,6 +101,9 @@ void add_spread_analysis_options(CLI::App& cmd, SpreadText& t) {
                  "its hinges may roll to other joints), in [1e-4, 0.1]")
       ->check(finite_number())
       ->capture_default_str();
+  add_compressive_strength_option(cmd, t.compressive_strength,
+                                  "the rigid voussoirs' joints crush: each hinge turns about its stress block's centre, "
+                                  "N / (2 f_c) inside its face; omitted: infinite strength");
   cmd.add_flag("--path", t.path,
                "instead of the summary, the whole curve: the elastic arch at d = 0, the cracking arch, the mechanism "
                "to collapse, one row per point");
@@ -118,6 +122,7 @@ SpreadSetup spread_setup(const SpreadText& t, const CLI::App& cmd) {
   s.limit.weight = lookup(weight_models(), t.weight, "--weight");
   s.limit.joints = lookup(joint_orientations(), t.joints, "--joints");
   s.limit.joints_count = t.joints_count;
+  s.limit.compressive_strength = compressive_strength_of(t.compressive_strength, cmd);
   const MovingSprings moving = lookup(kMovingSprings, t.moving, "--moving");
   s.left_moves = moving != MovingSprings::right;
   s.right_moves = moving != MovingSprings::left;
@@ -146,7 +151,7 @@ SpreadSetup spread_setup(const SpreadText& t, const CLI::App& cmd) {
 
 Columns spread_columns(bool path) {
   std::vector<std::string> results = {"moving", "left_settlement_share", "right_settlement_share", "joints", "weight",
-                                      "joints_count", "path_steps"};
+                                      "joints_count", "compressive_strength", "path_steps"};
   // The summary: the elastic arch at d = 0, the plateau, the capacity and the state at collapse.
   const std::vector<std::string> summary = {
       "status", "H_elastic", "V_elastic", "H_over_V_elastic", "H_plateau", "V_plateau", "H_over_V_plateau",
@@ -162,7 +167,10 @@ Columns spread_columns(bool path) {
 
 void add_setup(CsvRow& row, const SpreadText& t, const SpreadSetup& s) {
   row.add(t.moving).add(s.spread.left_settlement_share).add(s.spread.right_settlement_share);
-  row.add(to_string(s.limit.joints)).add(to_string(s.limit.weight)).add(s.limit.joints_count).add(s.spread.steps);
+  row.add(to_string(s.limit.joints)).add(to_string(s.limit.weight)).add(s.limit.joints_count);
+  row.add(std::isfinite(s.limit.compressive_strength) ? s.limit.compressive_strength
+                                                      : std::numeric_limits<double>::quiet_NaN());
+  row.add(s.spread.steps);
 }
 
 // The crown's drop (m, downwards positive) of a solved elastic or cracking arch; NaN without a field.

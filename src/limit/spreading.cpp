@@ -256,7 +256,9 @@ class Path {
   Path(const Ring& ring0, const LimitOptions& limit, const SpreadOptions& spread)
       : ring0_(ring0),
         friction_(limit.friction),
-        lp_(ring0, limit.friction),
+        compressive_strength_(limit.compressive_strength),
+        lp_(ring0, limit.friction, nullptr, limit_detail::LpSolver::dense, limit_detail::LiveKind::vertical,
+            limit.compressive_strength),
         vL_(-spread.left_share, -spread.left_settlement_share),
         vR_(spread.right_share, -spread.right_settlement_share),
         live_factor_(ring0.has_live_load() ? 1.0 : 0.0) {}
@@ -292,7 +294,9 @@ class Path {
       if (o != Outcome::admissible) return o;
       const std::vector<Hinge> contacts = on_ring0(to.mechanism.hinges);
       if (same_hinges(contacts, hinges)) {
-        to.hinges = std::move(hinges);
+        // The contacts' points: with a finite compressive strength a hinge follows its stress block's
+        // centre as the joint's normal force changes (else they are the hinges' own face points).
+        to.hinges = contacts;
         to.phi = std::move(phi);
         return o;
       }
@@ -311,12 +315,12 @@ class Path {
   // The state of the pieces `at`, movement d: the program's answer, its contacts' mechanism.
   Outcome evaluate(Placement at, double d, const std::vector<int>* warm, State& s) {
     place_ring(ring0_, at, moved_);
-    lp_.load(moved_, friction_);
+    lp_.load(moved_, friction_, compressive_strength_);
     // The least work on the movement: H (vR - vL).x - V_left vL.y - V_right vR.y, V_right = total - V_left.
     const LimitLp::Answer a = lp_.least_work(live_factor_, vR_.x() - vL_.x(), vR_.y() - vL_.y(), warm);
     if (a.outcome == LimitLp::Outcome::infeasible) return Outcome::inadmissible;
     if (a.outcome != LimitLp::Outcome::optimal) return Outcome::lp_failure;
-    const ThrustState st = thrust_state(moved_, a.H, a.V, a.M, live_factor_);
+    const ThrustState st = thrust_state(moved_, a.H, a.V, a.M, live_factor_, 1e-9, compressive_strength_);
     Mechanism mech = choose_mechanism(moved_, st.hinges, vL_, vR_);
     if (!mech.found()) return Outcome::snap_through;
     s.at = std::move(at);
@@ -337,14 +341,31 @@ class Path {
   }
 
   const Ring& moved() const { return moved_; }
+  double compressive_strength() const { return compressive_strength_; }
   const Ring& ring() const { return ring0_; }
 
  private:
-  // The hinges with their points on the ring at d = 0.
+  // The hinges of the moved ring with their points on the ring at d = 0: a face's point, or with a
+  // finite compressive strength the point as far inside the face (along the joint, in its fraction of
+  // the joint's length) as the stress block's centre on the moved ring.
   std::vector<Hinge> on_ring0(std::vector<Hinge> hinges) const {
     for (Hinge& h : hinges) {
-      const Joint& j = ring0_.joints[static_cast<std::size_t>(h.joint)];
-      h.point = h.face == Face::intrados ? j.intrados : h.face == Face::extrados ? j.extrados : j.axis;
+      const std::size_t k = static_cast<std::size_t>(h.joint);
+      const Joint& j = ring0_.joints[k];
+      if (h.face == Face::axis) {
+        h.point = j.axis;
+        continue;
+      }
+      const Vec& face = h.face == Face::intrados ? j.intrados : j.extrados;
+      if (!std::isfinite(compressive_strength_)) {
+        h.point = face;
+        continue;
+      }
+      const Joint& moved = moved_.joints[k];
+      const Vec& moved_face = h.face == Face::intrados ? moved.intrados : moved.extrados;
+      const double inside = (h.point - moved_face).norm() / (moved.extrados - moved.intrados).norm();
+      const Vec& other = h.face == Face::intrados ? j.extrados : j.intrados;
+      h.point = face + inside * (other - face);
     }
     return hinges;
   }
@@ -382,6 +403,7 @@ class Path {
 
   const Ring& ring0_;
   const double friction_;
+  const double compressive_strength_;  // f_c, Pa (infinity: none)
   LimitLp lp_;
   Ring moved_;
   const Vec vL_, vR_;
