@@ -14,6 +14,7 @@
 #include "limit/limit_internal.hpp"
 #include "ogive/geometry/curve_families.hpp"
 #include "ogive/limit/limit.hpp"
+#include "ogive/solve/assessment.hpp"
 #include "support/tolerances.hpp"
 
 using namespace ogive;
@@ -285,4 +286,19 @@ TEST_CASE("crushing: misuse and an arch crushed under its own weight") {
   CHECK(std::isnan(r.H_min()));
   CHECK(std::isnan(r.H_max()));
   CHECK(r.message.find("crush") != std::string::npos);
+}
+
+TEST_CASE("crushing: the assessment's factors honour the strength, and the spreading capacity is not assessed") {
+  AssessmentOptions o;
+  o.require.spread_capacity_ratio = 0.01;
+  o.limit.compressive_strength = 3e6;
+  const Scene scene = loaded_semicircle();
+  const Assessment a = assess(scene, o);
+  const LimitResult direct = analyse(scene, 3e6);
+  CHECK(a.limit.thickness_min == direct.thickness_min);
+  CHECK(a.limit.load_factor() == direct.load_factor());
+  const CriterionResult& spread = a.criteria[static_cast<int>(Criterion::spread_capacity_ratio)];
+  CHECK(spread.outcome == Outcome::not_assessed);
+  CHECK(std::isnan(spread.value));
+  CHECK(spread.reason.find("compressive strength") != std::string::npos);
 }
