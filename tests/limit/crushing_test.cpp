@@ -302,3 +302,31 @@ TEST_CASE("crushing: the assessment's factors honour the strength, and the sprea
   CHECK(std::isnan(spread.value));
   CHECK(spread.reason.find("compressive strength") != std::string::npos);
 }
+
+TEST_CASE("crushing: the cuts' programs solved by Clp give the dense method's optima") {
+  // The same convex programs through the independent LP library: the cut loop converges to the same
+  // optimum whichever simplex code solves its linear programs.
+  constexpr double kTwoSolvers = 1e-9;  // both hold the crushing rows to 1e-11 of W L
+  for (const Scene& scene : {loaded_semicircle(), loaded_segmental()}) {
+    LimitOptions o;
+    o.compressive_strength = 3e6;
+    const Ring ring = make_ring(scene, o);
+    using limit_detail::LimitLp;
+    using limit_detail::LpSolver;
+    LimitLp dense(ring, 0.0, nullptr, LpSolver::dense, limit_detail::LiveKind::vertical, 3e6);
+    LimitLp clp(ring, 0.0, nullptr, LpSolver::clp, limit_detail::LiveKind::vertical, 3e6);
+    for (bool largest : {false, true}) {
+      const LimitLp::Answer a = dense.extreme_thrust(1.0, largest), b = clp.extreme_thrust(1.0, largest);
+      REQUIRE(a.outcome == LimitLp::Outcome::optimal);
+      REQUIRE(b.outcome == LimitLp::Outcome::optimal);
+      CHECK(close(a.H, b.H, kTwoSolvers));
+    }
+    const LimitLp::Answer a = dense.collapse(), b = clp.collapse();
+    REQUIRE(a.outcome == LimitLp::Outcome::optimal);
+    REQUIRE(b.outcome == LimitLp::Outcome::optimal);
+    CHECK(close(a.load_factor, b.load_factor, kTwoSolvers));
+    const LimitLp::Answer m = dense.margin(1.0), n = clp.margin(1.0);
+    CHECK(std::abs(m.margin - n.margin) <= kTwoSolvers);
+    CHECK(dense.cut_rounds() > 0);
+  }
+}
