@@ -86,9 +86,15 @@ CriterionResult acceleration(const LimitResult& lr, double need) {
   return judged(c, lr.horizontal_load_factor(), need);
 }
 
-CriterionResult spreading(const Scene& scene, const SpreadOptions& o, const SpreadResult& sr, double need) {
+CriterionResult spreading(const Scene& scene, const LimitOptions& limit, const SpreadOptions& o,
+                          const SpreadResult& sr, double need) {
   const Criterion c = Criterion::spread_capacity_ratio;
   if (!required(need)) return not_required(c);
+  // The spreading path's voussoirs do not crush: its capacity would be that of infinite strength, too
+  // large (unsafe) for masonry that crushes.
+  if (std::isfinite(limit.compressive_strength))
+    return unassessed(c, need, "the spreading path does not take a compressive strength (its capacity would be "
+                               "that of infinite strength, unsafe)");
   if (scene.horizontal_acceleration != 0) {
     CriterionResult r = result(c, Outcome::not_applicable, need);
     r.reason = "the spreading mechanism carries vertical loads only: no horizontal acceleration";
@@ -236,13 +242,14 @@ Assessment assess(const Scene& scene, const AssessmentOptions& options) {
   LimitOptions limit = options.limit;
   limit.horizontal_load_factor = required(need.horizontal_load_factor);
   a.limit = analyse_limit(scene, limit);
-  if (required(need.spread_capacity_ratio) && scene.horizontal_acceleration == 0)
+  if (required(need.spread_capacity_ratio) && scene.horizontal_acceleration == 0 &&
+      !std::isfinite(options.limit.compressive_strength))
     a.spreading = analyse_spreading(scene, options.limit, options.spread);
 
   a.criteria = {geometric_factor(scene, a.limit, need.geometric_safety_factor),
                 load_factor(a.limit, need.load_factor),
                 acceleration(a.limit, need.horizontal_load_factor),
-                spreading(scene, options.spread, a.spreading, need.spread_capacity_ratio),
+                spreading(scene, options.limit, options.spread, a.spreading, need.spread_capacity_ratio),
                 thrust_line(a.solution, line, need.thrust)};
   decide(a);
   add_warnings(a, scene, line);

@@ -235,6 +235,30 @@ TEST_CASE("csv: the largest compressive stress - against a dense profile - kPa w
   CHECK(documented({"thrust"}).at("max_compressive_stress").first == "Pa");
 }
 
+TEST_CASE("csv: --compressive-strength adds the stresses' ratio to f_c - the same with --units kN") {
+  const std::vector<std::string> scene = {"--curve", "semicircular", "--live-load", "5kN/m2", "--live-load-to", "0.5"};
+  auto with = [&](std::vector<std::string> command, const std::vector<std::string>& more) {
+    command.insert(command.begin() + 1, scene.begin(), scene.end());
+    command.insert(command.end(), more.begin(), more.end());
+    return run_command(command);
+  };
+  const Run t = with({"thrust"}, {"--compressive-strength", "2.5MPa", "--columns", "max_compressive_stress,max_stress_ratio"});
+  REQUIRE(t.status == 0);
+  CHECK(ogive::close(std::stod(column(t.out, "max_stress_ratio")), std::stod(column(t.out, "max_compressive_stress")) / 2.5e6,
+                     ogive::kExact));
+  const Run kn = with({"thrust"}, {"--compressive-strength", "2.5MPa", "--units", "kN", "--columns", "max_stress_ratio"});
+  REQUIRE(kn.status == 0);
+  CHECK(column(kn.out.substr(kn.out.find('\n') + 1), "max_stress_ratio") == column(t.out, "max_stress_ratio"));
+  const Run p = with({"profile"}, {"--stations", "5", "--compressive-strength", "2.5MPa", "--columns", "compressive_stress,stress_ratio"});
+  REQUIRE(p.status == 0);
+  for (std::size_t row = 1; row <= 5; ++row)
+    CHECK(ogive::close(std::stod(column(p.out, "stress_ratio", row)), std::stod(column(p.out, "compressive_stress", row)) / 2.5e6,
+                       ogive::kExact));
+  // Without the option the ratio is empty; a bad strength is refused.
+  CHECK(column(with({"thrust"}, {"--columns", "max_stress_ratio"}).out, "max_stress_ratio").empty());
+  CHECK(with({"profile"}, {"--compressive-strength", "-2MPa"}).status == 2);
+}
+
 TEST_CASE("csv: profile prints each section's intrados and extrados points - t apart, centred on the axis") {
   const Run r = run_command({"profile", "--eccentricity", "0.5", "--thickness-ratio", "0.2", "--stations", "21"});
   REQUIRE(r.status == 0);

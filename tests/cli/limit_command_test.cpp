@@ -251,3 +251,43 @@ TEST_CASE("cli: limit --joints and --weight take lists: a row for each, each the
   CHECK(limit_cli({"--weight", "voussoir,"}).status == 2);
   CHECK(limit_cli({"--joints", "radial,diagonal"}).status == 2);
 }
+
+TEST_CASE("cli: --compressive-strength in Pa or with a unit of stress; bad values refused with one line") {
+  const std::vector<std::string> scene = {"--curve", "semicircular", "--span", "10", "--density", "2000",
+                                          "--columns", "compressive_strength,status,thickness_min_ratio"};
+  auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = scene;
+    args.insert(args.end(), extra.begin(), extra.end());
+    return limit_cli(args);
+  };
+  const Run pa = with({"--compressive-strength", "3924000"}), mpa = with({"--compressive-strength", "3.924MPa"});
+  REQUIRE(pa.status == 0);
+  CHECK(pa.out == mpa.out);
+  CHECK(field(pa.out, "compressive_strength") == "3924000");
+  CHECK(field(pa.out, "status") == "success");
+  // Not scaled by --units (a stress): the same t_min; the column prints in kPa as the stresses do.
+  const Run kn = with({"--compressive-strength", "3.924MPa", "--units", "kN"});
+  REQUIRE(kn.status == 0);
+  const std::string table = kn.out.substr(kn.out.find('\n') + 1);  // after the '# units: kN' line
+  CHECK(field(table, "thickness_min_ratio") == field(pa.out, "thickness_min_ratio"));
+  CHECK(field(table, "compressive_strength") == "3924");
+  // Without the option: no strength, Heyman's t_min.
+  const Run heyman = with({});
+  CHECK(field(heyman.out, "compressive_strength").empty());
+  CHECK(std::stod(field(heyman.out, "thickness_min_ratio")) < std::stod(field(pa.out, "thickness_min_ratio")));
+  for (const char* bad : {"0", "-1", "nan", "inf", "3xPa", "1e400", "3MPa,4MPa"}) {
+    CAPTURE(bad);
+    const Run r = with({"--compressive-strength", bad});
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err.find("--compressive-strength") != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  }
+  // Too weak for the arch's own weight: an answer (inadmissible), whose message says the joints crush.
+  const Run weak = limit_cli({"--curve", "semicircular", "--compressive-strength", "1kPa", "--columns",
+                              "status,H_min,message"});
+  REQUIRE(weak.status == 0);
+  CHECK(field(weak.out, "status") == "inadmissible");
+  CHECK(field(weak.out, "H_min").empty());
+  CHECK(weak.out.find("crush") != std::string::npos);
+}

@@ -9,9 +9,12 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/LU>
+
 #include "limit/limit_internal.hpp"
 #include "ogive/geometry/curve_families.hpp"
 #include "ogive/limit/limit.hpp"
+#include "ogive/solve/assessment.hpp"
 #include "support/tolerances.hpp"
 
 using namespace ogive;
@@ -98,6 +101,59 @@ Offsets offsets(const Ring& ring, const ThrustState& st, double f_c) {
   return out;
 }
 
+// The upper-bound (kinematic) multiplier of the collapse state's four hinges with the flow rule of the
+// crushing condition: each joint turns about the edge of its stress block (the neutral axis, N / f_c
+// inside the face, where the block's strain rate vanishes), not about the block's centre, and the block
+// dissipates N^2 / (2 f_c) per unit of relative rotation. Its own kinematics and work sums, independent
+// of mechanism_load_factor; N from the joints' equilibrium at the static state.
+double dissipation_multiplier(const Ring& ring, const ThrustState& st, double f_c) {
+  const limit_detail::LoadsLeftOfJoints left = limit_detail::loads_left_of_joints(ring);
+  const std::vector<Hinge>& h = st.hinges;
+  REQUIRE(h.size() == 4);
+  std::vector<Eigen::Vector2d> centre;
+  std::vector<double> N;
+  for (const Hinge& hinge : h) {
+    const std::size_t j = static_cast<std::size_t>(hinge.joint);
+    const Joint& joint = ring.joints[j];
+    const Eigen::Vector2d F(st.H, st.V_left - left.dead[j].force - st.load_factor * left.live[j].force);
+    const Eigen::Vector2d d = (joint.extrados - joint.intrados).normalized();
+    N.push_back(F.dot(Eigen::Vector2d(d.y(), -d.x())));
+    const double depth = N.back() / f_c;
+    centre.push_back(hinge.face == Face::intrados ? Eigen::Vector2d(joint.intrados + depth * d)
+                                                  : Eigen::Vector2d(joint.extrados - depth * d));
+  }
+  // Three bodies between the hinges, each (u, v, omega); at each hinge the bodies on either side (the
+  // ground beyond the first and last) move alike at the turning point.
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(8, 9);
+  for (int i = 0; i < 4; ++i)
+    for (int b : {i - 1, i}) {
+      if (b < 0 || b > 2) continue;
+      const double sign = b == i ? 1.0 : -1.0;
+      A(2 * i, 3 * b) += sign;
+      A(2 * i, 3 * b + 2) -= sign * centre[static_cast<std::size_t>(i)].y();
+      A(2 * i + 1, 3 * b + 1) += sign;
+      A(2 * i + 1, 3 * b + 2) += sign * centre[static_cast<std::size_t>(i)].x();
+    }
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
+  REQUIRE(lu.dimensionOfKernel() == 1);
+  const Eigen::VectorXd mode = lu.kernel().col(0);
+  double dead = 0, live = 0;  // the loads' work rates: a downward force F at x does -F (v + omega x)
+  for (int b = 0; b < 3; ++b)
+    for (int k = h[static_cast<std::size_t>(b)].joint; k < h[static_cast<std::size_t>(b) + 1].joint; ++k) {
+      const Voussoir& v = ring.voussoirs[static_cast<std::size_t>(k)];
+      dead -= mode(3 * b + 1) * v.dead().force + mode(3 * b + 2) * v.dead().moment;
+      live -= mode(3 * b + 1) * v.live.force + mode(3 * b + 2) * v.live.moment;
+    }
+  double dissipated = 0;
+  for (int i = 0; i < 4; ++i) {
+    const double right = i < 3 ? mode(3 * i + 2) : 0.0, left_turn = i > 0 ? mode(3 * (i - 1) + 2) : 0.0;
+    dissipated += N[static_cast<std::size_t>(i)] * N[static_cast<std::size_t>(i)] / (2 * f_c) *
+                  std::abs(right - left_turn);
+  }
+  if (live < 0) dead = -dead, live = -live;  // the sense in which the live load does positive work
+  return (dissipated - dead) / live;
+}
+
 // The strength at which `scene` just stands (bisection on its status, to 1e-6 relative): the lowest
 // f_c with an admissible state.
 double just_standing(const Scene& scene, double lo, double hi) {
@@ -152,6 +208,9 @@ TEST_CASE("crushing: the optimum's hinges sit N / (2 f_c) inside their faces, an
       // static multiplier.
       CHECK(r.collapse_state.hinges.size() == 4);
       CHECK(close(mechanism_load_factor(r.ring, r.collapse_state.hinges), r.load_factor(), kVirtualWork));
+      // The same multiplier by the kinematic theorem of the crushing model: the blocks turning about the
+      // stress blocks' edges, the work of the loads balanced by what the blocks dissipate.
+      CHECK(close(dissipation_multiplier(r.ring, r.collapse_state, f_c), r.load_factor(), kVirtualWork));
       CHECK(close(mechanism_horizontal_load_factor(r.horizontal_ring, r.horizontal_state.hinges),
                   r.horizontal_load_factor(), kVirtualWork));
     }
@@ -227,4 +286,47 @@ TEST_CASE("crushing: misuse and an arch crushed under its own weight") {
   CHECK(std::isnan(r.H_min()));
   CHECK(std::isnan(r.H_max()));
   CHECK(r.message.find("crush") != std::string::npos);
+}
+
+TEST_CASE("crushing: the assessment's factors honour the strength, and the spreading capacity is not assessed") {
+  AssessmentOptions o;
+  o.require.spread_capacity_ratio = 0.01;
+  o.limit.compressive_strength = 3e6;
+  const Scene scene = loaded_semicircle();
+  const Assessment a = assess(scene, o);
+  const LimitResult direct = analyse(scene, 3e6);
+  CHECK(a.limit.thickness_min == direct.thickness_min);
+  CHECK(a.limit.load_factor() == direct.load_factor());
+  const CriterionResult& spread = a.criteria[static_cast<int>(Criterion::spread_capacity_ratio)];
+  CHECK(spread.outcome == Outcome::not_assessed);
+  CHECK(std::isnan(spread.value));
+  CHECK(spread.reason.find("compressive strength") != std::string::npos);
+}
+
+TEST_CASE("crushing: the cuts' programs solved by Clp give the dense method's optima") {
+  // The same convex programs through the independent LP library: the cut loop converges to the same
+  // optimum whichever simplex code solves its linear programs.
+  constexpr double kTwoSolvers = 1e-9;  // both hold the crushing rows to 1e-11 of W L
+  for (const Scene& scene : {loaded_semicircle(), loaded_segmental()}) {
+    LimitOptions o;
+    o.compressive_strength = 3e6;
+    const Ring ring = make_ring(scene, o);
+    using limit_detail::LimitLp;
+    using limit_detail::LpSolver;
+    LimitLp dense(ring, 0.0, nullptr, LpSolver::dense, limit_detail::LiveKind::vertical, 3e6);
+    LimitLp clp(ring, 0.0, nullptr, LpSolver::clp, limit_detail::LiveKind::vertical, 3e6);
+    for (bool largest : {false, true}) {
+      const LimitLp::Answer a = dense.extreme_thrust(1.0, largest), b = clp.extreme_thrust(1.0, largest);
+      REQUIRE(a.outcome == LimitLp::Outcome::optimal);
+      REQUIRE(b.outcome == LimitLp::Outcome::optimal);
+      CHECK(close(a.H, b.H, kTwoSolvers));
+    }
+    const LimitLp::Answer a = dense.collapse(), b = clp.collapse();
+    REQUIRE(a.outcome == LimitLp::Outcome::optimal);
+    REQUIRE(b.outcome == LimitLp::Outcome::optimal);
+    CHECK(close(a.load_factor, b.load_factor, kTwoSolvers));
+    const LimitLp::Answer m = dense.margin(1.0), n = clp.margin(1.0);
+    CHECK(std::abs(m.margin - n.margin) <= kTwoSolvers);
+    CHECK(dense.cut_rounds() > 0);
+  }
 }

@@ -1,14 +1,17 @@
 // Limit analysis of the no-tension masonry arch (Heyman): which thrusts an arch of rigid voussoirs can
 // carry, how thin it could be, and which load makes it collapse, through which hinges.
 //
-// The model: rigid voussoirs, joints that resist no tension, infinite compressive strength, no sliding
-// unless a friction coefficient is given. The whole arch, springing to springing, is cut into voussoirs
+// The model: rigid voussoirs, joints that resist no tension, infinite compressive strength unless one is
+// given (LimitOptions::compressive_strength: the joints then crush), no sliding unless a friction
+// coefficient is given. The whole arch, springing to springing, is cut into voussoirs
 // by joints; each joint is a straight segment from the intrados to the extrados. An arch is admissible
 // (can stand) when some thrust line in equilibrium with the loads crosses every joint between its
 // intrados and extrados points (the static or safe theorem). With vertical loads only, the thrust line
 // is fixed by three unknowns (the horizontal thrust H, the left support's vertical reaction and its
 // moment) and, under a live load, its multiplier; every joint condition is linear in them, so every
-// question below is a linear program (src/limit/limit_lp.cpp, the only file with the LP library).
+// question below is a linear program (src/limit/limit_lp.cpp, the only file with the LP library). With
+// a finite compressive strength each joint's condition is convex instead, and each question is solved
+// exactly by tangent cuts added to the same linear program.
 //
 // The scene's loads (Scene::loads), in two groups:
 //   dead (factor 1): the self-weight (density; 0 allowed with another load) and the fills, q(x) =
@@ -290,8 +293,9 @@ struct LimitResult {
 //
 // t_min (same axis, stereotomy and loads; the fill follows the extrados) is found by a bracketing
 // root-finder (Illinois) on the LP's feasibility margin: the largest mu such that each joint's
-// resultant stays at least mu |joint| W away (in moment, W the total load) from both faces; mu >= 0
-// exactly when the arch is admissible. Relative tolerance 1e-10 on t.
+// resultant stays at least mu |joint| W away (in moment, W the total load) from both faces (with a finite
+// compressive strength, from the stress blocks N / (2 f_c) inside them); mu >= 0 exactly when the arch
+// is admissible. Relative tolerance 1e-10 on t.
 LimitResult analyse_limit(const Scene& scene, const LimitOptions& options);
 
 // The state of a thrust line with reactions (H, V_left) and left-support moment M_left about the origin
