@@ -90,11 +90,6 @@ CriterionResult spreading(const Scene& scene, const LimitOptions& limit, const S
                           const SpreadResult& sr, double need) {
   const Criterion c = Criterion::spread_capacity_ratio;
   if (!required(need)) return not_required(c);
-  // The spreading path's voussoirs do not crush: its capacity would be that of infinite strength, too
-  // large (unsafe) for masonry that crushes.
-  if (std::isfinite(limit.compressive_strength))
-    return unassessed(c, need, "the spreading path does not take a compressive strength (its capacity would be "
-                               "that of infinite strength, unsafe)");
   if (scene.horizontal_acceleration != 0) {
     CriterionResult r = result(c, Outcome::not_applicable, need);
     r.reason = "the spreading mechanism carries vertical loads only: no horizontal acceleration";
@@ -242,8 +237,7 @@ Assessment assess(const Scene& scene, const AssessmentOptions& options) {
   LimitOptions limit = options.limit;
   limit.horizontal_load_factor = required(need.horizontal_load_factor);
   a.limit = analyse_limit(scene, limit);
-  if (required(need.spread_capacity_ratio) && scene.horizontal_acceleration == 0 &&
-      !std::isfinite(options.limit.compressive_strength))
+  if (required(need.spread_capacity_ratio) && scene.horizontal_acceleration == 0)
     a.spreading = analyse_spreading(scene, options.limit, options.spread);
 
   a.criteria = {geometric_factor(scene, a.limit, need.geometric_safety_factor),

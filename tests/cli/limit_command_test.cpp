@@ -252,7 +252,7 @@ TEST_CASE("cli: limit --joints and --weight take lists: a row for each, each the
   CHECK(limit_cli({"--joints", "radial,diagonal"}).status == 2);
 }
 
-TEST_CASE("cli: --compressive-strength in Pa or with a unit of stress; bad values refused with one line") {
+TEST_CASE("cli: --compressive-strength in Pa or with a unit of stress, bad values refused with one line") {
   const std::vector<std::string> scene = {"--curve", "semicircular", "--span", "10", "--density", "2000",
                                           "--columns", "compressive_strength,status,thickness_min_ratio"};
   auto with = [&](std::vector<std::string> extra) {

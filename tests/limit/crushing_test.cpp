@@ -14,6 +14,7 @@
 #include "limit/limit_internal.hpp"
 #include "ogive/geometry/curve_families.hpp"
 #include "ogive/limit/limit.hpp"
+#include "ogive/limit/spreading.hpp"
 #include "ogive/solve/assessment.hpp"
 #include "support/tolerances.hpp"
 
@@ -288,7 +289,7 @@ TEST_CASE("crushing: misuse and an arch crushed under its own weight") {
   CHECK(r.message.find("crush") != std::string::npos);
 }
 
-TEST_CASE("crushing: the assessment's factors honour the strength, and the spreading capacity is not assessed") {
+TEST_CASE("crushing: the assessment's factors and spreading capacity honour the strength") {
   AssessmentOptions o;
   o.require.spread_capacity_ratio = 0.01;
   o.limit.compressive_strength = 3e6;
@@ -297,10 +298,17 @@ TEST_CASE("crushing: the assessment's factors honour the strength, and the sprea
   const LimitResult direct = analyse(scene, 3e6);
   CHECK(a.limit.thickness_min == direct.thickness_min);
   CHECK(a.limit.load_factor() == direct.load_factor());
+  // The spreading path with the same strength, and less than the uncrushable voussoirs' capacity.
+  const SpreadResult crushing = analyse_spreading(scene, o.limit, o.spread);
+  LimitOptions heyman = o.limit;
+  heyman.compressive_strength = std::numeric_limits<double>::infinity();
+  const SpreadResult uncrushable = analyse_spreading(scene, heyman, o.spread);
+  REQUIRE(crushing.status == SpreadStatus::success);
+  REQUIRE(uncrushable.status == SpreadStatus::success);
   const CriterionResult& spread = a.criteria[static_cast<int>(Criterion::spread_capacity_ratio)];
-  CHECK(spread.outcome == Outcome::not_assessed);
-  CHECK(std::isnan(spread.value));
-  CHECK(spread.reason.find("compressive strength") != std::string::npos);
+  CHECK(spread.outcome != Outcome::not_assessed);
+  CHECK(spread.value == 2 * crushing.d_max / scene.span());
+  CHECK(crushing.d_max < uncrushable.d_max);
 }
 
 TEST_CASE("crushing: the cuts' programs solved by Clp give the dense method's optima") {
