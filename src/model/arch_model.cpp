@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "ogive/model/curved_section.hpp"
 #include "geometry/side_view.hpp"
 #include "numerics/gauss_legendre.hpp"
 
@@ -147,23 +148,20 @@ double ArchModel::kappa(double s) const { return curve_->at(s * scales_.length).
 ArchModel::CurvedBar ArchModel::curved_bar(double k) const {
   CurvedBar bar;
   if (!curved()) return bar;
+  bar.offset = a_N_ * k;
   bar.coupling = a_N_ * k;
   // rho = |kappa| t / 2 = |k| t~ / 2, t~ = sqrt(12 a_N).
   const double rho = 0.5 * std::abs(k) * std::sqrt(12.0 * a_N_);
   if (rho == 0) return bar;
-  // T = sum_{n >= 1} rho^(2n - 2) / (2n + 1) without the cancellation of (S - 1) / rho^2 for small rho.
-  double S, T;
-  if (rho < 0.5) {
-    const double r2 = rho * rho;
-    double term = 1.0;
-    T = 0;
-    for (int n = 1; n < 64 && term > 1e-18; ++n, term *= r2) T += term / (2 * n + 1);
-    S = 1 + r2 * T;
-  } else {
-    S = std::atanh(rho) / rho;
-    T = (S - 1) / (rho * rho);
-  }
-  bar.bending = S / (3 * T);
+  // Plane strain: the stresses of the free annulus are the same; its strains take E / (1 - nu^2), which
+  // a_N already has, and nu / (1 - nu).
+  const Material& m = scene_.material;
+  const double nu = m.plane_strain ? m.poisson_ratio / (1 - m.poisson_ratio) : m.poisson_ratio;
+  const CurvedSection section = curved_section(rho, nu);
+  bar.axial = section.axial;
+  bar.coupling *= section.coupling;
+  bar.bending = section.bending;
+  bar.shear = section.shear;
   return bar;
 }
 
@@ -171,20 +169,25 @@ void ArchModel::curved_derivative(double c, double sn, const CurvedBar& bar, con
                                   double load, double horizontal, bool self_weight) const {
   const double N = c * y[kFx] + sn * y[kFy];
   const double V = -sn * y[kFx] + c * y[kFy];
-  const double eps = a_N_ * N + bar.coupling * y[kM];
-  const double rot = a_V_ * V + y[kPsi];
+  const double eps = a_N_ * bar.axial * N + bar.coupling * y[kM];
+  const double rot = a_V_ * bar.shear * V + y[kPsi];
   dy[kUx] = eps * c - rot * sn;
   dy[kUy] = eps * sn + rot * c;
   dy[kPsi] = bar.bending * y[kM] + bar.coupling * N;
   dy[kFx] = -horizontal;
   dy[kFy] = load;
   dy[kM] = sn * y[kFx] - c * y[kFy];
-  if (self_weight) dy[kM] += bar.coupling * self_weight_ * (sn - acceleration() * c);
+  if (self_weight) dy[kM] += bar.offset * self_weight_ * (sn - acceleration() * c);
 }
 
 SystemMatrix ArchModel::curved_system_matrix(double theta, const CurvedBar& bar) const {
   SystemMatrix A = system_matrix(theta);
   const double c = std::cos(theta), sn = std::sin(theta);
+  const double aN = a_N_ * bar.axial, aV = a_V_ * bar.shear;
+  A(kUx, kFx) = aN * c * c + aV * sn * sn;
+  A(kUx, kFy) = (aN - aV) * c * sn;
+  A(kUy, kFx) = (aN - aV) * c * sn;
+  A(kUy, kFy) = aN * sn * sn + aV * c * c;
   A(kUx, kM) = bar.coupling * c;
   A(kUy, kM) = bar.coupling * sn;
   A(kPsi, kFx) = bar.coupling * c;

@@ -17,7 +17,7 @@ namespace {
 // errors row by row). The linear term covers the ends (the springing face held whole, a pointed crown's
 // block), whose zones are about t long; the quadratic one what the bar's kinematics leave of the section's
 // depth.
-constexpr double kLinear = 0.012, kQuadratic = 0.25;
+constexpr double kLinear = 0.012, kQuadratic = 0.35;
 
 Scene with_model(const Scene& scene, BeamModel model) {
   Scene s = scene;
