@@ -16,6 +16,7 @@ Usage (from the repository's top, after the build):
   /usr/bin/python3 benchmarks/continuum/continuum.py reference # CalculiX: benchmarks/continuum/reference.csv
   /usr/bin/python3 benchmarks/continuum/continuum.py table     # the beams beside it: continuum.csv
   /usr/bin/python3 benchmarks/continuum/continuum.py poisson   # nu 0 against 0.2: poisson.csv
+  /usr/bin/python3 benchmarks/continuum/continuum.py ends      # the held face against one free laterally
   /usr/bin/python3 benchmarks/continuum/continuum.py figure    # docs/figures/continuum.png from the CSV
 """
 import argparse
@@ -216,6 +217,8 @@ def ccx_input(arch, n_across, plane_strain, supports, nu=NU):
     lines += ["*BOUNDARY", "NCROWN, 1, 1, 0."]
     if supports == "clamped":
         lines += ["NSPRING, 1, 2, 0."]
+    elif supports == "lateral":
+        lines += springing_free_laterally(nodes, springing)
     else:
         # The springing face a rigid line that turns about its axis node (held): with the face's direction
         # d and node k at distance r_k along it from the axis node, u_k = r_k / r_e u_e (a rotation: the
@@ -238,6 +241,35 @@ def ccx_input(arch, n_across, plane_strain, supports, nu=NU):
     lines += ["*STEP", "*STATIC", "*DLOAD", f"EALL, GRAV, {G_ACC:.15g}, 0., -1., 0."]
     lines += ["*NODE PRINT, NSET=NSPRING, TOTALS=ONLY", "RF", "*END STEP"]
     return "\n".join(lines) + "\n", len(elements)
+
+
+def springing_free_laterally(nodes, springing):
+    """The clamped springing face held along its normal and turning not at all, but free to stretch along
+    itself (uniformly, about its axis node, which is held): the lateral (Poisson) strain that a face held
+    whole restrains. Each face node k at r_k along the face from the axis node: u_k . n = 0 and
+    u_k . d = r_k / r_e u_e . d (linear *EQUATIONs, the dependent term first)."""
+    mid, e_node = springing[len(springing) // 2], springing[-1]
+    (x0, y0), (xe, ye) = nodes[mid - 1], nodes[e_node - 1]
+    re = math.hypot(xe - x0, ye - y0)
+    d = ((xe - x0) / re, (ye - y0) / re)
+    n = (-d[1], d[0])
+    lines = [f"{mid}, 1, 2, 0.", "*EQUATION"]
+    for k in springing:
+        if k == mid:
+            continue
+        # u . n = 0: the component along n's larger direction depends on the other.
+        big, small = (2, 1) if abs(n[1]) >= abs(n[0]) else (1, 2)
+        if abs(n[small - 1]) < 1e-14:
+            lines += ["1", f"{k}, {big}, 1."]
+        else:
+            lines += ["2", f"{k}, {big}, {n[big - 1]:.15g}, {k}, {small}, {n[small - 1]:.15g}"]
+        if k == e_node:
+            continue
+        xk, yk = nodes[k - 1]
+        r = ((xk - x0) * d[0] + (yk - y0) * d[1]) / re
+        lines += ["4", f"{k}, {small}, {d[small - 1]:.15g}, {k}, {big}, {d[big - 1]:.15g}, "
+                  f"{e_node}, 1, {-r * d[0]:.15g}, {e_node}, 2, {-r * d[1]:.15g}"]
+    return lines
 
 
 def run_ccx(arch, n_across, plane_strain=False, supports="clamped", nu=NU):
@@ -309,6 +341,8 @@ MODELS = ["euler-bernoulli", "timoshenko", "curved"]
 REFERENCE = os.path.join(HERE, "reference.csv")
 TABLE = os.path.join(HERE, "continuum.csv")
 POISSON = os.path.join(HERE, "poisson.csv")
+ENDS = os.path.join(HERE, "ends.csv")
+ENDS_CASES = [("semicircular", 0.1), ("semicircular", 0.2), ("equilateral", 0.2), ("catenary", 0.08), ("catenary", 0.2)]
 POISSON_CASES = [("semicircular", "pinned", 0.1), ("semicircular", "pinned", 0.2), ("semicircular", "clamped", 0.1),
                  ("semicircular", "clamped", 0.2), ("equilateral", "pinned", 0.2), ("equilateral", "clamped", 0.2)]
 REF_FIELDS = ["arch", "supports", "plane", "t_over_L", "H_over_V", "fe_error", "mesh_4", "mesh_8", "mesh_16", "order"]
@@ -399,6 +433,24 @@ def poisson(ogive):
     print(open(POISSON).read(), end="")
 
 
+def ends(ogive):
+    """ends.csv: the clamped springing face held whole (the table's) against one free to stretch along itself
+    (springing_free_laterally), the continuum's H/V beside the curved bar's (plane stress): how much of the
+    curved bar's error is the held face's restraint of the lateral strain."""
+    with open(ENDS, "w", newline="") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(["arch", "t_over_L", "held", "free_laterally", "curved", "curved_error_held",
+                    "curved_error_free_laterally"])
+        for arch, ratio in ENDS_CASES:
+            held, _, _, _ = continuum(make_arch(arch, ratio * SPAN), False, "clamped")
+            free, _, _, _ = continuum(make_arch(arch, ratio * SPAN), False, "lateral")
+            curved = ogive_hv(ogive, make_arch(arch, ratio * SPAN), ratio, "curved")[0]
+            w.writerow([arch, repr(ratio), f"{held:.7f}", f"{free:.7f}", f"{curved:.7f}",
+                        f"{(curved - held) / held:.3e}", f"{(curved - free) / free:.3e}"])
+            f.flush()
+    print(open(ENDS).read(), end="")
+
+
 def figure(out=os.path.join(TOP, "docs", "figures", "continuum.png")):
     """Each beam model's H/V error against the continuum over t/L, one panel per arch (plane stress;
     clamped solid, pinned dashed), drawn by gnuplot."""
@@ -430,7 +482,7 @@ def figure(out=os.path.join(TOP, "docs", "figures", "continuum.png")):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("what", choices=["check", "reference", "table", "summary", "poisson", "figure"])
+    parser.add_argument("what", choices=["check", "reference", "table", "summary", "poisson", "ends", "figure"])
     parser.add_argument("--ogive", default=os.path.join(TOP, "build", "ogive"))
     parser.add_argument("--supports", default="clamped,pinned")
     args = parser.parse_args()
@@ -451,6 +503,8 @@ def main():
         summary()
     elif args.what == "poisson":
         poisson(args.ogive)
+    elif args.what == "ends":
+        ends(args.ogive)
     else:
         figure()
 
