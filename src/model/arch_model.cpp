@@ -7,6 +7,7 @@
 
 #include "ogive/model/curved_section.hpp"
 #include "geometry/side_view.hpp"
+#include "numerics/chebyshev.hpp"
 #include "numerics/gauss_legendre.hpp"
 
 namespace ogive {
@@ -116,7 +117,10 @@ ArchModel::ArchModel(Scene scene, bool whole_arch_domain) : scene_(std::move(sce
   place_loads();
   set_boundary_conditions();
   sum_loads();
-  if (curved()) sum_centroid_offset();
+  if (curved()) {
+    sum_centroid_offset();
+    tabulate_section();
+  }
 }
 
 void ArchModel::sum_centroid_offset() {
@@ -145,6 +149,27 @@ void ArchModel::sum_centroid_offset() {
 
 double ArchModel::kappa(double s) const { return curve_->at(s * scales_.length).kappa * scales_.length; }
 
+double ArchModel::section_poisson_ratio() const {
+  // Plane strain: the stresses of the free annulus are the same; its strains take E / (1 - nu^2), which
+  // a_N already has, and nu / (1 - nu).
+  const Material& m = scene_.material;
+  return m.plane_strain ? m.poisson_ratio / (1 - m.poisson_ratio) : m.poisson_ratio;
+}
+
+void ArchModel::tabulate_section() {
+  // In rho^2 the factors are analytic up to rho^2 = 1, far from [0, 1/4]: degree 16 is at round-off.
+  const ChebyshevRule& rule = chebyshev_rule(kSectionDegree);
+  const double nu = section_poisson_ratio(), top = kTabulatedRho * kTabulatedRho;
+  Eigen::Matrix<double, kSectionDegree + 1, 4> values;
+  for (int i = 0; i <= kSectionDegree; ++i) {
+    const CurvedSection c = curved_section(std::sqrt(0.5 * (rule.node[i] + 1) * top), nu);
+    values.row(i) << c.axial, c.coupling, c.bending, c.shear;
+  }
+  const Eigen::Matrix<double, kSectionDegree + 1, 4> series = rule.to_coefficients * values;
+  for (int f = 0; f < 4; ++f)
+    for (int i = 0; i <= kSectionDegree; ++i) section_series_[f][i] = series(i, f);
+}
+
 ArchModel::CurvedBar ArchModel::curved_bar(double k) const {
   CurvedBar bar;
   if (!curved()) return bar;
@@ -153,11 +178,16 @@ ArchModel::CurvedBar ArchModel::curved_bar(double k) const {
   // rho = |kappa| t / 2 = |k| t~ / 2, t~ = sqrt(12 a_N).
   const double rho = 0.5 * std::abs(k) * std::sqrt(12.0 * a_N_);
   if (rho == 0) return bar;
-  // Plane strain: the stresses of the free annulus are the same; its strains take E / (1 - nu^2), which
-  // a_N already has, and nu / (1 - nu).
-  const Material& m = scene_.material;
-  const double nu = m.plane_strain ? m.poisson_ratio / (1 - m.poisson_ratio) : m.poisson_ratio;
-  const CurvedSection section = curved_section(rho, nu);
+  CurvedSection section;
+  if (rho <= kTabulatedRho) {
+    const double x = 2 * (rho * rho) / (kTabulatedRho * kTabulatedRho) - 1;
+    section.axial = chebyshev_series(section_series_[0].data(), kSectionDegree, x);
+    section.coupling = chebyshev_series(section_series_[1].data(), kSectionDegree, x);
+    section.bending = chebyshev_series(section_series_[2].data(), kSectionDegree, x);
+    section.shear = chebyshev_series(section_series_[3].data(), kSectionDegree, x);
+  } else {
+    section = curved_section(rho, section_poisson_ratio());
+  }
   bar.axial = section.axial;
   bar.coupling *= section.coupling;
   bar.bending = section.bending;

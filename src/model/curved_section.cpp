@@ -37,8 +37,10 @@ struct Modes {
 
 }  // namespace
 
-CurvedSection curved_section(double rho_in, double nu_in) {
-  const Real rho = std::max(rho_in, 1e-4), nu = nu_in;
+namespace {
+
+CurvedSection from_modes(double rho_in, double nu_in) {
+  const Real rho = rho_in, nu = nu_in;
   const Modes m(rho);
   // Integrals over the depth in u = ln r (r dr = r^2 du): the integrands are entire in u, and 48 points
   // take them to round-off for every rho < 1 that a scene admits (rho <= 0.99: ln(b/a) <= 5.3).
@@ -72,6 +74,21 @@ CurvedSection curved_section(double rho_in, double nu_in) {
   c.bending = static_cast<double>(C11 * t * t * t / 12);
   c.shear = static_cast<double>(QV / (VF * VF) * (Real(5) / 6) * t / (2 * (1 + nu)));
   return c;
+}
+
+}  // namespace
+
+CurvedSection curved_section(double rho, double nu) {
+  // Below rho0 the modes' constants cancel to more than the long double's digits (at 1e-4 the coupling
+  // keeps six): each factor there is its straight limit plus its rho^2 term, read at rho0 (the next term,
+  // rho^4, is below 1e-12 of it).
+  constexpr double rho0 = 1e-3;
+  if (rho >= rho0) return from_modes(rho, nu);
+  const CurvedSection at = from_modes(rho0, nu);
+  const double w = (rho / rho0) * (rho / rho0);
+  const double coupling0 = 1 + 1.2 * nu;
+  return {1 + w * (at.axial - 1), coupling0 + w * (at.coupling - coupling0), 1 + w * (at.bending - 1),
+          1 + w * (at.shear - 1)};
 }
 
 }  // namespace ogive

@@ -31,6 +31,7 @@
 // fill's (not a point or live load's) times a. Then Fx~' = -h(s) instead of 0; with a = 0 nothing changes.
 #pragma once
 
+#include <array>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -222,6 +223,14 @@ class ArchModel {
   double total_load_ = 0, total_horizontal_load_ = 0, load_moment_ = 0;
   // The curved bar's moment of the self-weight's offset from the axis, added to load_moment_.
   void sum_centroid_offset();
+  // The curved bar's section factors (curved_section: a quadrature over the depth, too slow for every
+  // right-hand side) as Chebyshev series in rho^2 over 0 <= rho <= kTabulatedRho, of the scene's nu;
+  // beyond it curved_bar computes them.
+  static constexpr double kTabulatedRho = 0.5;
+  static constexpr int kSectionDegree = 16;
+  std::array<std::array<double, kSectionDegree + 1>, 4> section_series_{};
+  double section_poisson_ratio() const;
+  void tabulate_section();
   // The constructor's steps, in order: where the loads act and where the system is not smooth (the
   // curve's breakpoints, the point loads, the hinge, the live loads' ends, where the fill meets the
   // extrados and under the extrados' breaks); the six boundary conditions; the domain's total load and its moment.

@@ -21,8 +21,8 @@ struct CurvedSection {
   double axial = 1, coupling = 1, bending = 1, shear = 1;
 };
 
-// rho = t / (2 R) in [0, 1), nu in (-1, 0.5]: the four factors above. Below rho = 1e-4 the factors at
-// 1e-4 (they change by rho^2 there: by less than 1e-8).
+// rho = t / (2 R) in [0, 1), nu in (-1, 0.5]: the four factors above. Below rho = 1e-3 each is its
+// limit plus its rho^2 term (the stress modes' constants cancel there beyond round-off).
 CurvedSection curved_section(double rho, double nu);
 
 }  // namespace ogive
