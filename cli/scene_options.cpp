@@ -172,9 +172,9 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
       ->capture_default_str();
   cmd.add_option("--beam-model", o.beam_model,
                  "the beam theory: euler-bernoulli (no shear strain), timoshenko (shear strain V / (k G A), the "
-                 "paper's), curved (a thick curved bar: Winkler-Bach's section, each slice's weight at its "
-                 "centroid; the elastic section) or auto (the least of the three whose model error estimate is "
-                 "within --model-tolerance)")
+                 "paper's), curved (a thick curved bar: plane elasticity's section law, each slice's weight at "
+                 "its centroid; the elastic section) or auto (the least of the three whose model error estimate "
+                 "is within --model-tolerance)")
       ->capture_default_str();
   cmd.add_option("--model-tolerance", o.model_tolerance,
                  "the relative error of H/V the beam model may make against the two-dimensional arch, in (0, 1): "

@@ -15,6 +15,8 @@ Usage (from the repository's top, after the build):
   /usr/bin/python3 benchmarks/continuum/continuum.py check     # the clamped semicircle, t/L 0.08
   /usr/bin/python3 benchmarks/continuum/continuum.py reference # CalculiX: benchmarks/continuum/reference.csv
   /usr/bin/python3 benchmarks/continuum/continuum.py table     # the beams beside it: continuum.csv
+  /usr/bin/python3 benchmarks/continuum/continuum.py poisson   # nu 0 against 0.2: poisson.csv
+  /usr/bin/python3 benchmarks/continuum/continuum.py ends      # the held face against one free laterally
   /usr/bin/python3 benchmarks/continuum/continuum.py figure    # docs/figures/continuum.png from the CSV
 """
 import argparse
@@ -201,7 +203,7 @@ def mesh(arch, n_across, aspect=2.0):
     return nodes, elements, springing, crown
 
 
-def ccx_input(arch, n_across, plane_strain, supports):
+def ccx_input(arch, n_across, plane_strain, supports, nu=NU):
     nodes, elements, springing, crown = mesh(arch, n_across)
     lines = ["*HEADING", "ogive continuum benchmark", "*NODE"]
     lines += [f"{k + 1}, {x:.13f}, {y:.13f}, 0" for k, (x, y) in enumerate(nodes)]
@@ -210,11 +212,13 @@ def ccx_input(arch, n_across, plane_strain, supports):
     lines += [f"{k + 1}, " + ", ".join(map(str, e)) for k, e in enumerate(elements)]
     lines += ["*NSET, NSET=NSPRING"] + [str(n) for n in springing]
     lines += ["*NSET, NSET=NCROWN"] + [str(n) for n in crown]
-    lines += ["*MATERIAL, NAME=STONE", "*ELASTIC", f"{E:.15g}, {NU:.15g}", "*DENSITY", f"{RHO:.15g}"]
+    lines += ["*MATERIAL, NAME=STONE", "*ELASTIC", f"{E:.15g}, {nu:.15g}", "*DENSITY", f"{RHO:.15g}"]
     lines += ["*SOLID SECTION, ELSET=EALL, MATERIAL=STONE", "1."]
     lines += ["*BOUNDARY", "NCROWN, 1, 1, 0."]
     if supports == "clamped":
         lines += ["NSPRING, 1, 2, 0."]
+    elif supports == "lateral":
+        lines += springing_free_laterally(nodes, springing)
     else:
         # The springing face a rigid line that turns about its axis node (held): with the face's direction
         # d and node k at distance r_k along it from the axis node, u_k = r_k / r_e u_e (a rotation: the
@@ -239,8 +243,37 @@ def ccx_input(arch, n_across, plane_strain, supports):
     return "\n".join(lines) + "\n", len(elements)
 
 
-def run_ccx(arch, n_across, plane_strain=False, supports="clamped"):
-    text, n_elements = ccx_input(arch, n_across, plane_strain, supports)
+def springing_free_laterally(nodes, springing):
+    """The clamped springing face held along its normal and turning not at all, but free to stretch along
+    itself (uniformly, about its axis node, which is held): the lateral (Poisson) strain that a face held
+    whole restrains. Each face node k at r_k along the face from the axis node: u_k . n = 0 and
+    u_k . d = r_k / r_e u_e . d (linear *EQUATIONs, the dependent term first)."""
+    mid, e_node = springing[len(springing) // 2], springing[-1]
+    (x0, y0), (xe, ye) = nodes[mid - 1], nodes[e_node - 1]
+    re = math.hypot(xe - x0, ye - y0)
+    d = ((xe - x0) / re, (ye - y0) / re)
+    n = (-d[1], d[0])
+    lines = [f"{mid}, 1, 2, 0.", "*EQUATION"]
+    for k in springing:
+        if k == mid:
+            continue
+        # u . n = 0: the component along n's larger direction depends on the other.
+        big, small = (2, 1) if abs(n[1]) >= abs(n[0]) else (1, 2)
+        if abs(n[small - 1]) < 1e-14:
+            lines += ["1", f"{k}, {big}, 1."]
+        else:
+            lines += ["2", f"{k}, {big}, {n[big - 1]:.15g}, {k}, {small}, {n[small - 1]:.15g}"]
+        if k == e_node:
+            continue
+        xk, yk = nodes[k - 1]
+        r = ((xk - x0) * d[0] + (yk - y0) * d[1]) / re
+        lines += ["4", f"{k}, {small}, {d[small - 1]:.15g}, {k}, {big}, {d[big - 1]:.15g}, "
+                  f"{e_node}, 1, {-r * d[0]:.15g}, {e_node}, 2, {-r * d[1]:.15g}"]
+    return lines
+
+
+def run_ccx(arch, n_across, plane_strain=False, supports="clamped", nu=NU):
+    text, n_elements = ccx_input(arch, n_across, plane_strain, supports, nu)
     with tempfile.TemporaryDirectory() as work:
         with open(os.path.join(work, "arch.inp"), "w") as f:
             f.write(text)
@@ -264,12 +297,12 @@ def area(arch, n=20000):
     return abs(sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(outline, outline[1:] + outline[:1]))) / 2
 
 
-def continuum(arch, plane_strain=False, supports="clamped", n0=4):
+def continuum(arch, plane_strain=False, supports="clamped", n0=4, nu=NU):
     """H/V extrapolated from n0, 2 n0 and 4 n0 elements through the thickness, its estimated error, the
     three meshes' values and the observed order."""
     values = []
     for n in (n0, 2 * n0, 4 * n0):
-        hv, fy, n_el = run_ccx(arch, n, plane_strain, supports)
+        hv, fy, n_el = run_ccx(arch, n, plane_strain, supports, nu)
         values.append(round(hv, 7))  # as reference.csv keeps them: the table is reproducible from its rows
     extrapolated, error, order = extrapolate(values)
     return extrapolated, error, values, order
@@ -289,10 +322,10 @@ def extrapolate(values):
     return values[2], max(abs(d1), abs(d2), floor), order
 
 
-def ogive_hv(ogive, arch, t_over_l, model, plane_strain=False, supports="clamped"):
+def ogive_hv(ogive, arch, t_over_l, model, plane_strain=False, supports="clamped", nu=NU):
     """ogive's H/V of the scene with one beam model, and its model_error_estimate (NaN where none)."""
     args = [ogive, "thrust", *arch.ogive_args(), "--thickness-ratio", repr(t_over_l), "--supports", supports,
-            "--beam-model", model, "--rtol", "1e-10", "--columns", "H_over_V,model_error_estimate,status"]
+            "--beam-model", model, "--poisson-ratio", repr(nu), "--rtol", "1e-10", "--columns", "H_over_V,model_error_estimate,status"]
     if plane_strain:
         args.append("--plane-strain")
     out = subprocess.run(args, capture_output=True, text=True)
@@ -307,6 +340,11 @@ RATIOS = [0.02, 0.04, 0.06, 0.08, 0.10, 0.12, 0.15, 0.20, 0.25]
 MODELS = ["euler-bernoulli", "timoshenko", "curved"]
 REFERENCE = os.path.join(HERE, "reference.csv")
 TABLE = os.path.join(HERE, "continuum.csv")
+POISSON = os.path.join(HERE, "poisson.csv")
+ENDS = os.path.join(HERE, "ends.csv")
+ENDS_CASES = [("semicircular", 0.1), ("semicircular", 0.2), ("equilateral", 0.2), ("catenary", 0.08), ("catenary", 0.2)]
+POISSON_CASES = [("semicircular", "pinned", 0.1), ("semicircular", "pinned", 0.2), ("semicircular", "clamped", 0.1),
+                 ("semicircular", "clamped", 0.2), ("equilateral", "pinned", 0.2), ("equilateral", "clamped", 0.2)]
 REF_FIELDS = ["arch", "supports", "plane", "t_over_L", "H_over_V", "fe_error", "mesh_4", "mesh_8", "mesh_16", "order"]
 
 
@@ -376,6 +414,43 @@ def summary():
         print(f"{m}: model_error_estimate >= error on {n} of {len(rows)} rows")
 
 
+def poisson(ogive):
+    """poisson.csv: the continuum at nu 0 and at the paper's 0.2 beside Timoshenko's beam and the curved bar
+    at the same nu (plane stress): how H/V moves with nu alone, the radial stress' Poisson strain that the
+    curved bar's section takes and Timoshenko's does not (its nu acts through G only)."""
+    with open(POISSON, "w", newline="") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(["arch", "supports", "t_over_L", "nu", "continuum", "fe_error", "timoshenko", "curved",
+                    "timoshenko_error", "curved_error"])
+        for arch, supports, ratio in POISSON_CASES:
+            for nu in (0.0, NU):
+                hv, err, _, _ = continuum(make_arch(arch, ratio * SPAN), False, supports, nu=nu)
+                got = [ogive_hv(ogive, make_arch(arch, ratio * SPAN), ratio, m, False, supports, nu)[0]
+                       for m in ("timoshenko", "curved")]
+                w.writerow([arch, supports, repr(ratio), repr(nu), f"{hv:.7f}", f"{err:.1e}"] +
+                           [f"{g:.7f}" for g in got] + [f"{(g - hv) / hv:.3e}" for g in got])
+                f.flush()
+    print(open(POISSON).read(), end="")
+
+
+def ends(ogive):
+    """ends.csv: the clamped springing face held whole (the table's) against one free to stretch along itself
+    (springing_free_laterally), the continuum's H/V beside the curved bar's (plane stress): how much of the
+    curved bar's error is the held face's restraint of the lateral strain."""
+    with open(ENDS, "w", newline="") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(["arch", "t_over_L", "held", "free_laterally", "curved", "curved_error_held",
+                    "curved_error_free_laterally"])
+        for arch, ratio in ENDS_CASES:
+            held, _, _, _ = continuum(make_arch(arch, ratio * SPAN), False, "clamped")
+            free, _, _, _ = continuum(make_arch(arch, ratio * SPAN), False, "lateral")
+            curved = ogive_hv(ogive, make_arch(arch, ratio * SPAN), ratio, "curved")[0]
+            w.writerow([arch, repr(ratio), f"{held:.7f}", f"{free:.7f}", f"{curved:.7f}",
+                        f"{(curved - held) / held:.3e}", f"{(curved - free) / free:.3e}"])
+            f.flush()
+    print(open(ENDS).read(), end="")
+
+
 def figure(out=os.path.join(TOP, "docs", "figures", "continuum.png")):
     """Each beam model's H/V error against the continuum over t/L, one panel per arch (plane stress;
     clamped solid, pinned dashed), drawn by gnuplot."""
@@ -407,7 +482,7 @@ def figure(out=os.path.join(TOP, "docs", "figures", "continuum.png")):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("what", choices=["check", "reference", "table", "summary", "figure"])
+    parser.add_argument("what", choices=["check", "reference", "table", "summary", "poisson", "ends", "figure"])
     parser.add_argument("--ogive", default=os.path.join(TOP, "build", "ogive"))
     parser.add_argument("--supports", default="clamped,pinned")
     args = parser.parse_args()
@@ -426,6 +501,10 @@ def main():
         table(args.ogive)
     elif args.what == "summary":
         summary()
+    elif args.what == "poisson":
+        poisson(args.ogive)
+    elif args.what == "ends":
+        ends(args.ogive)
     else:
         figure()
 

@@ -141,11 +141,11 @@ ArcMatrix curved_arc_exponential(double k, double l, double aN, double aV, const
                                  double h) {
   ArcMatrix A = ArcMatrix::Zero();
   A(kUx, kUy) = k;
-  A(kUx, kFx) = aN;
+  A(kUx, kFx) = aN * bar.axial;
   A(kUx, kM) = bar.coupling;
   A(kUy, kUx) = -k;
   A(kUy, kPsi) = 1.0;
-  A(kUy, kFy) = aV;
+  A(kUy, kFy) = aV * bar.shear;
   A(kPsi, kM) = bar.bending;
   A(kPsi, kFx) = bar.coupling;
   A(kFx, kFy) = k;
@@ -155,8 +155,8 @@ ArcMatrix curved_arc_exponential(double k, double l, double aN, double aV, const
   A(kFy, kCos) = b;
   A(kFy, kSin) = h;
   A(kM, kFy) = -1.0;
-  A(kM, kSin) = bar.coupling * b;
-  A(kM, kCos) = -bar.coupling * h;
+  A(kM, kSin) = bar.offset * b;
+  A(kM, kCos) = -bar.offset * h;
   A(kCos, kSin) = -k;
   A(kSin, kCos) = k;
   return (A * l).exp();

@@ -110,7 +110,7 @@ void curve_panel(const ArchModel& model, const Panel& panel, const ChebyshevRule
   for (int i = 0; i < n; ++i) bars[i] = model.curved_bar(model.kappa(panel.a + ds[i]));
   Eigen::VectorXd f(n), scaled(n), integral(n);
   const double b = model.self_weight(), a = model.acceleration();
-  for (int i = 0; i < n; ++i) f[i] = bars[i].coupling * b * (sn[i] - a * c[i]);
+  for (int i = 0; i < n; ++i) f[i] = bars[i].offset * b * (sn[i] - a * c[i]);
   cumulative(Q, J, f, scaled, integral);
   out.component(kM).col(kLoad) += integral;
   for (int j = 0; j < kColumns; ++j) {

@@ -5,7 +5,9 @@
 #include <limits>
 #include <numbers>
 
+#include "ogive/model/curved_section.hpp"
 #include "geometry/side_view.hpp"
+#include "numerics/chebyshev.hpp"
 #include "numerics/gauss_legendre.hpp"
 
 namespace ogive {
@@ -115,7 +117,10 @@ ArchModel::ArchModel(Scene scene, bool whole_arch_domain) : scene_(std::move(sce
   place_loads();
   set_boundary_conditions();
   sum_loads();
-  if (curved()) sum_centroid_offset();
+  if (curved()) {
+    sum_centroid_offset();
+    tabulate_section();
+  }
 }
 
 void ArchModel::sum_centroid_offset() {
@@ -144,26 +149,49 @@ void ArchModel::sum_centroid_offset() {
 
 double ArchModel::kappa(double s) const { return curve_->at(s * scales_.length).kappa * scales_.length; }
 
+double ArchModel::section_poisson_ratio() const {
+  // Plane strain: the stresses of the free annulus are the same; its strains take E / (1 - nu^2), which
+  // a_N already has, and nu / (1 - nu).
+  const Material& m = scene_.material;
+  return m.plane_strain ? m.poisson_ratio / (1 - m.poisson_ratio) : m.poisson_ratio;
+}
+
+void ArchModel::tabulate_section() {
+  // In rho^2 the factors are analytic up to rho^2 = 1, far from [0, 1/4]: degree 16 is at round-off.
+  const ChebyshevRule& rule = chebyshev_rule(kSectionDegree);
+  const double nu = section_poisson_ratio(), top = kTabulatedRho * kTabulatedRho;
+  Eigen::Matrix<double, kSectionDegree + 1, 4> values;
+  for (int i = 0; i <= kSectionDegree; ++i) {
+    const CurvedSection c = curved_section(std::sqrt(0.5 * (rule.node[i] + 1) * top), nu);
+    values.row(i) << c.axial, c.coupling, c.bending, c.shear;
+  }
+  const Eigen::Matrix<double, kSectionDegree + 1, 4> series = rule.to_coefficients * values;
+  for (int f = 0; f < 4; ++f)
+    for (int i = 0; i <= kSectionDegree; ++i) section_series_[f][i] = series(i, f);
+}
+
 ArchModel::CurvedBar ArchModel::curved_bar(double k) const {
   CurvedBar bar;
   if (!curved()) return bar;
+  bar.offset = a_N_ * k;
   bar.coupling = a_N_ * k;
   // rho = |kappa| t / 2 = |k| t~ / 2, t~ = sqrt(12 a_N).
   const double rho = 0.5 * std::abs(k) * std::sqrt(12.0 * a_N_);
   if (rho == 0) return bar;
-  // T = sum_{n >= 1} rho^(2n - 2) / (2n + 1) without the cancellation of (S - 1) / rho^2 for small rho.
-  double S, T;
-  if (rho < 0.5) {
-    const double r2 = rho * rho;
-    double term = 1.0;
-    T = 0;
-    for (int n = 1; n < 64 && term > 1e-18; ++n, term *= r2) T += term / (2 * n + 1);
-    S = 1 + r2 * T;
+  CurvedSection section;
+  if (rho <= kTabulatedRho) {
+    const double x = 2 * (rho * rho) / (kTabulatedRho * kTabulatedRho) - 1;
+    section.axial = chebyshev_series(section_series_[0].data(), kSectionDegree, x);
+    section.coupling = chebyshev_series(section_series_[1].data(), kSectionDegree, x);
+    section.bending = chebyshev_series(section_series_[2].data(), kSectionDegree, x);
+    section.shear = chebyshev_series(section_series_[3].data(), kSectionDegree, x);
   } else {
-    S = std::atanh(rho) / rho;
-    T = (S - 1) / (rho * rho);
+    section = curved_section(rho, section_poisson_ratio());
   }
-  bar.bending = S / (3 * T);
+  bar.axial = section.axial;
+  bar.coupling *= section.coupling;
+  bar.bending = section.bending;
+  bar.shear = section.shear;
   return bar;
 }
 
@@ -171,20 +199,25 @@ void ArchModel::curved_derivative(double c, double sn, const CurvedBar& bar, con
                                   double load, double horizontal, bool self_weight) const {
   const double N = c * y[kFx] + sn * y[kFy];
   const double V = -sn * y[kFx] + c * y[kFy];
-  const double eps = a_N_ * N + bar.coupling * y[kM];
-  const double rot = a_V_ * V + y[kPsi];
+  const double eps = a_N_ * bar.axial * N + bar.coupling * y[kM];
+  const double rot = a_V_ * bar.shear * V + y[kPsi];
   dy[kUx] = eps * c - rot * sn;
   dy[kUy] = eps * sn + rot * c;
   dy[kPsi] = bar.bending * y[kM] + bar.coupling * N;
   dy[kFx] = -horizontal;
   dy[kFy] = load;
   dy[kM] = sn * y[kFx] - c * y[kFy];
-  if (self_weight) dy[kM] += bar.coupling * self_weight_ * (sn - acceleration() * c);
+  if (self_weight) dy[kM] += bar.offset * self_weight_ * (sn - acceleration() * c);
 }
 
 SystemMatrix ArchModel::curved_system_matrix(double theta, const CurvedBar& bar) const {
   SystemMatrix A = system_matrix(theta);
   const double c = std::cos(theta), sn = std::sin(theta);
+  const double aN = a_N_ * bar.axial, aV = a_V_ * bar.shear;
+  A(kUx, kFx) = aN * c * c + aV * sn * sn;
+  A(kUx, kFy) = (aN - aV) * c * sn;
+  A(kUy, kFx) = (aN - aV) * c * sn;
+  A(kUy, kFy) = aN * sn * sn + aV * c * c;
   A(kUx, kM) = bar.coupling * c;
   A(kUy, kM) = bar.coupling * sn;
   A(kPsi, kFx) = bar.coupling * c;

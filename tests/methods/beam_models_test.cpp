@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "ogive/geometry/curve_families.hpp"
+#include "ogive/model/curved_section.hpp"
 #include "ogive/solve/model_error.hpp"
 #include "ogive/solve/solve.hpp"
 #include "support/cli_run.hpp"
@@ -148,26 +149,59 @@ TEST_CASE("beam models: --beam-model timoshenko is the default, euler-bernoulli 
   CHECK(bad.err.find("--beam-model") != std::string::npos);
 }
 
-TEST_CASE("curved bar: its section's bending compliance is Winkler-Bach's I / (A R e), and 1 for a straight bar") {
-  // Independent of the series in arch_model.cpp: the neutral axis r_n = t / ln(r_o / r_i) directly.
-  for (double t_over_R : {1e-3, 0.05, 0.3, 0.8, 1.2, 1.9}) {
-    CAPTURE(t_over_R);
-    Scene s = paper_scene(0.0, 0.02);  // R = 5 m
-    s.beam_model = BeamModel::curved;
-    const ArchModel model(s);
-    const double R = 5.0, t = t_over_R * R;
-    const double rn = t / std::log1p(t / (R - t / 2)), e = R - rn;
-    const double expected = (t * t * t / 12) / (t * R * e);
-    // e = R - r_n keeps the round-off of r_n over e / R ~ (t/R)^2 / 12.
-    const double roundoff = std::max(1e-12, 1e-15 / (t_over_R * t_over_R / 12));
-    // The bar's bending at this depth: the model's a_N is t~^2 / 12 of its own scene, so scale k.
-    const double k_for = -10.0 / R * (t / s.thickness);  // |k| t~_model / 2 = t / (2 R)
-    const ArchModel::CurvedBar bar = model.curved_bar(k_for);
-    CHECK(close(bar.bending, expected, roundoff));
-    CHECK(bar.bending <= 1.0);
+TEST_CASE("curved bar: its section is plane elasticity's: Golovin's bending, the straight beam's as t/R -> 0") {
+  // Golovin's pure bending of the annulus a < r < b (Timoshenko and Goodier, section 29), independently of
+  // the quadrature in curved_section.cpp: the faces turn by 8 M (b^2 - a^2) / (E N0) per radian, N0 =
+  // (b^2 - a^2)^2 - 4 a^2 b^2 ln(b/a)^2, whatever nu; over 1 / (E I) per unit centroid length (R = 1,
+  // t = 2 rho) that is 64 rho^4 / (3 N0).
+  for (double rho : {1e-3, 0.025, 0.15, 0.4, 0.6, 0.95}) {
+    CAPTURE(rho);
+    const double a = 1 - rho, b = 1 + rho, lg = std::log1p(rho) - std::log1p(-rho);
+    const double n0 = 16 * rho * rho - 4 * (a * b) * (a * b) * lg * lg;
+    const double golovin = 64 * std::pow(rho, 4) / (3 * n0);
+    // N0 cancels like rho^2 in double here, the model's long double less.
+    const double roundoff = std::max(kExact, 1e-15 / (rho * rho));
+    for (double nu : {0.0, 0.2, 0.5}) {
+      CAPTURE(nu);
+      const CurvedSection c = curved_section(rho, nu);
+      CHECK(close(c.bending, golovin, roundoff));
+      // The compliance is an energy's: positive definite (a_N k^2 = 4 rho^2 a_N / t~^2 = rho^2 / 3).
+      CHECK(c.axial > 0);
+      CHECK(c.shear > 0);
+      CHECK(c.axial * c.bending > c.coupling * c.coupling * rho * rho / 3);
+    }
   }
-  Scene s = paper_scene(0.0);
+  // The straight section: axial, bending and shear 1 (the rectangle's k = 5/6 of the same energy), and
+  // the coupling Winkler-Bach's 1 plus the Poisson strain of the radial stress, 6 nu / 5; all to rho^2.
+  for (double nu : {0.0, 0.2, 0.5}) {
+    CAPTURE(nu);
+    const double rho = 1e-3, order = 10 * rho * rho;
+    const CurvedSection c = curved_section(rho, nu);
+    CHECK(std::abs(c.axial - 1) <= order);
+    CHECK(std::abs(c.bending - 1) <= order);
+    CHECK(std::abs(c.shear - 1) <= order);
+    CHECK(std::abs(c.coupling - (1 + 1.2 * nu)) <= order);
+  }
+  // The model takes it at the local radius (its table to round-off), nu / (1 - nu) in plane strain; no
+  // curvature, no coupling.
+  Scene s = paper_scene(0.0, 0.1);  // t~ = 0.1: rho = |k| / 20
   s.beam_model = BeamModel::curved;
+  const ArchModel curved(s);
+  for (double rho : {1e-5, 1e-3, 0.05, 0.2, 0.37, 0.5, 0.55, 0.9}) {
+    CAPTURE(rho);
+    const double k = -20 * rho;
+    const ArchModel::CurvedBar bar = curved.curved_bar(k);
+    const CurvedSection c = curved_section(rho, 0.2);
+    // The quadrature's own round-off where its modes cancel (rho near 1e-3) against the smooth table.
+    constexpr double kSectionRoundoff = 1e-9;
+    CHECK(close(bar.bending, c.bending, kSectionRoundoff));
+    CHECK(close(bar.axial, c.axial, kSectionRoundoff));
+    CHECK(close(bar.shear, c.shear, kSectionRoundoff));
+    CHECK(close(bar.coupling, k * (0.01 / 12) * c.coupling, kSectionRoundoff));
+    CHECK(close(bar.offset, k * (0.01 / 12), kExact));
+  }
+  s.material.plane_strain = true;
+  CHECK(close(ArchModel(s).curved_bar(-2.0).axial, curved_section(0.1, 0.25).axial, 1e-9));
   const ArchModel model(s);
   CHECK(model.curved_bar(0.0).bending == 1.0);
   CHECK(model.curved_bar(0.0).coupling == 0.0);

@@ -31,6 +31,7 @@
 // fill's (not a point or live load's) times a. Then Fx~' = -h(s) instead of 0; with a = 0 nothing changes.
 #pragma once
 
+#include <array>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -119,24 +120,26 @@ class ArchModel {
   bool curved() const { return scene_.beam_model == BeamModel::curved; }
 
   // The curved bar (BeamModel::curved; docs/model.md, "Beam models") at scaled curvature k = kappa L
-  // (negative for an arch). Winkler-Bach's section: plane sections turn about the neutral axis of pure
-  // bending, r_n = t / ln(r_o / r_i), which lies e = R - r_n inside the centroid (R = 1 / |kappa|), and a
-  // fibre's strain is its elongation over its own length (R + y) dphi. Then, with the centroid's axis,
-  //   eps~  = a_N (N~ + k M~)                      (the axis' strain, in Ux~' and Uy~')
-  //   psi~' = bending M~ + a_N k N~,               bending = I / (A R e) = S / (3 T) in (0, 1]
-  // with rho = |k| t~ / 2 < 1 (Scene::validate), S = atanh(rho) / rho and T = (S - 1) / rho^2 (bending ->
-  // 1 - 4 rho^2 / 15 as rho -> 0: the straight section). The compliance matrix is symmetric (the
-  // complementary energy N^2 / 2EA + N M / EAR + M^2 / 2EARe per length, Boresi's). And each slice of the
-  // arch, an annular sector, weighs at its centroid, t^2 / (12 R) beyond the axis towards the extrados: the
-  // self-weight's load (b_self down, a b_self to +x) brings the couple a_N k (b_self sn - a b_self c) into
-  // M~'. coupling = a_N k. Shear keeps Timoshenko's V / (k G A). For the other models coupling 0, bending 1.
+  // (negative for an arch): the thick circular bar's section law of plane elasticity (curved_section.hpp)
+  // at the local radius R = 1 / |kappa|, rho = |k| t~ / 2 < 1 (Scene::validate):
+  //   eps~  = a_N (axial N~ + coupling' k M~)      (the centroid's axis strain, in Ux~' and Uy~')
+  //   rot~  = a_V shear V~ + psi~                   (the axis' turn, in Ux~' and Uy~')
+  //   psi~' = bending M~ + a_N coupling' k N~
+  // with CurvedSection's factors (axial, coupling', bending, shear): symmetric, the complementary energy
+  // of Golovin's and Michell's stresses per length. Winkler-Bach's bar (plane sections about the neutral
+  // axis of pure bending, no radial stress) is the same law with axial = coupling' = 1 and bending =
+  // I / (A R e); the radial stress adds to all four, and its Poisson strain along the axis makes
+  // coupling' 1 + 6 nu / 5 as rho -> 0. And each slice of the arch, an annular sector, weighs at its
+  // centroid, t^2 / (12 R) beyond the axis towards the extrados: the self-weight's load (b_self down,
+  // a b_self to +x) brings the couple offset (b_self sn - a b_self c) into M~', offset = a_N k.
+  // In the struct coupling = a_N k coupling'. For the other models coupling 0, offset 0, the factors 1.
   struct CurvedBar {
-    double coupling = 0, bending = 1;
+    double coupling = 0, bending = 1, axial = 1, shear = 1, offset = 0;
   };
   CurvedBar curved_bar(double k) const;
   double kappa(double s) const;  // the scaled curvature kappa L at scaled arc length s
-  // dy of the curved bar: derivative()'s equations with the bar's coupling and bending and, on the load
-  // column (self_weight true), the self-weight's couple.
+  // dy of the curved bar: derivative()'s equations with the bar's section law and, on the load column
+  // (self_weight true), the self-weight's couple.
   void curved_derivative(double c, double sn, const CurvedBar& bar, const double* y, double* dy, double load,
                          double horizontal, bool self_weight) const;
   SystemMatrix curved_system_matrix(double theta, const CurvedBar& bar) const;
@@ -220,6 +223,14 @@ class ArchModel {
   double total_load_ = 0, total_horizontal_load_ = 0, load_moment_ = 0;
   // The curved bar's moment of the self-weight's offset from the axis, added to load_moment_.
   void sum_centroid_offset();
+  // The curved bar's section factors (curved_section: a quadrature over the depth, too slow for every
+  // right-hand side) as Chebyshev series in rho^2 over 0 <= rho <= kTabulatedRho, of the scene's nu;
+  // beyond it curved_bar computes them.
+  static constexpr double kTabulatedRho = 0.5;
+  static constexpr int kSectionDegree = 16;
+  std::array<std::array<double, kSectionDegree + 1>, 4> section_series_{};
+  double section_poisson_ratio() const;
+  void tabulate_section();
   // The constructor's steps, in order: where the loads act and where the system is not smooth (the
   // curve's breakpoints, the point loads, the hinge, the live loads' ends, where the fill meets the
   // extrados and under the extrados' breaks); the six boundary conditions; the domain's total load and its moment.
