@@ -52,6 +52,7 @@ struct SpreadText {
   int steps = SpreadOptions{}.steps;
   double increment_ratio = SpreadOptions{}.increment_ratio;
   double left_settlement_share = 0, right_settlement_share = 0;
+  double friction = 0;
   bool path = false;
   int threads = 1;
 };
@@ -100,6 +101,10 @@ void add_spread_analysis_options(CLI::App& cmd, SpreadText& t) {
                  "its hinges may roll to other joints), in [1e-4, 0.1]")
       ->check(finite_number())
       ->capture_default_str();
+  cmd.add_option("--friction", t.friction,
+                 "friction coefficient of the joints (> 0): the path ends where a joint's resultant leaves the "
+                 "friction cone (collapse sliding)")
+      ->check(finite_number());
   cmd.add_flag("--path", t.path,
                "instead of the summary, the whole curve: the elastic arch at d = 0, the cracking arch, the mechanism "
                "to collapse, one row per point");
@@ -118,6 +123,9 @@ SpreadSetup spread_setup(const SpreadText& t, const CLI::App& cmd) {
   s.limit.weight = lookup(weight_models(), t.weight, "--weight");
   s.limit.joints = lookup(joint_orientations(), t.joints, "--joints");
   s.limit.joints_count = t.joints_count;
+  if (given(cmd, "--friction") && !(t.friction > 0))
+    throw UsageError(fmt::format("--friction: must be > 0 (omit it for no sliding check), got {}", t.friction));
+  s.limit.friction = t.friction;
   const MovingSprings moving = lookup(kMovingSprings, t.moving, "--moving");
   s.left_moves = moving != MovingSprings::right;
   s.right_moves = moving != MovingSprings::left;
@@ -146,7 +154,7 @@ SpreadSetup spread_setup(const SpreadText& t, const CLI::App& cmd) {
 
 Columns spread_columns(bool path) {
   std::vector<std::string> results = {"moving", "left_settlement_share", "right_settlement_share", "joints", "weight",
-                                      "joints_count", "path_steps"};
+                                      "joints_count", "path_steps", "friction"};
   // The summary: the elastic arch at d = 0, the plateau, the capacity and the state at collapse.
   const std::vector<std::string> summary = {
       "status", "H_elastic", "V_elastic", "H_over_V_elastic", "H_plateau", "V_plateau", "H_over_V_plateau",
@@ -157,12 +165,14 @@ Columns spread_columns(bool path) {
                                            "crown_drop_ratio", "hinges", "collapse", "message"};
   const std::vector<std::string>& own = path ? points : summary;
   results.insert(results.end(), own.begin(), own.end());
+  if (!path) results.push_back("sliding_joint");
   return Columns(results, own);
 }
 
 void add_setup(CsvRow& row, const SpreadText& t, const SpreadSetup& s) {
   row.add(t.moving).add(s.spread.left_settlement_share).add(s.spread.right_settlement_share);
   row.add(to_string(s.limit.joints)).add(to_string(s.limit.weight)).add(s.limit.joints_count).add(s.spread.steps);
+  row.add(s.limit.friction > 0 ? s.limit.friction : std::numeric_limits<double>::quiet_NaN());
 }
 
 // The crown's drop (m, downwards positive) of a solved elastic or cracking arch; NaN without a field.
@@ -184,7 +194,7 @@ std::string summary_row(const Columns& columns, const SceneParameters& p, const 
   row.add(to_string(r.status)).add(elastic.H).add(elastic.V).add(elastic.H_over_V);
   if (r.path.empty()) {
     for (int k = 0; k < 11; ++k) row.add(std::string_view{});
-    row.add(r.message);
+    row.add(r.message).add(std::string_view{});
     return row.take();
   }
   const SpreadStep& first = r.path.front();
@@ -192,13 +202,15 @@ std::string summary_row(const Columns& columns, const SceneParameters& p, const 
   row.add(first.H).add(first.V_left).add(first.H / first.V_left);  // the plateau, whenever d = 0 stands
   if (r.status != SpreadStatus::success) {
     for (int k = 0; k < 8; ++k) row.add(std::string_view{});
-    row.add(r.message);
+    row.add(r.message).add(std::string_view{});
     return row.take();
   }
   row.add((s.spread.left_share + s.spread.right_share) * r.d_max / L).add(to_string(r.collapse));
   row.add(last.H).add(last.V_left).add(last.H / last.V_left).add(last.crown_drop / L);
   row.add(hinge_text(first.hinges, L)).add(hinge_text(last.hinges, L));
   row.add(r.message);
+  if (r.sliding_joint >= 0) row.add(r.sliding_point.x() / L);
+  else row.add(std::string_view{});
   return row.take();
 }
 
@@ -291,6 +303,7 @@ int run_spread(SpreadCommandOptions& so, const CLI::App& cmd, std::ostream& out)
                            {"weight", to_string(setup.limit.weight)},
                            {"joints_count", std::to_string(setup.limit.joints_count)},
                            {"path_steps", std::to_string(setup.spread.steps)},
+                           {"friction", setup.limit.friction > 0 ? fmt::format("{}", setup.limit.friction) : ""},
                            {"status", to_string(r.status)},
                            {"message", r.message}}));
           return spread_answered;

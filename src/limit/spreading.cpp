@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include <Eigen/Geometry>
@@ -201,6 +202,28 @@ bool all_open(const Ring& ring0, const std::vector<Hinge>& hinges, const Eigen::
   return true;
 }
 
+// The joint whose resultant leans furthest outside Coulomb's cone |F . d| <= friction (F . n) (d along
+// the joint, n its normal towards the part after it), by more than round-off of the force; -1 when every
+// joint keeps inside (or friction is 0: no sliding check).
+int sliding_joint(const Ring& ring, const ThrustState& st, double friction) {
+  if (!(friction > 0)) return -1;
+  int worst = -1;
+  double most = 1e-12;
+  for (std::size_t j = 0; j < ring.joints.size(); ++j) {
+    const Vec& F = st.force[j];
+    const double size = F.norm();
+    if (!(size > 0)) continue;
+    const Vec d = (ring.joints[j].extrados - ring.joints[j].intrados).normalized();
+    const Vec n(d.y(), -d.x());
+    const double excess = (std::abs(F.dot(d)) - friction * F.dot(n)) / size;
+    if (excess > most) {
+      most = excess;
+      worst = static_cast<int>(j);
+    }
+  }
+  return worst;
+}
+
 bool same_hinges(const std::vector<Hinge>& a, const std::vector<Hinge>& b) {
   return std::equal(a.begin(), a.end(), b.begin(), b.end(),
                     [](const Hinge& x, const Hinge& y) { return x.joint == y.joint && x.face == y.face; });
@@ -243,9 +266,10 @@ struct State {
   LimitLp::Answer answer;
   Mechanism mechanism;
   SpreadStep step;
+  int sliding = -1;  // the joint whose resultant leaves the friction cone (sliding_joint), or -1
 };
 
-enum class Outcome { admissible, inadmissible, snap_through, lp_failure, unsettled };
+enum class Outcome { admissible, inadmissible, snap_through, lp_failure, unsettled, sliding };
 
 // Hinges that roll more often than this at one movement have found no state whose contacts are its
 // hinges (a ring whose joints alternate at the same d; not seen on the tested arches).
@@ -256,7 +280,7 @@ class Path {
   Path(const Ring& ring0, const LimitOptions& limit, const SpreadOptions& spread)
       : ring0_(ring0),
         friction_(limit.friction),
-        lp_(ring0, limit.friction),
+        lp_(ring0, 0.0),
         vL_(-spread.left_share, -spread.left_settlement_share),
         vR_(spread.right_share, -spread.right_settlement_share),
         live_factor_(ring0.has_live_load() ? 1.0 : 0.0) {}
@@ -268,6 +292,7 @@ class Path {
     at.voussoir.assign(ring0_.voussoirs.size(), Rigid{});
     const Outcome o = evaluate(std::move(at), 0, nullptr, s);
     if (o != Outcome::admissible) return o;
+    if (s.sliding >= 0) return Outcome::sliding;
     s.hinges = on_ring0(s.mechanism.hinges);
     s.phi = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(s.hinges.size()));
     return o;
@@ -292,6 +317,8 @@ class Path {
       if (o != Outcome::admissible) return o;
       const std::vector<Hinge> contacts = on_ring0(to.mechanism.hinges);
       if (same_hinges(contacts, hinges)) {
+        // A settled state (not a placement on the way to it) that a joint would slide out of.
+        if (to.sliding >= 0) return Outcome::sliding;
         to.hinges = std::move(hinges);
         to.phi = std::move(phi);
         return o;
@@ -311,7 +338,7 @@ class Path {
   // The state of the pieces `at`, movement d: the program's answer, its contacts' mechanism.
   Outcome evaluate(Placement at, double d, const std::vector<int>* warm, State& s) {
     place_ring(ring0_, at, moved_);
-    lp_.load(moved_, friction_);
+    lp_.load(moved_, 0.0);  // the program without friction: the cone is checked on its state
     // The least work on the movement: H (vR - vL).x - V_left vL.y - V_right vR.y, V_right = total - V_left.
     const LimitLp::Answer a = lp_.least_work(live_factor_, vR_.x() - vL_.x(), vR_.y() - vL_.y(), warm);
     if (a.outcome == LimitLp::Outcome::infeasible) return Outcome::inadmissible;
@@ -319,6 +346,7 @@ class Path {
     const ThrustState st = thrust_state(moved_, a.H, a.V, a.M, live_factor_);
     Mechanism mech = choose_mechanism(moved_, st.hinges, vL_, vR_);
     if (!mech.found()) return Outcome::snap_through;
+    s.sliding = sliding_joint(moved_, st, friction_);
     s.at = std::move(at);
     s.answer = a;
     s.mechanism = std::move(mech);
@@ -392,7 +420,12 @@ class Path {
 }  // namespace
 
 const char* to_string(SpreadCollapse c) {
-  return c == SpreadCollapse::thrust_leaves_arch ? "thrust_leaves_arch" : "snap_through";
+  switch (c) {
+    case SpreadCollapse::thrust_leaves_arch: return "thrust_leaves_arch";
+    case SpreadCollapse::snap_through: return "snap_through";
+    case SpreadCollapse::sliding: return "sliding";
+  }
+  return "?";
 }
 
 const char* to_string(SpreadStatus s) {
@@ -443,6 +476,12 @@ SpreadShape shape_of(Path& path, const State& current) {
   return shape;
 }
 
+std::string sliding_message(const Vec& point, double span) {
+  char x[32];
+  std::snprintf(x, sizeof x, "%.6g", point.x() / span);
+  return std::string("the joint at x = ") + x + " L slides: its resultant leaves the friction cone";
+}
+
 // The path's printed rows: d = 0, the state reached at or before each d_end i / steps, and the last.
 std::vector<SpreadStep> printed_rows(const std::vector<SpreadStep>& all, int steps) {
   std::vector<SpreadStep> rows{all.front()};
@@ -485,6 +524,22 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
 
   State current;
   const Outcome first = path.start(current);
+  if (first == Outcome::sliding) {  // the minimum-thrust state leaves the friction cone: it slides at once
+    SpreadStep s;
+    s.d = 0;
+    s.H = s.H_work = base.min_state.H;
+    s.V_left = base.min_state.V_left;
+    s.V_right = base.min_state.V_right;
+    s.hinges = base.min_state.hinges;
+    r.path.push_back(s);
+    r.status = SpreadStatus::success;
+    r.collapse = SpreadCollapse::sliding;
+    r.d_max = 0;
+    r.sliding_joint = current.sliding;
+    r.sliding_point = ring0.joints[static_cast<std::size_t>(current.sliding)].axis;
+    r.message = sliding_message(r.sliding_point, L);
+    return r;
+  }
   if (first != Outcome::admissible) {
     if (first == Outcome::snap_through) {  // admissible, but nothing moves the springings apart
       r.status = SpreadStatus::no_mechanism;
@@ -545,6 +600,7 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
     // Collapse within this increment: bisect it from the current state.
     double lo = 0, hi = stops ? to_stop : increment;
     Outcome last_bad = o;
+    int sliding = next.sliding;
     bool moved_on = false;
     State best;
     while (hi - lo > tolerance) {
@@ -559,18 +615,26 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
       } else {
         hi = mid;
         last_bad = om;
+        sliding = next.sliding;
       }
     }
     if (moved_on) {
       current = std::move(best);
       all.add(current.step);
     }
-    r.collapse = last_bad == Outcome::inadmissible ? SpreadCollapse::thrust_leaves_arch : SpreadCollapse::snap_through;
+    r.collapse = last_bad == Outcome::inadmissible ? SpreadCollapse::thrust_leaves_arch
+                 : last_bad == Outcome::sliding    ? SpreadCollapse::sliding
+                                                   : SpreadCollapse::snap_through;
+    if (r.collapse == SpreadCollapse::sliding) r.sliding_joint = sliding;
     break;
   }
   if (!r.stopped) r.d_max = current.step.d;
   r.rolls = path.rolls();
-  r.shape = shape_of(path, current);
+  r.shape = shape_of(path, current);  // leaves path.moved() the last state's ring
+  if (r.sliding_joint >= 0) {
+    r.sliding_point = path.moved().joints[static_cast<std::size_t>(r.sliding_joint)].axis;
+    r.message = sliding_message(r.sliding_point, L);
+  }
   r.path = all.rows(spread.steps);
   r.status = SpreadStatus::success;
   return r;
@@ -610,31 +674,41 @@ double coarsest_next_to(const Ring& ring, const std::vector<Hinge>& hinges) {
 SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread) {
   std::string why;
   if (!spread.is_valid(&why)) throw std::invalid_argument("SpreadOptions: " + why);
-  const LimitResult base = analyse_limit(scene, limit);
-  if (base.status == LimitStatus::inadmissible || !base.min_state.found()) {
-    SpreadResult r;
-    r.ring = base.ring;
-    r.status = base.status == LimitStatus::lp_failure ? SpreadStatus::lp_failure : SpreadStatus::inadmissible;
-    r.message = base.message.empty() ? "no thrust line fits inside the arch at d = 0" : base.message;
-    return r;
+  // The ring and the path are those without friction (the cone is checked on each state); the state at
+  // d = 0 with friction, and whether there is one, is limit's with it.
+  LimitOptions frictionless = limit;
+  frictionless.friction = 0;
+  const LimitResult base = analyse_limit(scene, frictionless);
+  const LimitResult with_friction = limit.friction > 0 ? analyse_limit(scene, limit) : LimitResult{};
+  const LimitResult& start = limit.friction > 0 ? with_friction : base;
+  for (const LimitResult* each : {&base, &start}) {
+    if (each->status == LimitStatus::inadmissible || !each->min_state.found()) {
+      SpreadResult r;
+      r.ring = base.ring;
+      r.status = each->status == LimitStatus::lp_failure ? SpreadStatus::lp_failure : SpreadStatus::inadmissible;
+      r.message = each == &base || each->status == LimitStatus::lp_failure
+                      ? (each->message.empty() ? "no thrust line fits inside the arch at d = 0" : each->message)
+                      : "no state of the arch at d = 0 keeps every joint's resultant inside the friction cone";
+      return r;
+    }
   }
   const double sides = spread.left_share + spread.right_share;
   SpreadOptions round = spread;  // the rounds to collapse, keeping the first and last states only
   round.whole_path = false;
   round.stop_ratio = std::numeric_limits<double>::infinity();
-  SpreadResult r = follow(base.ring, base, limit, round);
+  SpreadResult r = follow(base.ring, start, limit, round);
   std::vector<double> fractions = r.ring.joint_fractions;
   int increments = r.increments, rolls = r.rolls;
   double change = 0;  // no refinement: nothing moved
   bool stayed = false;  // a finer ring changed the state at d = 0: the last ring's path stands
   for (int refinement = 0; r.status == SpreadStatus::success && refinement < kMostSpreadRefinements; ++refinement) {
     const std::vector<Hinge> rolling = rolling_hinges(r.ring, r.path.back().hinges);
-    if (rolling.empty() || (refinement > 0 && coarsest_next_to(r.ring, rolling) <= kSpreadJointSpacing * r.ring.span &&
+    if (rolling.empty() || r.d_max == 0 || (refinement > 0 && coarsest_next_to(r.ring, rolling) <= kSpreadJointSpacing * r.ring.span &&
                             change <= kSpreadCapacityTolerance))
       break;
     limit_detail::add_refinement(r.ring, rolling, fractions);
     fractions = limit_detail::merged_fractions(std::move(fractions));
-    SpreadResult finer = follow(limit_detail::make_ring_at(scene, limit, fractions), base, limit, round);
+    SpreadResult finer = follow(limit_detail::make_ring_at(scene, frictionless, fractions), start, limit, round);
     increments += finer.increments;
     rolls += finer.rolls;
     if (finer.status != SpreadStatus::success) return finer;
@@ -653,7 +727,7 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
   const bool converged = r.status != SpreadStatus::success || stayed || change <= kSpreadCapacityTolerance;
   SpreadResult out = r;
   if (spread.whole_path || spread.stop_ratio < std::numeric_limits<double>::infinity()) {
-    out = follow(r.ring, base, limit, spread);
+    out = follow(r.ring, start, limit, spread);
     out.increments += increments;
     out.rolls += rolls;
   } else {
