@@ -162,7 +162,7 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"V_plateau", "N/m", "spread: V_left of that minimum-thrust state"},
     {"H_over_V_plateau", "", "spread: H_plateau / V_plateau"},
     {"spread_capacity_ratio", "", "spread, assess: the span's increase at collapse of the rigid voussoirs' mechanism (from d = 0) / span"},
-    {"collapse", "", "spread: how the mechanism collapses, thrust_leaves_arch (no thrust line through its hinges fits the moved voussoirs: it would leave the arch) or snap_through (no mechanism of its hinges moves the springings apart: they are in a line, or fewer than three open) or sliding (with --friction: a joint's resultant leaves the friction cone, sliding_joint); spread --path: on the last mechanism row"},
+    {"collapse", "", "spread: how the mechanism collapses, thrust_leaves_arch (no thrust line through its hinges fits the moved voussoirs: it would leave the arch) or snap_through (no mechanism of its hinges moves the springings apart: they are in a line, or fewer than three open; or a new hinge forms that no balance holds, message says where) or sliding (with --friction: a joint's resultant leaves the friction cone, sliding_joint); spread --path: on the last mechanism row"},
     {"H_collapse", "N/m", "spread: the mechanism's H at collapse (its last admissible state)"},
     {"V_collapse", "N/m", "spread: the mechanism's V_left at collapse"},
     {"H_over_V_collapse", "", "spread: H_collapse / V_collapse"},

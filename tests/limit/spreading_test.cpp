@@ -443,3 +443,74 @@ TEST_CASE("spreading with friction: no state at d = 0 inside the cones, or one t
   CHECK(r.path.front().H == lim.min_state.H);
   CHECK(r.path.front().H > analyse_limit(thick, {}).min_state.H);
 }
+
+namespace {
+
+// The engineer's vault (docs/assessing-an-arch.md): an equilateral arch of 8 m, t = 0.8 m, fill of the
+// same density to the crown, 50 kN/m at a quarter of the span.
+Scene engineers_arch() {
+  Scene s;
+  s.curve = make_pointed(8.0, 0.5);
+  s.thickness = 0.8;
+  s.material.density = 2000;
+  s.loads.fills.push_back(FillLoad{2000.0, 0.924});
+  s.loads.points.push_back({5e4, 0.25});
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("spreading: the loaded pointed arch snaps where a hinge forms at its crown, every state in balance") {
+  // Its three hinges (left haunch, extrados next to the load, right haunch) turn until the thrust line
+  // reaches the intrados at the pointed crown, far from the right haunch's hinge: a fourth hinge that
+  // no balance holds (the loads do work on the chain's free mode as it opens, at fixed springings), and
+  // the blocks move on. Before it, with the true weight, the load's two edge joints both open (four
+  // hinges in balance: the thrust line through each).
+  constexpr double kClosed = 1e-12;   // rad, and of the span
+  constexpr double kContact = 1e-8;   // of the span
+  constexpr double kAtCrown = 1e-4;   // of the span: the thrust line at the crown's intrados at collapse
+  for (const WeightModel weight : {WeightModel::voussoir, WeightModel::axis}) {
+    CAPTURE(to_string(weight));
+    LimitOptions o;
+    o.weight = weight;
+    const SpreadResult r = analyse_spreading(engineers_arch(), o, {});
+    REQUIRE(r.status == SpreadStatus::success);
+    CHECK(r.collapse == SpreadCollapse::snap_through);
+    CHECK(r.message.find("x = 0.5 L") != std::string::npos);
+    const double L = r.ring.span;
+    CHECK(2 * r.d_max / L > 0.005);
+    bool four = false;
+    for (std::size_t i = 0; i < r.path.size(); ++i) {
+      CAPTURE(i);
+      CHECK(close(r.path[i].H, r.path[i].H_work, kStaticKinematic));
+      if (i > 0) CHECK(r.path[i].potential < r.path[i - 1].potential);
+      four = four || r.path[i].hinges.size() == 4;
+    }
+    if (weight == WeightModel::voussoir) CHECK(four);
+    // Every opened joint at collapse is a hinge, the thrust line through its point.
+    const SpreadShape& shape = r.shape;
+    const SpreadStep& last = r.path.back();
+    int opened = 0;
+    for (std::size_t j = 1; j < shape.voussoirs.size(); ++j) {
+      const auto& before = shape.voussoirs[j - 1];
+      const auto& after = shape.voussoirs[j];
+      const double rotation = std::remainder(joint_angle(after[0], after[1]) - joint_angle(before[3], before[2]), 2 * std::numbers::pi);
+      const double gap = std::max((after[0] - before[3]).norm(), (after[1] - before[2]).norm());
+      if (std::abs(rotation) <= kClosed && gap <= kClosed * L) continue;
+      CAPTURE(j);
+      ++opened;
+      const auto hinge = std::find_if(last.hinges.begin(), last.hinges.end(),
+                                      [&](const Hinge& h) { return h.joint == static_cast<int>(j); });
+      REQUIRE(hinge != last.hinges.end());
+      CHECK((shape.thrust_line[j] - hinge->point).norm() <= kContact * L);
+    }
+    CHECK(opened >= 3);
+    // The new contact: the thrust line reaches the intrados at the pointed crown (the joints through the
+    // intrados' crown point, where the arch stood at d = 0), which is no hinge.
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 1; j < shape.voussoirs.size(); ++j)
+      if (std::abs(r.ring.joints[j].intrados.x() - L / 2) <= 1e-9 * L)
+        nearest = std::min(nearest, (shape.thrust_line[j] - shape.voussoirs[j][0]).norm());
+    CHECK(nearest <= kAtCrown * L);
+  }
+}

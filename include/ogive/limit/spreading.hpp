@@ -31,6 +31,18 @@
 // contact whose mechanism's rate would close it is no hinge, and a state whose rotations would close a
 // hinge is no state of the path.
 //
+// New hinges: a contact further than 0.05 L along its face from every hinge on it has not rolled there
+// (the thrust line touches the face at a second place, the pointed crown's intrados, say): it is a new
+// hinge, from no rotation, and a hinge left with no contact within two joints of it stays open, its
+// joint still turned. So does a hinge the program's contacts go back and forth from (the thrust line
+// grazing the face between two joints, or either edge of a load). Four hinges leave the chain one free
+// mode at each d: the blocks stand where the loads do no work on it, the thrust line through all four
+// (found along the mode by the secant method), a balance that must be stable (the loads' work turning
+// against the mode beyond it); a hinge whose rotation goes back through zero closes, and three remain.
+// A new hinge that no stable balance of four holds (or that would make five) is a snap: the loads move
+// the blocks on at fixed springings, and the path ends there (snap_through), unless where the blocks
+// would come to rest no thrust line fits either (thrust_leaves_arch).
+//
 // A joint is taken midway between its two faces: exact at a closed joint (the faces coincide) and at
 // a settled hinge, whose contact point both faces share and through which the thrust line passes.
 //
@@ -59,7 +71,8 @@
 //   thrust_leaves_arch - no thrust line fits inside the moved voussoirs (the program is infeasible): the
 //                  line of thrust would have to leave the arch;
 //   snap_through - no mechanism of the current hinges moves the springings apart: the hinges are in a
-//                  line, or fewer than three remain that open, or their rotations would close one;
+//                  line, or fewer than three remain that open, or their rotations would close one; or a
+//                  new hinge snaps (above; SpreadResult::message says where);
 //   sliding      - (with friction) a joint's resultant leaves the friction cone
 //                  (SpreadResult::sliding_joint).
 //
