@@ -514,3 +514,27 @@ TEST_CASE("spreading: the loaded pointed arch snaps where a hinge forms at its c
     CHECK(nearest <= kAtCrown * L);
   }
 }
+
+TEST_CASE("spreading: loaded arches whose contacts went back and forth now reach a collapse, in balance") {
+  // A point load near the crown with fill: the thrust line grazes the extrados at both edges of the
+  // load's joints, or touches a face far from its hinges. Each path ends at a collapse, its thrust the
+  // mechanism's virtual work at every state and the loads going down.
+  for (const auto& [eccentricity, thickness] : {std::pair{0.0, 0.1}, std::pair{0.2, 0.08}, std::pair{0.5, 0.1}, std::pair{1.0, 0.15}}) {
+    CAPTURE(eccentricity);
+    CAPTURE(thickness);
+    Scene s = paper_scene(eccentricity, thickness);
+    s.material.density = 2000;
+    s.loads.fills.push_back(FillLoad{2000.0, 0.9});
+    s.loads.points.push_back({5e4, 0.4});
+    LimitOptions o;
+    o.weight = WeightModel::axis;
+    const SpreadResult r = analyse_spreading(s, o, {});
+    REQUIRE(r.status == SpreadStatus::success);
+    CHECK(r.d_max > 0);
+    for (std::size_t i = 0; i < r.path.size(); ++i) {
+      CAPTURE(i);
+      CHECK(close(r.path[i].H, r.path[i].H_work, kStaticKinematic));
+      if (i > 0) CHECK(r.path[i].potential < r.path[i - 1].potential);
+    }
+  }
+}
