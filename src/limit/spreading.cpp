@@ -89,7 +89,7 @@ class Path {
       if (!close_chain(hinges, vL_ * d, vR_ * d, ring0_.span, phi, bodies)) return Outcome::snap_through;
       if (hinges.size() == 4) {
         const Eigen::VectorXd unbalanced = phi;
-        if (!balance(ring0_, moved_, hinges, vL_ * d, vR_ * d, phi, bodies)) {
+        if (!balance(ring0_, hinges, vL_ * d, vR_ * d, phi, bodies)) {
           // The loads drive the free mode on: where would the blocks come to rest? The program on the
           // chain closed without balance says which joints the thrust line would touch.
           if (!close_chain(hinges, vL_ * d, vR_ * d, ring0_.span, phi = unbalanced, bodies)) return Outcome::snap_through;

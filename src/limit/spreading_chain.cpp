@@ -222,8 +222,8 @@ Placement placement(std::size_t voussoirs, const std::vector<Hinge>& hinges, con
   return at;
 }
 
-double free_work(const Ring& ring0, Ring& moved, const std::vector<Hinge>& hinges, const std::vector<Rigid>& bodies,
-               const Eigen::VectorXd& towards, Eigen::VectorXd& mode) {
+double free_work(const Ring& ring0, const std::vector<Hinge>& hinges, const std::vector<Rigid>& bodies,
+                 const Eigen::VectorXd& towards, Eigen::VectorXd& mode) {
   const std::size_t m = hinges.size();
   std::vector<Vec> at(m);
   for (std::size_t i = 0; i < m; ++i) at[i] = bodies[i](hinges[i].point);
@@ -232,11 +232,11 @@ double free_work(const Ring& ring0, Ring& moved, const std::vector<Hinge>& hinge
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullV);
   mode = svd.matrixV().col(static_cast<Eigen::Index>(m) - 1);
   if (towards.size() == mode.size() && mode.dot(towards) < 0) mode = -mode;
-  place_ring(ring0, placement(ring0.voussoirs.size(), hinges, bodies), moved);
   double work = 0;
   std::size_t body = 0;
-  for_each_load(moved, [&](std::size_t k, double f, const Vec& p) {
+  for_each_load(ring0, [&](std::size_t k, double f, const Vec& p0) {
     while (body < m && static_cast<std::size_t>(hinges[body].joint) <= k) ++body;
+    const Vec p = bodies[body](p0);  // where the voussoir's body has carried the load's point
     Vec v = Vec::Zero();
     for (std::size_t i = 0; i < body; ++i) v += mode(static_cast<Eigen::Index>(i)) * perp(p - at[i]);
     work -= f * v.y();
@@ -244,20 +244,20 @@ double free_work(const Ring& ring0, Ring& moved, const std::vector<Hinge>& hinge
   return work;
 }
 
-bool balance(const Ring& ring0, Ring& moved, const std::vector<Hinge>& hinges, const Vec& uL, const Vec& uR,
-           Eigen::VectorXd& phi, std::vector<Rigid>& bodies) {
+bool balance(const Ring& ring0, const std::vector<Hinge>& hinges, const Vec& uL, const Vec& uR,
+             Eigen::VectorXd& phi, std::vector<Rigid>& bodies) {
   double scale = 0;
   for_each_load(ring0, [&](std::size_t, double f, const Vec&) { scale += std::abs(f); });
   const double tolerance = 1e-11 * scale * ring0.span;
   Eigen::VectorXd mode;
-  const double g0 = free_work(ring0, moved, hinges, bodies, Eigen::VectorXd(), mode);
+  const double g0 = free_work(ring0, hinges, bodies, Eigen::VectorXd(), mode);
   if (std::abs(g0) <= tolerance) return true;
   const Eigen::VectorXd base = phi, towards = mode;
   double s0 = 0, g_prev = g0, s1 = g0 > 0 ? 1e-6 : -1e-6;
   for (int iteration = 0; iteration < 40; ++iteration) {
     Eigen::VectorXd trial = base + s1 * towards;
     if (!close_chain(hinges, uL, uR, ring0.span, trial, bodies)) return false;
-    const double g1 = free_work(ring0, moved, hinges, bodies, towards, mode);
+    const double g1 = free_work(ring0, hinges, bodies, towards, mode);
     const double slope = (g1 - g_prev) / (s1 - s0);
     if (std::abs(g1) <= tolerance) {
       phi = trial;

@@ -129,15 +129,15 @@ Placement placement(std::size_t voussoirs, const std::vector<Hinge>& hinges, con
 // The loads' work (N m/m) on the chain's free mode at the placement `bodies` of four hinges: the
 // closure Jacobian's null vector there (unit, the springings still), turned to agree with `towards`
 // when it has four entries. Zero where the thrust line passes through every hinge.
-double free_work(const Ring& ring0, Ring& moved, const std::vector<Hinge>& hinges, const std::vector<Rigid>& bodies,
-               const Eigen::VectorXd& towards, Eigen::VectorXd& mode);
+double free_work(const Ring& ring0, const std::vector<Hinge>& hinges, const std::vector<Rigid>& bodies,
+                 const Eigen::VectorXd& towards, Eigen::VectorXd& mode);
 
 // Four hinges leave the chain one free mode at a given d: the blocks stand where the loads do no work
 // on it (the thrust line through all four hinges), found along the mode by the secant method from the
 // closed chain phi. False when that balance is not found within kMostBalanceTurn rad, or is unstable
 // (the loads' work on the mode grows as it moves: they drive it on, the blocks snap). A chain already
 // in balance to round-off (a symmetric one) is left as it is.
-bool balance(const Ring& ring0, Ring& moved, const std::vector<Hinge>& hinges, const Vec& uL, const Vec& uR,
-           Eigen::VectorXd& phi, std::vector<Rigid>& bodies);
+bool balance(const Ring& ring0, const std::vector<Hinge>& hinges, const Vec& uL, const Vec& uR,
+             Eigen::VectorXd& phi, std::vector<Rigid>& bodies);
 
 }  // namespace ogive::spreading_detail
