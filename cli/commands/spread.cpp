@@ -53,6 +53,7 @@ struct SpreadText {
   double increment_ratio = SpreadOptions{}.increment_ratio;
   double left_settlement_share = 0, right_settlement_share = 0;
   std::string compressive_strength;  // as given (--compressive-strength)
+  double friction = 0;
   bool path = false;
   int threads = 1;
 };
@@ -104,6 +105,10 @@ void add_spread_analysis_options(CLI::App& cmd, SpreadText& t) {
   add_compressive_strength_option(cmd, t.compressive_strength,
                                   "the rigid voussoirs' joints crush: each hinge turns about its stress block's centre, "
                                   "N / (2 f_c) inside its face; omitted: infinite strength");
+  cmd.add_option("--friction", t.friction,
+                 "friction coefficient of the joints (> 0): the path ends where a joint's resultant leaves the "
+                 "friction cone (collapse sliding)")
+      ->check(finite_number());
   cmd.add_flag("--path", t.path,
                "instead of the summary, the whole curve: the elastic arch at d = 0, the cracking arch, the mechanism "
                "to collapse, one row per point");
@@ -123,6 +128,9 @@ SpreadSetup spread_setup(const SpreadText& t, const CLI::App& cmd) {
   s.limit.joints = lookup(joint_orientations(), t.joints, "--joints");
   s.limit.joints_count = t.joints_count;
   s.limit.compressive_strength = compressive_strength_of(t.compressive_strength, cmd);
+  if (given(cmd, "--friction") && !(t.friction > 0))
+    throw UsageError(fmt::format("--friction: must be > 0 (omit it for no sliding check), got {}", t.friction));
+  s.limit.friction = t.friction;
   const MovingSprings moving = lookup(kMovingSprings, t.moving, "--moving");
   s.left_moves = moving != MovingSprings::right;
   s.right_moves = moving != MovingSprings::left;
@@ -151,7 +159,7 @@ SpreadSetup spread_setup(const SpreadText& t, const CLI::App& cmd) {
 
 Columns spread_columns(bool path) {
   std::vector<std::string> results = {"moving", "left_settlement_share", "right_settlement_share", "joints", "weight",
-                                      "joints_count", "compressive_strength", "path_steps"};
+                                      "joints_count", "compressive_strength", "path_steps", "friction"};
   // The summary: the elastic arch at d = 0, the plateau, the capacity and the state at collapse.
   const std::vector<std::string> summary = {
       "status", "H_elastic", "V_elastic", "H_over_V_elastic", "H_plateau", "V_plateau", "H_over_V_plateau",
@@ -162,6 +170,7 @@ Columns spread_columns(bool path) {
                                            "crown_drop_ratio", "hinges", "collapse", "message"};
   const std::vector<std::string>& own = path ? points : summary;
   results.insert(results.end(), own.begin(), own.end());
+  if (!path) results.push_back("sliding_joint");
   return Columns(results, own);
 }
 
@@ -171,6 +180,7 @@ void add_setup(CsvRow& row, const SpreadText& t, const SpreadSetup& s) {
   row.add(std::isfinite(s.limit.compressive_strength) ? s.limit.compressive_strength
                                                       : std::numeric_limits<double>::quiet_NaN());
   row.add(s.spread.steps);
+  row.add(s.limit.friction > 0 ? s.limit.friction : std::numeric_limits<double>::quiet_NaN());
 }
 
 // The crown's drop (m, downwards positive) of a solved elastic or cracking arch; NaN without a field.
@@ -192,7 +202,7 @@ std::string summary_row(const Columns& columns, const SceneParameters& p, const 
   row.add(to_string(r.status)).add(elastic.H).add(elastic.V).add(elastic.H_over_V);
   if (r.path.empty()) {
     for (int k = 0; k < 11; ++k) row.add(std::string_view{});
-    row.add(r.message);
+    row.add(r.message).add(std::string_view{});
     return row.take();
   }
   const SpreadStep& first = r.path.front();
@@ -200,13 +210,15 @@ std::string summary_row(const Columns& columns, const SceneParameters& p, const 
   row.add(first.H).add(first.V_left).add(first.H / first.V_left);  // the plateau, whenever d = 0 stands
   if (r.status != SpreadStatus::success) {
     for (int k = 0; k < 8; ++k) row.add(std::string_view{});
-    row.add(r.message);
+    row.add(r.message).add(std::string_view{});
     return row.take();
   }
   row.add((s.spread.left_share + s.spread.right_share) * r.d_max / L).add(to_string(r.collapse));
   row.add(last.H).add(last.V_left).add(last.H / last.V_left).add(last.crown_drop / L);
   row.add(hinge_text(first.hinges, L)).add(hinge_text(last.hinges, L));
   row.add(r.message);
+  if (r.sliding_joint >= 0) row.add(r.sliding_point.x() / L);
+  else row.add(std::string_view{});
   return row.take();
 }
 
@@ -299,6 +311,7 @@ int run_spread(SpreadCommandOptions& so, const CLI::App& cmd, std::ostream& out)
                            {"weight", to_string(setup.limit.weight)},
                            {"joints_count", std::to_string(setup.limit.joints_count)},
                            {"path_steps", std::to_string(setup.spread.steps)},
+                           {"friction", setup.limit.friction > 0 ? fmt::format("{}", setup.limit.friction) : ""},
                            {"status", to_string(r.status)},
                            {"message", r.message}}));
           return spread_answered;

@@ -6,233 +6,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include <Eigen/Geometry>
 #include <Eigen/SVD>
 
 #include "limit/limit_internal.hpp"
+#include "limit/spreading_chain.hpp"
 
 namespace ogive {
 namespace {
 
 using limit_detail::LimitLp;
-using Vec = Eigen::Vector2d;
-
-// z x r: the velocity at arm r of a unit rotation rate.
-Vec perp(const Vec& r) { return {-r.y(), r.x()}; }
-
-// A rigid motion x -> R(angle) x + shift.
-struct Rigid {
-  double angle = 0;
-  Vec shift = Vec::Zero();
-  Vec operator()(const Vec& p) const { return Eigen::Rotation2Dd(angle) * p + shift; }
-  // x -> this(first(x)).
-  Rigid after(const Rigid& first) const { return {angle + first.angle, Eigen::Rotation2Dd(angle) * first.shift + shift}; }
-};
-Rigid translation(const Vec& u) { return {0, u}; }
-Rigid rotation_about(const Vec& p, double phi) { return {phi, p - Eigen::Rotation2Dd(phi) * p}; }
-
-// Where the pieces are: each voussoir's motion from its place at d = 0, and each springing's.
-struct Placement {
-  std::vector<Rigid> voussoir;
-  Rigid left, right;
-};
-
-Vec load_point(const VerticalLoad& l) { return {l.moment / l.force, l.height_moment / l.force}; }
-VerticalLoad moved_load(const VerticalLoad& l, const Rigid& m) {
-  if (l.force == 0) return l;
-  const Vec p = m(load_point(l));
-  return {l.force, l.force * p.x(), l.force * p.y()};
-}
-
-// ring0 with every voussoir (its centroid and its loads' points) where `at` puts it, and each joint
-// midway between its two faces: the left one with the voussoir (or springing) before it, the right one
-// with the voussoir after it.
-void place_ring(const Ring& ring0, const Placement& at, Ring& ring) {
-  ring = ring0;
-  const std::size_t n = ring0.voussoirs.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    const Rigid& m = at.voussoir[k];
-    Voussoir& v = ring.voussoirs[k];
-    v.centroid = m(ring0.voussoirs[k].centroid);
-    v.fill = moved_load(ring0.voussoirs[k].fill, m);
-    v.live = moved_load(ring0.voussoirs[k].live, m);
-  }
-  for (std::size_t j = 0; j <= n; ++j) {
-    const Rigid& a = j == 0 ? at.left : at.voussoir[j - 1];
-    const Rigid& b = j == n ? at.right : at.voussoir[j];
-    const Joint& j0 = ring0.joints[j];
-    Joint& jt = ring.joints[j];
-    jt.intrados = 0.5 * (a(j0.intrados) + b(j0.intrados));
-    jt.extrados = 0.5 * (a(j0.extrados) + b(j0.extrados));
-    jt.axis = 0.5 * (a(j0.axis) + b(j0.axis));
-  }
-}
-
-// Every vertical load of the ring at factor 1 (self-weight, fill, live) by its point of action, with the
-// voussoir it bears on.
-template <class F>
-void for_each_load(const Ring& ring, F&& f) {
-  for (std::size_t k = 0; k < ring.voussoirs.size(); ++k) {
-    const Voussoir& v = ring.voussoirs[k];
-    if (v.weight != 0) f(k, v.weight, v.centroid);
-    if (v.fill.force != 0) f(k, v.fill.force, load_point(v.fill));
-    if (v.live.force != 0) f(k, v.live.force, load_point(v.live));
-  }
-}
-
-// Which way a hinge's relative rotation (of the part after it against the part before it, counter-
-// clockwise positive) opens its joint: +1 or -1; 0 for a pin, which turns either way. The face opposite
-// the contact must move away from the voussoir before the joint.
-double opening_sign(const Ring& ring, const Hinge& h) {
-  if (h.face == Face::axis) return 0;
-  const Joint& jt = ring.joints[static_cast<std::size_t>(h.joint)];
-  const Vec q = h.face == Face::intrados ? jt.extrados : jt.intrados;
-  const Vec e = jt.extrados - jt.intrados;
-  Vec normal(e.y(), -e.x());  // oriented below towards the voussoir after the joint
-  const std::size_t n = ring.voussoirs.size();
-  const bool last = static_cast<std::size_t>(h.joint) >= n;  // the right springing: none after it
-  const Vec c = ring.voussoirs[last ? n - 1 : static_cast<std::size_t>(h.joint)].centroid;
-  if (normal.dot(c - jt.axis) < 0) normal = -normal;
-  if (last) normal = -normal;
-  return perp(q - h.point).dot(normal) >= 0 ? 1.0 : -1.0;
-}
-
-// A mechanism: its hinges (ascending) and their relative rotation rates per unit rate of d.
-struct Mechanism {
-  std::vector<Hinge> hinges;
-  std::vector<double> rates;
-  bool found() const { return !hinges.empty(); }
-};
-
-// The smallest-norm solution x of J x = r for a 3 x m J of rank 3; false when J has a smaller rank (the
-// hinges are fewer than three or in a line) or the equations do not hold to round-off.
-bool min_norm_solve(const Eigen::MatrixXd& J, const Eigen::Vector3d& r, Eigen::VectorXd& x) {
-  if (J.cols() < 3) return false;
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeThinU | Eigen::ComputeThinV);
-  const auto& s = svd.singularValues();
-  if (!(s(2) > 1e-10 * s(0))) return false;
-  x = svd.solve(r);
-  return true;
-}
-
-// Each hinge's column of the closure equations: the rotation it adds, and the velocity it gives the
-// point `at` of the right springing (rotation rate times the arm from the hinge's point `q`).
-Eigen::Vector3d closure_column(const Vec& at, const Vec& q) {
-  const Vec v = perp(at - q);
-  return {1.0, v.x(), v.y()};
-}
-
-// The mechanism of `hinges` under the springings' velocities vL, vR: relative rotation rates with sum 0
-// (neither springing turns) that carry the right springing at vR - vL relative to the left one, the
-// least squared; hinges that this would close are left out one by one (the worst first).
-Mechanism choose_mechanism(const Ring& ring, std::vector<Hinge> hinges, const Vec& vL, const Vec& vR) {
-  std::vector<double> sign(hinges.size());
-  for (std::size_t i = 0; i < hinges.size(); ++i) sign[i] = opening_sign(ring, hinges[i]);
-  for (;;) {
-    const std::size_t m = hinges.size();
-    Eigen::MatrixXd J(3, static_cast<Eigen::Index>(m));
-    // The right springing's point taken at the first hinge: the rows are the same equations (the rates
-    // sum to 0) with arms of the arch's size.
-    const Vec at = m > 0 ? hinges.front().point : Vec::Zero();
-    for (std::size_t i = 0; i < m; ++i) J.col(static_cast<Eigen::Index>(i)) = closure_column(at, hinges[i].point);
-    Eigen::VectorXd x;
-    const Vec dv = vR - vL;
-    if (!min_norm_solve(J, Eigen::Vector3d(0, dv.x(), dv.y()), x)) return {};
-    const double scale = x.cwiseAbs().maxCoeff();
-    std::size_t worst = m;
-    double worst_value = -1e-9 * scale;
-    for (std::size_t i = 0; i < m; ++i) {
-      const double opening = sign[i] * x(static_cast<Eigen::Index>(i));
-      if (opening < worst_value) {
-        worst_value = opening;
-        worst = i;
-      }
-    }
-    if (worst == m) return {std::move(hinges), std::vector<double>(x.data(), x.data() + m)};
-    hinges.erase(hinges.begin() + static_cast<std::ptrdiff_t>(worst));
-    sign.erase(sign.begin() + static_cast<std::ptrdiff_t>(worst));
-  }
-}
-
-// The bodies of a chain cut at `hinges` (their points on the ring at d = 0, ascending) and turned there by
-// the relative rotations phi (rad, of the part after a hinge against the part before it, counter-
-// clockwise positive): the left springing's part moved by uL, each next one turned about its hinge.
-void chain_bodies(const std::vector<Hinge>& hinges, const Eigen::VectorXd& phi, const Vec& uL,
-                  std::vector<Rigid>& bodies) {
-  Rigid chain = translation(uL);
-  bodies.assign(hinges.size() + 1, chain);
-  for (std::size_t i = 0; i < hinges.size(); ++i) {
-    chain = chain.after(rotation_about(hinges[i].point, phi(static_cast<Eigen::Index>(i))));
-    bodies[i + 1] = chain;
-  }
-}
-
-// The relative rotations phi at `hinges` (points on the ring at d = 0) that close the chain on the right
-// springing moved by uR when the left one has moved by uL: Newton's method from the given phi, each step
-// the least-squares one (with three hinges the rotations are unique; with more, the closing rotations
-// nearest the start). False when the iteration does not close the chain.
-bool close_chain(const std::vector<Hinge>& hinges, const Vec& uL, const Vec& uR, double L, Eigen::VectorXd& phi,
-                 std::vector<Rigid>& bodies) {
-  const std::size_t m = hinges.size();
-  for (int iteration = 0; iteration < 30; ++iteration) {
-    chain_bodies(hinges, phi, uL, bodies);
-    const Rigid& chain = bodies.back();
-    const Eigen::Vector3d residual(chain.angle, chain.shift.x() - uR.x(), chain.shift.y() - uR.y());
-    if (std::abs(residual(0)) <= 1e-15 && residual.tail<2>().norm() <= 1e-15 * L) {
-      bodies.back() = translation(uR);  // equal to round-off: the springing's own motion
-      return true;
-    }
-    Eigen::MatrixXd J(3, static_cast<Eigen::Index>(m));
-    for (std::size_t i = 0; i < m; ++i) J.col(static_cast<Eigen::Index>(i)) = closure_column(chain.shift, bodies[i](hinges[i].point));
-    Eigen::VectorXd step;
-    if (!min_norm_solve(J, -residual, step)) return false;
-    phi += step;
-  }
-  return false;
-}
-
-// Whether each relative rotation opens its joint (a face hinge turns one way only), to round-off.
-bool all_open(const Ring& ring0, const std::vector<Hinge>& hinges, const Eigen::VectorXd& phi) {
-  const double scale = phi.size() > 0 ? phi.cwiseAbs().maxCoeff() : 0.0;
-  for (std::size_t i = 0; i < hinges.size(); ++i)
-    if (opening_sign(ring0, hinges[i]) * phi(static_cast<Eigen::Index>(i)) < -1e-9 * scale) return false;
-  return true;
-}
-
-bool same_hinges(const std::vector<Hinge>& a, const std::vector<Hinge>& b) {
-  return std::equal(a.begin(), a.end(), b.begin(), b.end(),
-                    [](const Hinge& x, const Hinge& y) { return x.joint == y.joint && x.face == y.face; });
-}
-
-// The relative rotations of `to` taken from those of `from` (phi): a hinge that stays on its joint keeps
-// its own; one that has rolled to another joint of the same face takes the rotation of the hinge it
-// replaces (the nearest on that face, each given once); a new hinge starts from 0.
-Eigen::VectorXd carried_rotations(const std::vector<Hinge>& from, const Eigen::VectorXd& phi,
-                                  const std::vector<Hinge>& to) {
-  Eigen::VectorXd out = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(to.size()));
-  std::vector<bool> taken(from.size(), false), given(to.size(), false);
-  // The pairs of one face by their distance in joints, the nearest first (the same joint: 0).
-  for (int distance = 0;;) {
-    int next = std::numeric_limits<int>::max();
-    for (std::size_t i = 0; i < to.size(); ++i) {
-      for (std::size_t k = 0; k < from.size() && !given[i]; ++k) {
-        if (taken[k] || from[k].face != to[i].face) continue;
-        const int gap = std::abs(from[k].joint - to[i].joint);
-        if (gap == distance) {
-          out(static_cast<Eigen::Index>(i)) = phi(static_cast<Eigen::Index>(k));
-          taken[k] = given[i] = true;
-        } else if (gap > distance) {
-          next = std::min(next, gap);
-        }
-      }
-    }
-    if (next == std::numeric_limits<int>::max()) break;
-    distance = next;
-  }
-  return out;
-}
+using namespace spreading_detail;
 
 // One admissible state of the path: its hinges where the ring at d = 0 has them with their relative
 // rotations, where that puts the pieces, the program's answer and the mechanism that moves them on.
@@ -243,9 +30,20 @@ struct State {
   LimitLp::Answer answer;
   Mechanism mechanism;
   SpreadStep step;
+  int sliding = -1;  // the joint whose resultant leaves the friction cone (sliding_joint), or -1
+  std::vector<Hinge> contacts;  // every joint where the program's thrust line touches a face (or a pin)
+  // Each hinge's relative rotation rate per unit rate of d, to start the next increment from: the
+  // mechanism's (none where it left a hinge out: the next placement is found from phi alone).
+  Eigen::VectorXd rates;
 };
 
-enum class Outcome { admissible, inadmissible, snap_through, lp_failure, unsettled };
+enum class Outcome { admissible, inadmissible, snap_through, lp_failure, unsettled, sliding };
+
+// A contact further than this along its face (arc length over the span) from every hinge on that face
+// has not rolled there: the thrust line has come to touch the face at a second place, a new hinge.
+constexpr double kNewHingeReach = 0.05;
+// A hinge with a contact this many joints from it, or fewer, on its face has rolled there.
+constexpr int kRollJoints = 2;
 
 // Hinges that roll more often than this at one movement have found no state whose contacts are its
 // hinges (a ring whose joints alternate at the same d; not seen on the tested arches).
@@ -257,7 +55,7 @@ class Path {
       : ring0_(ring0),
         friction_(limit.friction),
         compressive_strength_(limit.compressive_strength),
-        lp_(ring0, limit.friction, nullptr, limit_detail::LpSolver::dense, limit_detail::LiveKind::vertical,
+        lp_(ring0, 0.0, nullptr, limit_detail::LpSolver::dense, limit_detail::LiveKind::vertical,
             limit.compressive_strength),
         vL_(-spread.left_share, -spread.left_settlement_share),
         vR_(spread.right_share, -spread.right_settlement_share),
@@ -270,8 +68,10 @@ class Path {
     at.voussoir.assign(ring0_.voussoirs.size(), Rigid{});
     const Outcome o = evaluate(std::move(at), 0, nullptr, s);
     if (o != Outcome::admissible) return o;
+    if (s.sliding >= 0) return Outcome::sliding;
     s.hinges = on_ring0(s.mechanism.hinges);
     s.phi = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(s.hinges.size()));
+    s.rates = Eigen::Map<const Eigen::VectorXd>(s.mechanism.rates.data(), static_cast<Eigen::Index>(s.mechanism.rates.size()));
     return o;
   }
 
@@ -281,29 +81,78 @@ class Path {
   // joint) and the placement and the program are made again.
   Outcome advance(const State& from, double dd, State& to) {
     const double d = from.step.d + dd;
+    snap_point_ = Vec::Constant(std::numeric_limits<double>::quiet_NaN());
     std::vector<Hinge> hinges = from.hinges;
-    Eigen::VectorXd phi = from.phi;
-    for (std::size_t i = 0; i < hinges.size(); ++i) phi(static_cast<Eigen::Index>(i)) += from.mechanism.rates[i] * dd;
+    Eigen::VectorXd phi = from.phi + from.rates * dd;
     const std::vector<int>* warm = &from.answer.basis;
     std::vector<std::vector<Hinge>> seen;
     for (int roll = 0; roll <= kMostRolls; ++roll) {
       std::vector<Rigid> bodies;
       if (!close_chain(hinges, vL_ * d, vR_ * d, ring0_.span, phi, bodies)) return Outcome::snap_through;
-      if (!all_open(ring0_, hinges, phi)) return Outcome::snap_through;
+      if (hinges.size() == 4) {
+        const Eigen::VectorXd unbalanced = phi;
+        if (!balance(ring0_, hinges, vL_ * d, vR_ * d, phi, bodies)) {
+          // The loads drive the free mode on: where would the blocks come to rest? The program on the
+          // chain closed without balance says which joints the thrust line would touch.
+          if (!close_chain(hinges, vL_ * d, vR_ * d, ring0_.span, phi = unbalanced, bodies)) return Outcome::snap_through;
+          if (evaluate(placement(hinges, bodies), d, warm, to) != Outcome::admissible) return Outcome::snap_through;
+          return snapped(hinges, phi, on_ring0(to.mechanism.hinges), d, warm);
+        }
+      }
+      if (!all_open(ring0_, hinges, phi)) {
+        // Of four hinges, one whose joint has closed again (its rotation back through zero) is none.
+        if (hinges.size() != 4) return Outcome::snap_through;
+        const std::size_t shut = most_closed(ring0_, hinges, phi);
+        hinges.erase(hinges.begin() + static_cast<std::ptrdiff_t>(shut));
+        Eigen::VectorXd rest(3);
+        for (Eigen::Index i = 0, k = 0; i < 4; ++i)
+          if (static_cast<std::size_t>(i) != shut) rest(k++) = phi(i);
+        phi = rest;
+        ++rolls_;
+        continue;
+      }
       const Outcome o = evaluate(placement(hinges, bodies), d, warm, to);
       if (o != Outcome::admissible) return o;
-      const std::vector<Hinge> contacts = on_ring0(to.mechanism.hinges);
-      if (same_hinges(contacts, hinges)) {
-        // The contacts' points: with a finite compressive strength a hinge follows its stress block's
-        // centre as the joint's normal force changes (else they are the hinges' own face points).
-        to.hinges = contacts;
+      const std::vector<Hinge> contacts = on_ring0(hinges.size() == 4 ? to.contacts : to.mechanism.hinges);
+      const bool own = same_hinges(on_ring0(to.mechanism.hinges), hinges);
+      // Four hinges in balance: the thrust line passes through each (the mechanism may leave one out
+      // whose rate would close it: it turns with the others, its joint still open).
+      if (own || (hinges.size() == 4 && same_hinges(on_ring0(to.contacts), hinges))) {
+        // A settled state (not a placement on the way to it) that a joint would slide out of.
+        if (to.sliding >= 0) return Outcome::sliding;
+        if (own)
+          to.rates = Eigen::Map<const Eigen::VectorXd>(to.mechanism.rates.data(), static_cast<Eigen::Index>(hinges.size()));
+        else
+          to.rates = Eigen::VectorXd::Zero(4);
+        if (!own) to.step.hinges = to.contacts;  // all four, where they are now
+        // With a finite compressive strength a hinge follows its stress block's centre as the joint's
+        // normal force changes (else the contacts' points are the hinges' own face points).
+        to.hinges = with_points_of(std::move(hinges), own ? on_ring0(to.mechanism.hinges) : on_ring0(to.contacts));
         to.phi = std::move(phi);
         return o;
       }
-      if (std::any_of(seen.begin(), seen.end(), [&](const auto& h) { return same_hinges(h, contacts); })) break;
+      if (std::any_of(seen.begin(), seen.end(), [&](const auto& h) { return same_hinges(h, contacts); })) {
+        // The hinge goes back and forth between two joints (the thrust line grazes the face between
+        // them): both open, the voussoirs between them turning so that the thrust line passes through
+        // both (the four hinges' balance), tried once.
+        std::vector<Hinge> both = union_of(hinges, contacts);
+        if (both.size() != 4 || std::any_of(seen.begin(), seen.end(), [&](const auto& h) { return same_hinges(h, both); }))
+          break;
+        seen.push_back(hinges);
+        phi = kept_rotations(hinges, phi, both);
+        hinges = std::move(both);
+        warm = &to.answer.basis;
+        ++rolls_;
+        continue;
+      }
       seen.push_back(hinges);
-      phi = carried_rotations(hinges, phi, contacts);
-      hinges = contacts;
+      std::vector<Hinge> next;
+      bool snaps = false;
+      if (!rolled_or_new(hinges, phi, contacts, next, phi, snaps)) {
+        if (snaps) return snapped(hinges, phi, contacts, d, warm);
+        break;
+      }
+      hinges = std::move(next);
       warm = &to.answer.basis;
       ++rolls_;
     }
@@ -312,10 +161,78 @@ class Path {
 
   int rolls() const { return rolls_; }
 
+  // New hinges that no balance holds: the loads move the blocks on at fixed springings. If the chain
+  // with `contacts` as its hinges (where the blocks would come to rest) has no thrust line inside it
+  // either, the arch falls (Outcome::inadmissible: thrust_leaves_arch); else the blocks snap to another
+  // state, which the path does not follow (Outcome::snap_through).
+  Outcome snapped(const std::vector<Hinge>& hinges, const Eigen::VectorXd& phi, const std::vector<Hinge>& contacts,
+                  double d, const std::vector<int>* warm) {
+    Eigen::VectorXd rest = carried_rotations(hinges, phi, contacts);
+    std::vector<Rigid> bodies;
+    State there;
+    if (close_chain(contacts, vL_ * d, vR_ * d, ring0_.span, rest, bodies) && all_open(ring0_, contacts, rest) &&
+        evaluate(placement(contacts, bodies), d, warm, there) == Outcome::inadmissible)
+      return Outcome::inadmissible;
+    for (const Hinge& c : contacts)
+      if (std::none_of(hinges.begin(), hinges.end(), [&](const Hinge& h) { return h.joint == c.joint && h.face == c.face; }))
+        snap_point_ = c.point;
+    return Outcome::snap_through;
+  }
+  // Where the last movement's new hinge is on the ring at d = 0 (NaN: none; after a snap_through, none
+  // means the hinges came into a line).
+  const Vec& snap_point() const { return snap_point_; }
+
+  // Where the hinges go when the program's contacts are others. A contact within kNewHingeReach L of a
+  // hinge on its face is that hinge rolled there, its rotation going with it (a hinge whose neighbour
+  // within kRollJoints joints is a contact has rolled into it); a contact further from every hinge on
+  // its face is a new hinge, from no rotation, and an opened hinge with no contact next to it stays open
+  // (the thrust line must still cross its joint there): four hinges, in balance. False when nothing
+  // changes, or (`snaps`) when more than four would be open: new hinges that no balance of four holds.
+  bool rolled_or_new(const std::vector<Hinge>& hinges, const Eigen::VectorXd& phi, const std::vector<Hinge>& contacts,
+                     std::vector<Hinge>& next, Eigen::VectorXd& next_phi, bool& snaps) {
+    const auto s = [&](const Hinge& h) { return ring0_.joints[static_cast<std::size_t>(h.joint)].s; };
+    const auto is_new = [&](const Hinge& c) {
+      return std::none_of(hinges.begin(), hinges.end(), [&](const Hinge& h) {
+        return h.face == c.face && std::abs(s(h) - s(c)) <= kNewHingeReach * ring0_.span;
+      });
+    };
+    std::vector<std::size_t> kept;
+    for (std::size_t k = 0; k < hinges.size(); ++k) {
+      const bool rolled = std::any_of(contacts.begin(), contacts.end(), [&](const Hinge& c) {
+        return c.face == hinges[k].face && std::abs(c.joint - hinges[k].joint) <= kRollJoints;
+      });
+      if (!rolled && phi(static_cast<Eigen::Index>(k)) != 0) kept.push_back(k);
+    }
+    const Eigen::VectorXd carried = carried_rotations(hinges, phi, contacts);
+    if (kept.empty() && std::none_of(contacts.begin(), contacts.end(), is_new)) {  // rolls alone, as ever
+      next_phi = carried;
+      next = contacts;
+      return !same_hinges(next, hinges);
+    }
+    std::vector<std::pair<Hinge, double>> out;
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+      if (is_new(contacts[i])) snap_point_ = contacts[i].point;  // where a snap would start
+      out.emplace_back(contacts[i], is_new(contacts[i]) ? 0.0 : carried(static_cast<Eigen::Index>(i)));
+    }
+    for (const std::size_t k : kept) out.emplace_back(hinges[k], phi(static_cast<Eigen::Index>(k)));
+    if (out.size() > 4) {
+      snaps = true;
+      return false;
+    }
+    std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.first.joint < b.first.joint; });
+    next.clear();
+    next_phi.resize(static_cast<Eigen::Index>(out.size()));
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      next.push_back(out[i].first);
+      next_phi(static_cast<Eigen::Index>(i)) = out[i].second;
+    }
+    return !same_hinges(next, hinges);
+  }
+
   // The state of the pieces `at`, movement d: the program's answer, its contacts' mechanism.
   Outcome evaluate(Placement at, double d, const std::vector<int>* warm, State& s) {
     place_ring(ring0_, at, moved_);
-    lp_.load(moved_, friction_, compressive_strength_);
+    lp_.load(moved_, 0.0, compressive_strength_);  // the program without friction: the cone is checked on its state
     // The least work on the movement: H (vR - vL).x - V_left vL.y - V_right vR.y, V_right = total - V_left.
     const LimitLp::Answer a = lp_.least_work(live_factor_, vR_.x() - vL_.x(), vR_.y() - vL_.y(), warm);
     if (a.outcome == LimitLp::Outcome::infeasible) return Outcome::inadmissible;
@@ -323,6 +240,8 @@ class Path {
     const ThrustState st = thrust_state(moved_, a.H, a.V, a.M, live_factor_, 1e-9, compressive_strength_);
     Mechanism mech = choose_mechanism(moved_, st.hinges, vL_, vR_);
     if (!mech.found()) return Outcome::snap_through;
+    s.sliding = sliding_joint(moved_, st, friction_);
+    s.contacts = st.hinges;
     s.at = std::move(at);
     s.answer = a;
     s.mechanism = std::move(mech);
@@ -370,19 +289,8 @@ class Path {
     return hinges;
   }
 
-  // Each piece's motion: the voussoirs before the first hinge with the left springing's body, those
-  // between two hinges with their block's, those after the last with the right springing's.
   Placement placement(const std::vector<Hinge>& hinges, const std::vector<Rigid>& bodies) const {
-    Placement at;
-    at.voussoir.resize(ring0_.voussoirs.size());
-    std::size_t body = 0;
-    for (std::size_t k = 0; k < at.voussoir.size(); ++k) {
-      while (body < hinges.size() && static_cast<std::size_t>(hinges[body].joint) <= k) ++body;
-      at.voussoir[k] = bodies[body];
-    }
-    at.left = bodies.front();
-    at.right = bodies.back();
-    return at;
+    return spreading_detail::placement(ring0_.voussoirs.size(), hinges, bodies);
   }
 
   // The thrust by virtual work of the mechanism at the moved ring: each body's velocity per unit rate
@@ -409,12 +317,18 @@ class Path {
   const Vec vL_, vR_;
   const double live_factor_;
   int rolls_ = 0;
+  Vec snap_point_ = Vec::Constant(std::numeric_limits<double>::quiet_NaN());
 };
 
 }  // namespace
 
 const char* to_string(SpreadCollapse c) {
-  return c == SpreadCollapse::thrust_leaves_arch ? "thrust_leaves_arch" : "snap_through";
+  switch (c) {
+    case SpreadCollapse::thrust_leaves_arch: return "thrust_leaves_arch";
+    case SpreadCollapse::snap_through: return "snap_through";
+    case SpreadCollapse::sliding: return "sliding";
+  }
+  return "?";
 }
 
 const char* to_string(SpreadStatus s) {
@@ -465,6 +379,20 @@ SpreadShape shape_of(Path& path, const State& current) {
   return shape;
 }
 
+std::string snap_message(const Vec& point, double span) {
+  char x[32];
+  std::snprintf(x, sizeof x, "%.6g", point.x() / span);
+  return std::string("a hinge forms at x = ") + x +
+         " L (where the arch stood at d = 0) that no balance of the hinges holds: the blocks move on at fixed "
+         "springings";
+}
+
+std::string sliding_message(const Vec& point, double span) {
+  char x[32];
+  std::snprintf(x, sizeof x, "%.6g", point.x() / span);
+  return std::string("the joint at x = ") + x + " L slides: its resultant leaves the friction cone";
+}
+
 // The path's printed rows: d = 0, the state reached at or before each d_end i / steps, and the last.
 std::vector<SpreadStep> printed_rows(const std::vector<SpreadStep>& all, int steps) {
   std::vector<SpreadStep> rows{all.front()};
@@ -496,6 +424,24 @@ class Recorder {
   std::vector<SpreadStep> all_;
 };
 
+// The frictionless minimum-thrust state leaves the friction cone at `joint`: the path is the state at
+// d = 0 with friction (limit's, `base`), and it slides at once.
+SpreadResult slides_at_once(SpreadResult r, const LimitResult& base, int joint) {
+  SpreadStep s;
+  s.H = s.H_work = base.min_state.H;
+  s.V_left = base.min_state.V_left;
+  s.V_right = base.min_state.V_right;
+  s.hinges = base.min_state.hinges;
+  r.path.push_back(s);
+  r.status = SpreadStatus::success;
+  r.collapse = SpreadCollapse::sliding;
+  r.d_max = 0;
+  r.sliding_joint = joint;
+  r.sliding_point = r.ring.joints[static_cast<std::size_t>(joint)].axis;
+  r.message = sliding_message(r.sliding_point, r.ring.span);
+  return r;
+}
+
 // The path on the ring `ring` (the limit analysis' `base` gives the state at d = 0 where it has none).
 SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOptions& limit, const SpreadOptions& spread) {
   SpreadResult r;
@@ -507,6 +453,7 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
 
   State current;
   const Outcome first = path.start(current);
+  if (first == Outcome::sliding) return slides_at_once(std::move(r), base, current.sliding);
   if (first != Outcome::admissible) {
     if (first == Outcome::snap_through) {  // admissible, but nothing moves the springings apart
       r.status = SpreadStatus::no_mechanism;
@@ -567,6 +514,8 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
     // Collapse within this increment: bisect it from the current state.
     double lo = 0, hi = stops ? to_stop : increment;
     Outcome last_bad = o;
+    int sliding = next.sliding;
+    Vec snap = path.snap_point();
     bool moved_on = false;
     State best;
     while (hi - lo > tolerance) {
@@ -581,18 +530,28 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
       } else {
         hi = mid;
         last_bad = om;
+        sliding = next.sliding;
+        snap = path.snap_point();
       }
     }
     if (moved_on) {
       current = std::move(best);
       all.add(current.step);
     }
-    r.collapse = last_bad == Outcome::inadmissible ? SpreadCollapse::thrust_leaves_arch : SpreadCollapse::snap_through;
+    r.collapse = last_bad == Outcome::inadmissible ? SpreadCollapse::thrust_leaves_arch
+                 : last_bad == Outcome::sliding    ? SpreadCollapse::sliding
+                                                   : SpreadCollapse::snap_through;
+    if (r.collapse == SpreadCollapse::sliding) r.sliding_joint = sliding;
+    if (r.collapse == SpreadCollapse::snap_through && std::isfinite(snap.x())) r.message = snap_message(snap, L);
     break;
   }
   if (!r.stopped) r.d_max = current.step.d;
   r.rolls = path.rolls();
-  r.shape = shape_of(path, current);
+  r.shape = shape_of(path, current);  // leaves path.moved() the last state's ring
+  if (r.sliding_joint >= 0) {
+    r.sliding_point = path.moved().joints[static_cast<std::size_t>(r.sliding_joint)].axis;
+    r.message = sliding_message(r.sliding_point, L);
+  }
   r.path = all.rows(spread.steps);
   r.status = SpreadStatus::success;
   return r;
@@ -632,31 +591,41 @@ double coarsest_next_to(const Ring& ring, const std::vector<Hinge>& hinges) {
 SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread) {
   std::string why;
   if (!spread.is_valid(&why)) throw std::invalid_argument("SpreadOptions: " + why);
-  const LimitResult base = analyse_limit(scene, limit);
-  if (base.status == LimitStatus::inadmissible || !base.min_state.found()) {
-    SpreadResult r;
-    r.ring = base.ring;
-    r.status = base.status == LimitStatus::lp_failure ? SpreadStatus::lp_failure : SpreadStatus::inadmissible;
-    r.message = base.message.empty() ? "no thrust line fits inside the arch at d = 0" : base.message;
-    return r;
+  // The ring and the path are those without friction (the cone is checked on each state); the state at
+  // d = 0 with friction, and whether there is one, is limit's with it.
+  LimitOptions frictionless = limit;
+  frictionless.friction = 0;
+  const LimitResult base = analyse_limit(scene, frictionless);
+  const LimitResult with_friction = limit.friction > 0 ? analyse_limit(scene, limit) : LimitResult{};
+  const LimitResult& start = limit.friction > 0 ? with_friction : base;
+  for (const LimitResult* each : {&base, &start}) {
+    if (each->status == LimitStatus::inadmissible || !each->min_state.found()) {
+      SpreadResult r;
+      r.ring = base.ring;
+      r.status = each->status == LimitStatus::lp_failure ? SpreadStatus::lp_failure : SpreadStatus::inadmissible;
+      r.message = each == &base || each->status == LimitStatus::lp_failure
+                      ? (each->message.empty() ? "no thrust line fits inside the arch at d = 0" : each->message)
+                      : "no state of the arch at d = 0 keeps every joint's resultant inside the friction cone";
+      return r;
+    }
   }
   const double sides = spread.left_share + spread.right_share;
   SpreadOptions round = spread;  // the rounds to collapse, keeping the first and last states only
   round.whole_path = false;
   round.stop_ratio = std::numeric_limits<double>::infinity();
-  SpreadResult r = follow(base.ring, base, limit, round);
+  SpreadResult r = follow(base.ring, start, limit, round);
   std::vector<double> fractions = r.ring.joint_fractions;
   int increments = r.increments, rolls = r.rolls;
   double change = 0;  // no refinement: nothing moved
   bool stayed = false;  // a finer ring changed the state at d = 0: the last ring's path stands
   for (int refinement = 0; r.status == SpreadStatus::success && refinement < kMostSpreadRefinements; ++refinement) {
     const std::vector<Hinge> rolling = rolling_hinges(r.ring, r.path.back().hinges);
-    if (rolling.empty() || (refinement > 0 && coarsest_next_to(r.ring, rolling) <= kSpreadJointSpacing * r.ring.span &&
+    if (rolling.empty() || r.d_max == 0 || (refinement > 0 && coarsest_next_to(r.ring, rolling) <= kSpreadJointSpacing * r.ring.span &&
                             change <= kSpreadCapacityTolerance))
       break;
     limit_detail::add_refinement(r.ring, rolling, fractions);
     fractions = limit_detail::merged_fractions(std::move(fractions));
-    SpreadResult finer = follow(limit_detail::make_ring_at(scene, limit, fractions), base, limit, round);
+    SpreadResult finer = follow(limit_detail::make_ring_at(scene, frictionless, fractions), start, limit, round);
     increments += finer.increments;
     rolls += finer.rolls;
     if (finer.status != SpreadStatus::success) return finer;
@@ -675,7 +644,7 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
   const bool converged = r.status != SpreadStatus::success || stayed || change <= kSpreadCapacityTolerance;
   SpreadResult out = r;
   if (spread.whole_path || spread.stop_ratio < std::numeric_limits<double>::infinity()) {
-    out = follow(r.ring, base, limit, spread);
+    out = follow(r.ring, start, limit, spread);
     out.increments += increments;
     out.rolls += rolls;
   } else {

@@ -49,6 +49,7 @@ ThrustState thrust_state(const Ring& ring, double H, double V_left, double M_lef
     const Eigen::Vector2d d = joint.extrados - joint.intrados;
     const double u = (moment - cross(joint.intrados, F)) / cross(d, F);
     st.crossing.push_back(joint.intrados + u * d);
+    st.force.push_back(F);
     if (F.norm() <= forceless && !(pin < ring.pins.size() && ring.pins[pin] == static_cast<int>(j))) {
       st.forceless = true;
       continue;

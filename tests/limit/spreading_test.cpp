@@ -322,3 +322,219 @@ TEST_CASE("spreading: without the whole path, the same answer from the first and
   CHECK(a.path.back().H == b.path.back().H);
   CHECK(a.path.front().H == b.path.front().H);
 }
+
+namespace {
+
+LimitOptions with_friction(double mu) {
+  LimitOptions o;
+  o.friction = mu;
+  return o;
+}
+
+// The angle (rad) of joint j's resultant to the joint's normal, from the state's H and V_left, the loads
+// of the voussoirs before the joint (vertical: the same wherever the voussoirs are) and the joint's line
+// where the moved voussoirs have it (the face of the voussoir after it; the last voussoir's right face
+// at the right springing): computed apart from the program's rows and from sliding_joint.
+double resultant_angle(const SpreadResult& r, std::size_t j) {
+  const SpreadStep& s = r.path.back();
+  double left = 0;
+  for (std::size_t k = 0; k < j; ++k) {
+    const Voussoir& v = r.ring.voussoirs[k];
+    left += v.weight + v.fill.force + v.live.force;
+  }
+  const Eigen::Vector2d F(s.H, s.V_left - left);
+  const std::size_t n = r.shape.voussoirs.size();
+  const auto& face = r.shape.voussoirs[j < n ? j : n - 1];
+  const Eigen::Vector2d along = (j < n ? face[1] - face[0] : face[2] - face[3]).normalized();
+  return std::atan2(std::abs(F.dot(along)), std::abs(F.x() * along.y() - F.y() * along.x()));
+}
+
+}  // namespace
+
+TEST_CASE("spreading with friction: a generous coefficient changes nothing, to the byte") {
+  const Scene scene = paper_scene(0.0, 0.075);
+  const SpreadResult free = analyse_spreading(scene, {}, {});
+  const SpreadResult rough = analyse_spreading(scene, with_friction(0.6), {});
+  REQUIRE(free.status == SpreadStatus::success);
+  REQUIRE(rough.status == SpreadStatus::success);
+  CHECK(rough.collapse == free.collapse);
+  CHECK(rough.d_max == free.d_max);
+  CHECK(rough.sliding_joint == -1);
+  REQUIRE(rough.path.size() == free.path.size());
+  for (std::size_t i = 0; i < free.path.size(); ++i) {
+    CAPTURE(i);
+    CHECK(rough.path[i].H == free.path[i].H);
+    CHECK(rough.path[i].V_left == free.path[i].V_left);
+  }
+}
+
+TEST_CASE("spreading with friction: the semicircle slides on a springing's bed, its resultant at atan mu there") {
+  // The semicircle's thrust rises as it spreads (H/V from 0.35 at d = 0 to 0.47 at collapse at
+  // t = 0.075 L): with 0.35 < mu < 0.47 the resultant on a springing's bed (horizontal, its normal
+  // vertical) reaches the friction cone on the way, and a slip there is the wall's movement carried on.
+  // Bisected to kSpreadTolerance L, along which H/V moves by about 2 kSpreadTolerance.
+  constexpr double kBisected = 1e-5;     // rad
+  constexpr double kInsideCone = 1e-9;   // rad: the other joints keep within the cone to round-off
+  int tested = 0;
+  for (const double t : {0.075, 0.1}) {
+    const Scene scene = paper_scene(0.0, t);
+    const SpreadStep end = analyse_spreading(scene, {}, {}).path.back();
+    const ThrustState start = analyse_limit(scene, {}).min_state;
+    for (const double mu : {0.4, 0.45}) {
+      CAPTURE(t);
+      CAPTURE(mu);
+      if (!(mu > start.H / start.V_left && mu < end.H / end.V_left)) continue;
+      ++tested;
+      const SpreadResult r = analyse_spreading(scene, with_friction(mu), {});
+      REQUIRE(r.status == SpreadStatus::success);
+      REQUIRE(r.collapse == SpreadCollapse::sliding);
+      const std::size_t last = r.ring.joints.size() - 1;
+      CHECK((r.sliding_joint == 0 || r.sliding_joint == static_cast<int>(last)));
+      const std::size_t j = static_cast<std::size_t>(r.sliding_joint);
+      CHECK(std::abs(resultant_angle(r, j) - std::atan(mu)) <= kBisected);
+      // The springings' beds carry the same H and V (a symmetric arch): both at the cone, neither beyond.
+      CHECK(resultant_angle(r, 0) <= std::atan(mu) + kInsideCone);
+      CHECK(resultant_angle(r, last) <= std::atan(mu) + kInsideCone);
+      for (std::size_t k = 1; k < last; ++k) {
+        const bool hinge = std::any_of(r.path.back().hinges.begin(), r.path.back().hinges.end(),
+                                       [&](const Hinge& h) { return h.joint == static_cast<int>(k); });
+        if (!hinge) CHECK(resultant_angle(r, k) <= std::atan(mu) + kInsideCone);
+      }
+      CHECK(r.d_max > 0);
+    }
+  }
+  CHECK(tested == 4);
+}
+
+TEST_CASE("spreading with friction: the capacity grows with the coefficient up to the frictionless one") {
+  const Scene scene = paper_scene(0.0, 0.075);
+  const double free = analyse_spreading(scene, {}, {}).d_max;
+  double previous = 0;
+  int slid = 0;
+  for (const double mu : {0.36, 0.38, 0.4, 0.42, 0.44, 0.46, 0.48, 0.5}) {
+    CAPTURE(mu);
+    const SpreadResult r = analyse_spreading(scene, with_friction(mu), {});
+    REQUIRE(r.status == SpreadStatus::success);
+    CHECK(r.d_max >= previous);
+    CHECK(r.d_max <= free);
+    if (r.collapse == SpreadCollapse::sliding) ++slid;
+    else CHECK(r.d_max == free);
+    previous = r.d_max;
+  }
+  CHECK(slid >= 4);
+}
+
+TEST_CASE("spreading with friction: no state at d = 0 inside the cones, or one that slides at once") {
+  // Below the minimum-thrust state's H/V no state keeps the springings' beds inside the cone: limit
+  // with the friction says inadmissible, and so does spread.
+  const Scene scene = paper_scene(0.0, 0.075);
+  CHECK(analyse_limit(scene, with_friction(0.3)).status == LimitStatus::inadmissible);
+  CHECK(analyse_spreading(scene, with_friction(0.3), {}).status == SpreadStatus::inadmissible);
+  // A thick semicircle's minimum-thrust line leans on a haunch joint beyond atan 0.35: the state it
+  // starts from is limit's, of higher thrust, and the first movement slides.
+  const Scene thick = paper_scene(0.0, 0.12);
+  const LimitResult lim = analyse_limit(thick, with_friction(0.35));
+  REQUIRE(lim.status == LimitStatus::success);
+  const SpreadResult r = analyse_spreading(thick, with_friction(0.35), {});
+  REQUIRE(r.status == SpreadStatus::success);
+  CHECK(r.collapse == SpreadCollapse::sliding);
+  CHECK(r.d_max == 0);
+  REQUIRE(r.path.size() == 1);
+  CHECK(r.path.front().H == lim.min_state.H);
+  CHECK(r.path.front().H > analyse_limit(thick, {}).min_state.H);
+}
+
+namespace {
+
+// The engineer's vault (docs/assessing-an-arch.md): an equilateral arch of 8 m, t = 0.8 m, fill of the
+// same density to the crown, 50 kN/m at a quarter of the span.
+Scene engineers_arch() {
+  Scene s;
+  s.curve = make_pointed(8.0, 0.5);
+  s.thickness = 0.8;
+  s.material.density = 2000;
+  s.loads.fills.push_back(FillLoad{2000.0, 0.924});
+  s.loads.points.push_back({5e4, 0.25});
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("spreading: the loaded pointed arch snaps where a hinge forms at its crown, every state in balance") {
+  // Its three hinges (left haunch, extrados next to the load, right haunch) turn until the thrust line
+  // reaches the intrados at the pointed crown, far from the right haunch's hinge: a fourth hinge that
+  // no balance holds (the loads do work on the chain's free mode as it opens, at fixed springings), and
+  // the blocks move on. Before it, with the true weight, the load's two edge joints both open (four
+  // hinges in balance: the thrust line through each).
+  constexpr double kClosed = 1e-12;   // rad, and of the span
+  constexpr double kContact = 1e-8;   // of the span
+  constexpr double kAtCrown = 1e-4;   // of the span: the thrust line at the crown's intrados at collapse
+  for (const WeightModel weight : {WeightModel::voussoir, WeightModel::axis}) {
+    CAPTURE(to_string(weight));
+    LimitOptions o;
+    o.weight = weight;
+    const SpreadResult r = analyse_spreading(engineers_arch(), o, {});
+    REQUIRE(r.status == SpreadStatus::success);
+    CHECK(r.collapse == SpreadCollapse::snap_through);
+    CHECK(r.message.find("x = 0.5 L") != std::string::npos);
+    const double L = r.ring.span;
+    CHECK(2 * r.d_max / L > 0.005);
+    bool four = false;
+    for (std::size_t i = 0; i < r.path.size(); ++i) {
+      CAPTURE(i);
+      CHECK(close(r.path[i].H, r.path[i].H_work, kStaticKinematic));
+      if (i > 0) CHECK(r.path[i].potential < r.path[i - 1].potential);
+      four = four || r.path[i].hinges.size() == 4;
+    }
+    if (weight == WeightModel::voussoir) CHECK(four);
+    // Every opened joint at collapse is a hinge, the thrust line through its point.
+    const SpreadShape& shape = r.shape;
+    const SpreadStep& last = r.path.back();
+    int opened = 0;
+    for (std::size_t j = 1; j < shape.voussoirs.size(); ++j) {
+      const auto& before = shape.voussoirs[j - 1];
+      const auto& after = shape.voussoirs[j];
+      const double rotation = std::remainder(joint_angle(after[0], after[1]) - joint_angle(before[3], before[2]), 2 * std::numbers::pi);
+      const double gap = std::max((after[0] - before[3]).norm(), (after[1] - before[2]).norm());
+      if (std::abs(rotation) <= kClosed && gap <= kClosed * L) continue;
+      CAPTURE(j);
+      ++opened;
+      const auto hinge = std::find_if(last.hinges.begin(), last.hinges.end(),
+                                      [&](const Hinge& h) { return h.joint == static_cast<int>(j); });
+      REQUIRE(hinge != last.hinges.end());
+      CHECK((shape.thrust_line[j] - hinge->point).norm() <= kContact * L);
+    }
+    CHECK(opened >= 3);
+    // The new contact: the thrust line reaches the intrados at the pointed crown (the joints through the
+    // intrados' crown point, where the arch stood at d = 0), which is no hinge.
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 1; j < shape.voussoirs.size(); ++j)
+      if (std::abs(r.ring.joints[j].intrados.x() - L / 2) <= 1e-9 * L)
+        nearest = std::min(nearest, (shape.thrust_line[j] - shape.voussoirs[j][0]).norm());
+    CHECK(nearest <= kAtCrown * L);
+  }
+}
+
+TEST_CASE("spreading: loaded arches whose contacts went back and forth now reach a collapse, in balance") {
+  // A point load near the crown with fill: the thrust line grazes the extrados at both edges of the
+  // load's joints, or touches a face far from its hinges. Each path ends at a collapse, its thrust the
+  // mechanism's virtual work at every state and the loads going down.
+  for (const auto& [eccentricity, thickness] : {std::pair{0.0, 0.1}, std::pair{0.2, 0.08}, std::pair{0.5, 0.1}, std::pair{1.0, 0.15}}) {
+    CAPTURE(eccentricity);
+    CAPTURE(thickness);
+    Scene s = paper_scene(eccentricity, thickness);
+    s.material.density = 2000;
+    s.loads.fills.push_back(FillLoad{2000.0, 0.9});
+    s.loads.points.push_back({5e4, 0.4});
+    LimitOptions o;
+    o.weight = WeightModel::axis;
+    const SpreadResult r = analyse_spreading(s, o, {});
+    REQUIRE(r.status == SpreadStatus::success);
+    CHECK(r.d_max > 0);
+    for (std::size_t i = 0; i < r.path.size(); ++i) {
+      CAPTURE(i);
+      CHECK(close(r.path[i].H, r.path[i].H_work, kStaticKinematic));
+      if (i > 0) CHECK(r.path[i].potential < r.path[i - 1].potential);
+    }
+  }
+}

@@ -199,6 +199,7 @@ struct ThrustState {
   double V_right = std::numeric_limits<double>::quiet_NaN();      // N/m, upward reaction, right support
   double load_factor = std::numeric_limits<double>::quiet_NaN();  // multiplier on the live load
   std::vector<Eigen::Vector2d> crossing;  // m, one per joint: the resultant's point on the joint
+  std::vector<Eigen::Vector2d> force;     // N/m, one per joint: the part left of it on the part right of it
   std::vector<Hinge> hinges;              // by joint: the pins, and the joints where the crossing is at a
                                           // face (to 1e-9 of the joint); of a collapse state in
                                           // LimitResult, its mechanism's (see there). A joint that

@@ -31,6 +31,18 @@
 // contact whose mechanism's rate would close it is no hinge, and a state whose rotations would close a
 // hinge is no state of the path.
 //
+// New hinges: a contact further than 0.05 L along its face from every hinge on it has not rolled there
+// (the thrust line touches the face at a second place, the pointed crown's intrados, say): it is a new
+// hinge, from no rotation, and a hinge left with no contact within two joints of it stays open, its
+// joint still turned. So does a hinge the program's contacts go back and forth from (the thrust line
+// grazing the face between two joints, or either edge of a load). Four hinges leave the chain one free
+// mode at each d: the blocks stand where the loads do no work on it, the thrust line through all four
+// (found along the mode by the secant method), a balance that must be stable (the loads' work turning
+// against the mode beyond it); a hinge whose rotation goes back through zero closes, and three remain.
+// A new hinge that no stable balance of four holds (or that would make five) is a snap: the loads move
+// the blocks on at fixed springings, and the path ends there (snap_through), unless where the blocks
+// would come to rest no thrust line fits either (thrust_leaves_arch).
+//
 // A joint is taken midway between its two faces: exact at a closed joint (the faces coincide) and at
 // a settled hinge, whose contact point both faces share and through which the thrust line passes.
 //
@@ -43,11 +55,26 @@
 // state at d = 0 (a pointed arch's thrust line grazing its extrados over several new joints) is not
 // taken: the last ring's path stands (the limit analysis' ring when it is the first).
 //
+// Friction (LimitOptions::friction > 0): the program is the one without friction, and every state's
+// resultant at every joint is checked against Coulomb's cone, |shear| <= friction * normal force. The
+// state of a mechanism is its hinges' own (three fix it), and a Coulomb joint inside its cone does not
+// slip (friction without dilatancy: the non-associative law), so while every joint keeps inside the
+// cone the blocks can only turn about their hinges, as without friction: the path is the frictionless
+// one, to the byte, and exact. The first state whose resultant leaves the cone at a joint ends the path:
+// that joint slides. ogive follows no sliding mechanism: the capacity is the movement to the first slip,
+// never more than the arch's (a slip at a springing's bed is the wall's movement carried on by the
+// loads, which the friction no longer balances where the thrust rises with the movement). At d = 0 the friction-admissible state of least thrust is limit's (LimitResult::min_state
+// with the friction); when the frictionless minimum-thrust state already leaves the cone, the path is
+// that one state, collapse `sliding` at d = 0.
+//
 // Collapse, at the first of (the last increment bisected to kSpreadTolerance of the span):
 //   thrust_leaves_arch - no thrust line fits inside the moved voussoirs (the program is infeasible): the
 //                  line of thrust would have to leave the arch;
 //   snap_through - no mechanism of the current hinges moves the springings apart: the hinges are in a
-//                  line, or fewer than three remain that open, or their rotations would close one.
+//                  line, or fewer than three remain that open, or their rotations would close one; or a
+//                  new hinge snaps (above; SpreadResult::message says where);
+//   sliding      - (with friction) a joint's resultant leaves the friction cone
+//                  (SpreadResult::sliding_joint).
 //
 // Units: SI (m, N per metre of width). Positions as in limit.hpp: x from the left springing's intrados
 // at d = 0, y up.
@@ -96,7 +123,7 @@ struct SpreadOptions {
   bool is_valid(std::string* why) const;
 };
 
-enum class SpreadCollapse { thrust_leaves_arch, snap_through };
+enum class SpreadCollapse { thrust_leaves_arch, snap_through, sliding };
 const char* to_string(SpreadCollapse c);
 
 // One state of the mechanism.
@@ -142,6 +169,10 @@ struct SpreadResult {
   SpreadCollapse collapse = SpreadCollapse::thrust_leaves_arch;
   double d_max = std::numeric_limits<double>::quiet_NaN();  // m, the movement parameter at collapse
   bool stopped = false;  // the path stopped at SpreadOptions::stop_ratio before collapse (d_max is NaN)
+  // collapse == sliding: the joint of `ring` that slides, and where its axis point is at collapse (m);
+  // -1 and NaN otherwise.
+  int sliding_joint = -1;
+  Eigen::Vector2d sliding_point = Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
   int increments = 0;             // increments taken (each one or more programs, plus the bisection's)
   int rolls = 0;                  // times the hinges rolled to other joints (each one program more)
   // d = 0, about `steps` states between, and the last admissible one (SpreadOptions::whole_path false:
