@@ -61,6 +61,22 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"fill_height", "m", "the fill's level h_f above the springing line"},
     {"unit_weight", "N/m^3", "the masonry's unit weight gamma = rho g as given (--unit-weight; density is then gamma / g); empty: --density gave it"},
     {"loads_file", "", "the --loads-file whose loads the scene carries too"},
+    {"wall_height", "m", "--wall-height as given: both walls' height h_w from the base to the springing line"},
+    {"wall_thickness", "m", "--wall-thickness as given: both walls' thickness b_w"},
+    {"wall_density", "kg/m^3", "--wall-density as given: both walls' density"},
+    {"wall_top_load", "N/m", "--wall-top-load as given: the load on both walls' tops, downwards"},
+    {"wall_top_load_at", "", "--wall-top-load-at as given: where it acts, a fraction of b_w from the inner face"},
+    {"left_wall_height", "m", "left wall's height h_w from its base to the springing line; empty: no wall"},
+    {"left_wall_thickness", "m", "left wall's thickness b_w, outwards from the vertical through the springing's intrados point"},
+    {"left_wall_density", "kg/m^3", "left wall's density"},
+    {"left_wall_top_load", "N/m", "load on the left wall's top, downwards"},
+    {"left_wall_top_load_at", "", "where it acts, a fraction of b_w from the inner face"},
+    {"right_wall_height", "m", "right wall's height h_w from its base to the springing line; empty: no wall"},
+    {"right_wall_thickness", "m", "right wall's thickness b_w, outwards from the vertical through the springing's intrados point"},
+    {"right_wall_density", "kg/m^3", "right wall's density"},
+    {"right_wall_top_load", "N/m", "load on the right wall's top, downwards"},
+    {"right_wall_top_load_at", "", "where it acts, a fraction of b_w from the inner face"},
+    {"wall_thickness_min", "m", "least wall thickness b_min on which the arch as it is stands (every wall given that thickness); empty without walls"},
     {"horizontal_acceleration", "", "horizontal acceleration a / g, left to right positive, on the self-weight and fill"},
     {"method", "", "method that produced the numbers (closed-form, shooting, multiple-shooting)"},
     {"integrator", "", "CVODE's method (adams, bdf); empty for the closed form"},
@@ -137,7 +153,7 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"H_max_over_V", "", "limit: H_max / V, V half the total vertical load (the V column; with a symmetric scene, H_over_V's V_left)"},
     {"thickness_min_ratio", "", "limit, assess: t_min / span, the thinnest arch of the same axis that stands"},
     {"geometric_safety_factor", "", "limit, assess: t / t_min"},
-    {"hinges_min", "", "limit: hinges of the minimum-thrust state, x/L:face joined by ';' (face: intrados, extrados, or axis for a pin; x from the left springing's axis point, so a hinge on a springing's outer face lies beyond [0, 1], e.g. -0.04 at t/L 0.08)"},
+    {"hinges_min", "", "limit: hinges of the minimum-thrust state, x/L:face joined by ';' (face: intrados, extrados, or axis for a pin; x from the left springing's axis point, so a hinge on a springing's outer face lies beyond [0, 1], e.g. -0.04 at t/L 0.08); on walls a hinge at a bed's edge is x/L:wall-outer@y/L or wall-inner@y/L, y from the springing line (the base at -h_w/L)"},
     {"hinges_max", "", "limit: hinges of the maximum-thrust state, x/L:face joined by ';'"},
     {"load_factor", "", "limit, assess: multiplier on the live load (every point and live load) at collapse (static LP)"},
     {"load_factor_mechanism", "", "limit: the same from the mechanism of those hinges by virtual work"},
@@ -234,7 +250,10 @@ const std::vector<std::string>& scene_columns() {
       "right_spread_ratio", "left_settlement_ratio", "right_settlement_ratio", "left_rotation", "right_rotation",
       "point_load", "point_load_at", "live_load", "live_load_from", "live_load_to", "fill_density",
       "fill_height_ratio", "loads_file", "horizontal_acceleration", "thickness", "rise", "radius", "point_load_x",
-      "live_load_from_x", "live_load_to_x", "fill_height", "unit_weight"};
+      "live_load_from_x", "live_load_to_x", "fill_height", "unit_weight", "wall_height", "wall_thickness",
+      "wall_density", "wall_top_load", "wall_top_load_at", "left_wall_height", "left_wall_thickness",
+      "left_wall_density", "left_wall_top_load", "left_wall_top_load_at", "right_wall_height",
+      "right_wall_thickness", "right_wall_density", "right_wall_top_load", "right_wall_top_load_at"};
   return columns;
 }
 
@@ -388,6 +407,11 @@ void add_scene_columns(CsvRow& row, const SceneParameters& p, const Curve* curve
   else if (curve && row.wants_next()) row.add(rounded(curve->rise()));
   else row.add(std::string_view{});
   for (double v : {p.radius, p.point_load_x, p.live_load_from_x, p.live_load_to_x, p.fill_height, p.unit_weight})
+    add_parameter(row, v);
+  for (double v : {p.wall_height, p.wall_thickness, p.wall_density, p.wall_top_load, p.wall_top_load_at,
+                   p.left_wall_height, p.left_wall_thickness, p.left_wall_density, p.left_wall_top_load,
+                   p.left_wall_top_load_at, p.right_wall_height, p.right_wall_thickness, p.right_wall_density,
+                   p.right_wall_top_load, p.right_wall_top_load_at})
     add_parameter(row, v);
 }
 

@@ -528,9 +528,8 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   if (!std::isnan(r.thickness_min))
     round.refinement.insert(round.refinement.end(), f.feasible_refinement.begin(), f.feasible_refinement.end());
   const limit_detail::WallSearch walls =
-      admissible ? limit_detail::least_wall_thickness(scene, options, fractions_at(scene, t, options, refined),
-                                                      load_factor, previous_b_min, r, round.refinement)
-                 : limit_detail::WallSearch{};
+      limit_detail::least_wall_thickness(scene, options, fractions_at(scene, t, options, refined), load_factor,
+                                         previous_b_min, r, round.refinement);
   if (walls.failed) return fail("the feasibility margin while searching the least wall thickness");
   // The next ring is refined next to every joint the collapse state touches; the result lists the
   // mechanism's hinges (a thrust line along a face touches a run of joints, of which the mechanism needs
@@ -541,8 +540,8 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
     r.status = LimitStatus::inadmissible;
     const char* where = options.friction > 0 ? "inside the arch and its joints' friction cones" : "inside the arch";
     r.message = std::isnan(r.thickness_min)
-                    ? fmt::format("no thrust line fits {} at any thickness up to {} m", where, t_cap)
-                    : fmt::format("no thrust line fits {}: t < t_min", where);
+                    ? fmt::format("no thrust line fits {}{} at any thickness up to {} m", where, walls.on, t_cap)
+                    : fmt::format("no thrust line fits {}{}: t < t_min{}", where, walls.on, walls.thinner);
     return round;
   }
   r.status = LimitStatus::success;

@@ -60,6 +60,9 @@ double arch_half_load(const Ring& ring);
 struct WallSearch {
   double b_min = std::numeric_limits<double>::quiet_NaN();
   std::string note;                // why there is no root, or why it is the least thickness allowed
+  // For the message of a system that does not stand: " on its walls" (empty without walls), and
+  // " (or the walls are thinner than b_min)" when some is.
+  std::string on, thinner;
   std::vector<double> refinement;  // next to the hinges of the thinnest wall that stands
   int solves = 0;
   bool failed = false;  // a program stopped without an answer

@@ -373,6 +373,9 @@ WallSearch least_wall_thickness(const Scene& scene, const LimitOptions& options,
                                 double load_factor, double near, LimitResult& r, std::vector<double>& refinement) {
   if (!scene.has_walls()) return {};
   WallSearch w = search_wall_thickness(scene, options, fractions, load_factor, near);
+  w.on = " on its walls";
+  for (const std::optional<Wall>& wall : {scene.left_wall, scene.right_wall})
+    if (wall && wall->thickness < w.b_min) w.thinner = fmt::format(" or a wall thinner than b_min = {:.6g} m", w.b_min);
   r.wall_thickness_min = w.b_min;
   r.lp_solves += w.solves;
   refinement.insert(refinement.end(), w.refinement.begin(), w.refinement.end());
