@@ -102,9 +102,9 @@ std::shared_ptr<const Curve> read_points(const SceneOptions& o) {
 
 // The commands whose analyses take walls (the limit analysis of the system): the others refuse them.
 void refuse_walls(const CLI::App& cmd) {
-  if (!walls_given(cmd) || cmd.get_name() == "limit") return;
+  if (!walls_given(cmd) || cmd.get_name() == "limit" || cmd.get_name() == "draw") return;
   const char* flag = given(cmd, "--wall-height") ? "--wall-height" : given(cmd, "--left-wall-height") ? "--left-wall-height" : "--right-wall-height";
-  throw UsageError(fmt::format("{}: does not apply to {} (walls are taken by the limit analysis: ogive limit)", flag,
+  throw UsageError(fmt::format("{}: does not apply to {} (walls are taken by the limit analysis: ogive limit, and drawn by ogive draw)", flag,
                                cmd.get_name()));
 }
 

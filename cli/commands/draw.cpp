@@ -86,6 +86,9 @@ void add_limit_drawing(const Scene& scene, DrawingOptions& drawing) {
 constexpr auto kStageMoves = springing_movements("the rigid voussoirs' springings move apart from d = 0");
 constexpr Inapplicable kNotForSpreadStage[] = {
     {"--horizontal-acceleration", "the mechanism of rigid voussoirs carries vertical loads only"},
+    {"--wall-height", "the spreading mechanism stands on the ground, not on walls"},
+    {"--left-wall-height", "the spreading mechanism stands on the ground, not on walls"},
+    {"--right-wall-height", "the spreading mechanism stands on the ground, not on walls"},
 };
 
 // The arch of rigid voussoirs on spreading springings (ogive spread's mechanism with its defaults: both
@@ -141,6 +144,9 @@ std::string draw_title(const SceneParameters& p) {
   title += fmt::format(", span {:.6g} m, t/L {:.6g}", p.span, p.thickness_ratio);
   if (p.support_displacement_ratio != 0) title += fmt::format(", d/L {:.6g}", p.support_displacement_ratio);
   if (p.plane_strain) title += ", plane strain";
+  for (auto [side, h, b] : {std::tuple{"left", p.left_wall_height, p.left_wall_thickness},
+                            std::tuple{"right", p.right_wall_height, p.right_wall_thickness}})
+    if (!std::isnan(h)) title += fmt::format(", {} wall {:g} m high, {:g} m thick", side, h, b);
   if (std::string(p.section) != "elastic") title += fmt::format(", {} section", p.section);
   const double kilonewtons = p.force_unit / 1000;  // the force options' unit in kN
   if (!std::isnan(p.point_load))

@@ -610,6 +610,7 @@ double coarsest_next_to(const Ring& ring, const std::vector<Hinge>& hinges) {
 SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread) {
   std::string why;
   if (!spread.is_valid(&why)) throw std::invalid_argument("SpreadOptions: " + why);
+  if (scene.has_walls()) throw std::invalid_argument("left_wall, right_wall: the spreading analysis takes no walls");
   const LimitResult base = analyse_limit(scene, limit);
   if (base.status == LimitStatus::inadmissible || !base.min_state.found()) {
     SpreadResult r;

@@ -89,6 +89,7 @@ TEST_CASE("cli: bad wall input gets one line and exit 2") {
   check_refused({"limit", "--wall-height", "5", "--wall-thickness", "2", "--wall-top-load", "-3"});
   check_refused({"limit", "--wall-height", "5kg", "--wall-thickness", "2"});
   check_refused({"limit", "--curve", "segmental", "--wall-height", "0", "--wall-thickness", "3"});  // below the joint
-  for (const char* command : {"thrust", "profile", "spread", "assess", "check", "curve", "bench", "draw", "report"})
+  for (const char* command : {"thrust", "profile", "spread", "assess", "check", "curve", "bench", "report"})
     check_refused({command, "--wall-height", "5", "--wall-thickness", "2"});
+  check_refused({"draw", "--wall-height", "5", "--wall-thickness", "2", "--spread-stage", "0.5", "--output", "x.svg"});
 }
