@@ -34,27 +34,6 @@ constexpr double kLeftWallCode = 2.0, kRightWallCode = 4.0;
 // the span.
 constexpr double kDegenerate = 1e-12;
 
-// Area and centroid of a polygon (either orientation), by the shoelace formula.
-struct Polygon {
-  double area = 0;
-  Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
-};
-Polygon polygon(const std::vector<Eigen::Vector2d>& p) {
-  double a = 0;
-  Eigen::Vector2d c = Eigen::Vector2d::Zero();
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Eigen::Vector2d& u = p[i];
-    const Eigen::Vector2d& v = p[(i + 1) % p.size()];
-    const double w = u.x() * v.y() - v.x() * u.y();
-    a += w;
-    c += w * (u + v);
-  }
-  Polygon out;
-  out.area = 0.5 * std::abs(a);
-  if (a != 0) out.centroid = c / (3.0 * a);
-  return out;
-}
-
 // One wall's beds (in chain order) and blocks between them, from its outline and its depth fractions
 // (ascending in [0, 1]: 0 the highest bed, 1 the base).
 struct WallChain {
@@ -67,8 +46,7 @@ WallChain wall_chain(const WallOutline& o, const Wall& wall, double gravity, dou
   const bool right = o.outward > 0;
   const double unit_weight = wall.density * gravity;
   const Eigen::Vector2d I = o.joint.intrados, E = o.joint.extrados;
-  const Polygon wedge = polygon({{o.outer_x, o.top_y}, {o.inner_x, o.top_y}, I, E, {o.outer_x, E.y()}});
-  const bool has_wedge = wedge.area > kDegenerate * span * span;
+  const bool has_wedge = o.wedge_area > kDegenerate * span * span;
   const double depth = o.top_y - o.base_y;
   const bool has_body = depth > kDegenerate * span;
   WallChain out;
@@ -89,8 +67,8 @@ WallChain wall_chain(const WallOutline& o, const Wall& wall, double gravity, dou
   std::vector<Voussoir> blocks;  // from the top down; blocks[0] the wedge when there is one
   if (has_wedge) {
     Voussoir v;
-    v.weight = unit_weight * wedge.area;
-    v.centroid = wedge.centroid;
+    v.weight = unit_weight * o.wedge_area;
+    v.centroid = o.wedge_centroid;
     blocks.push_back(v);
   }
   for (std::size_t k = 0; k + 1 < beds.size(); ++k) {

@@ -140,6 +140,19 @@ WallOutline wall_outline(const SpringingJoint& joint, const Wall& wall, bool rig
   o.outer_x = o.inner_x + o.outward * wall.thickness;
   o.top_y = std::min(o.joint.intrados.y(), o.joint.extrados.y());
   o.base_y = o.joint.axis.y() - wall.height;
+  // The wedge's outline (either orientation) by the shoelace formula.
+  const Eigen::Vector2d I = o.joint.intrados, E = o.joint.extrados;
+  const Eigen::Vector2d p[] = {{o.outer_x, o.top_y}, {o.inner_x, o.top_y}, I, E, {o.outer_x, E.y()}};
+  double a = 0;
+  Eigen::Vector2d c = Eigen::Vector2d::Zero();
+  for (std::size_t i = 0; i < 5; ++i) {
+    const Eigen::Vector2d &u = p[i], &v = p[(i + 1) % 5];
+    const double w = u.x() * v.y() - v.x() * u.y();
+    a += w;
+    c += w * (u + v);
+  }
+  o.wedge_area = 0.5 * std::abs(a);
+  if (a != 0) o.wedge_centroid = c / (3.0 * a);
   return o;
 }
 

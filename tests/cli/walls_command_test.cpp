@@ -2,6 +2,7 @@
 // hinges in walls, the two forms of each option, sweeps, units, and the refusal of bad input.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -89,7 +90,27 @@ TEST_CASE("cli: bad wall input gets one line and exit 2") {
   check_refused({"limit", "--wall-height", "5", "--wall-thickness", "2", "--wall-top-load", "-3"});
   check_refused({"limit", "--wall-height", "5kg", "--wall-thickness", "2"});
   check_refused({"limit", "--curve", "segmental", "--wall-height", "0", "--wall-thickness", "3"});  // below the joint
-  for (const char* command : {"thrust", "profile", "spread", "assess", "check", "curve", "bench", "report"})
+  for (const char* command : {"profile", "spread", "assess", "check", "curve", "bench", "report"})
     check_refused({command, "--wall-height", "5", "--wall-thickness", "2"});
   check_refused({"draw", "--wall-height", "5", "--wall-thickness", "2", "--spread-stage", "0.5", "--output", "x.svg"});
+}
+
+TEST_CASE("cli: thrust on walls prints each wall's resultant, elastic and cracked alike") {
+  for (const char* section : {"elastic", "no-tension"}) {
+    CAPTURE(section);
+    const Run r = run_command({"thrust", "--curve", "semicircular", "--thickness-ratio", "0.1", "--wall-height", "10",
+                               "--wall-thickness", "2", "--section", section});
+    REQUIRE(r.status == 0);
+    // Five crossings from the springing line down to the base, at y/L = -1.
+    const std::string crossings = column(r.out, "left_wall_crossings");
+    CHECK(std::count(crossings.begin(), crossings.end(), ';') == 4);
+    CHECK(crossings.find(";-1:") != std::string::npos);
+    // A symmetric scene: the walls' numbers are each other's.
+    CHECK(close(std::stod(column(r.out, "left_wall_stability_ratio")),
+                std::stod(column(r.out, "right_wall_stability_ratio")), kExact));
+    CHECK(std::stod(column(r.out, "left_wall_geometric_factor")) > 0);
+  }
+  // Without walls the columns are not printed by default.
+  const Run plain = run_command({"thrust"});
+  CHECK(plain.out.find("wall") == std::string::npos);
 }

@@ -121,6 +121,10 @@ SpringingJoint springing_joint(const Curve& curve, double thickness, bool right)
 struct WallOutline {
   SpringingJoint joint;
   double outward = -1, inner_x = 0, outer_x = 0, top_y = 0, base_y = 0;
+  // The wedge between the highest bed and the springing joint (with the wall's top beyond the joint's
+  // extrados at its height): area (m^2, 0 under a horizontal joint) and centroid (m).
+  double wedge_area = 0;
+  Eigen::Vector2d wedge_centroid = Eigen::Vector2d::Zero();
 };
 WallOutline wall_outline(const SpringingJoint& joint, const Wall& wall, bool right);
 WallOutline wall_outline(const Curve& curve, double thickness, const Wall& wall, bool right);
