@@ -1,4 +1,5 @@
 // ogive thrust: the reactions H, V and H/V, one row per scene and solver combination.
+#include <cmath>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -63,7 +64,10 @@ void add_wall_columns(CsvRow& row, const Scene& scene, const Solution& sol, bool
   const WallResultant w = wall_resultant(scene, sol.reactions, right, kWallCrossingParts);
   const double L = scene.span();
   std::string text;
-  for (const WallBedCrossing& b : w.beds) text += fmt::format("{}{:.6g}:{:.6g}", text.empty() ? "" : ";", b.y / L, b.x / L);
+  // Six digits, so a bed's height at the springing line is 0 however the round-off of its joint fell.
+  auto shown = [&](double v) { return std::abs(v) < 1e-12 * L ? 0.0 : v / L; };
+  for (const WallBedCrossing& b : w.beds)
+    text += fmt::format("{}{:.6g}:{:.6g}", text.empty() ? "" : ";", shown(b.y), shown(b.x));
   row.add(text).add(w.base_eccentricity).add(w.stability_ratio).add(w.geometric_factor);
 }
 
