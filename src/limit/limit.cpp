@@ -506,7 +506,7 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   MarginFunction f{scene,        options, refined, load_factor, work, 0, false, margin.basis,
                    std::numeric_limits<double>::infinity(), {}, static_cast<int>(ring.joints.size())};
   const double t = scene.thickness;
-  const double t_cap = 0.99 * max_thickness(curve);
+  const double t_cap = std::min(0.99 * max_thickness(curve), limit_detail::thickest_on_walls(scene));
   // Where the thrust vanishes at some joint the margin is zero at every thickness that stands (no
   // distance from the faces to give): its sign is the round-off's, and t_min is not searched.
   const bool forceless = r.min_state.forceless || r.max_state.forceless;
@@ -540,7 +540,7 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
     r.status = LimitStatus::inadmissible;
     const char* where = options.friction > 0 ? "inside the arch and its joints' friction cones" : "inside the arch";
     r.message = std::isnan(r.thickness_min)
-                    ? fmt::format("no thrust line fits {}{} at any thickness up to {} m", where, walls.on, t_cap)
+                    ? fmt::format("no thrust line fits {}{} at any thickness up to {} m{}", where, walls.on, t_cap, walls.thinner)
                     : fmt::format("no thrust line fits {}{}: t < t_min{}", where, walls.on, walls.thinner);
     return round;
   }

@@ -52,6 +52,9 @@ bool kept_wall_fraction(double f);  // an encoded wall bed strictly inside its w
 // Puts the scene's walls on the ring (built without them): the left wall's beds and blocks before the
 // arch, the right wall's after it (Ring::left_wall_joints), at the fractions' encoded wall beds.
 void attach_walls(const Scene& scene, const std::vector<double>& fractions, Ring& ring);
+// The thickest arch whose springing joints the scene's walls carry whole (as wide as the thinnest
+// wall): where t_min's search stops; infinity without walls.
+double thickest_on_walls(const Scene& scene);
 // Half the arch's loads (dead plus live at factor 1; the walls' not counted): LimitResult::V.
 double arch_half_load(const Ring& ring);
 // The least wall thickness of the scene on the joints `fractions`, under dead + load_factor * live,

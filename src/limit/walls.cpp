@@ -172,6 +172,19 @@ void add_refinement(const Ring& ring, const std::vector<Hinge>& hinges, std::vec
   }
 }
 
+double thickest_on_walls(const Scene& scene) {
+  double thickest = std::numeric_limits<double>::infinity();
+  for (bool right : {false, true}) {
+    const std::optional<Wall>& w = right ? scene.right_wall : scene.left_wall;
+    if (!w) continue;
+    // The springing joint's horizontal width is linear in t: its width at t = 1 m scales it.
+    const WallOutline o = wall_outline(*scene.curve, 1.0, *w, right);
+    const double width = o.outward * (o.joint.extrados.x() - o.joint.intrados.x());
+    if (width > 0) thickest = std::min(thickest, w->thickness / width);
+  }
+  return thickest;
+}
+
 double arch_half_load(const Ring& ring) {
   double total = 0;
   for (int k = ring.left_springing(); k < ring.right_springing(); ++k) {
@@ -353,7 +366,7 @@ WallSearch least_wall_thickness(const Scene& scene, const LimitOptions& options,
   WallSearch w = search_wall_thickness(scene, options, fractions, load_factor, near);
   w.on = " on its walls";
   for (const std::optional<Wall>& wall : {scene.left_wall, scene.right_wall})
-    if (wall && wall->thickness < w.b_min) w.thinner = fmt::format(" or a wall thinner than b_min = {:.6g} m", w.b_min);
+    if (wall && wall->thickness < w.b_min) w.thinner = fmt::format(" (a wall is thinner than b_min = {:.6g} m)", w.b_min);
   r.wall_thickness_min = w.b_min;
   r.lp_solves += w.solves;
   refinement.insert(refinement.end(), w.refinement.begin(), w.refinement.end());

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "limit/limit_internal.hpp"
@@ -183,4 +184,40 @@ TEST_CASE("walls: a wall thinner than its springing joint, or below it, is refus
   seg.left_wall->height = 2.0;
   CHECK_NOTHROW(seg.validate());
   CHECK(analyse_limit(seg, {}).status == LimitStatus::success);
+}
+
+TEST_CASE("walls: a rampant arch on walls of different heights, each from its own springing") {
+  std::vector<std::pair<double, double>> xy;
+  for (int k = 0; k <= 80; ++k) {
+    const double x = 10.0 * k / 80;
+    xy.emplace_back(x, 0.2 * x + 20.0 * (x / 10) * (1 - x / 10));  // the right springing 2 m higher
+  }
+  Scene s = paper_scene(0.0, 0.06);
+  s.curve = make_whole_points_curve(xy);
+  s.left_wall = Wall{6.0, 2.0, s.material.density, 0.0, 0.5};
+  s.right_wall = Wall{4.0, 2.0, s.material.density, 0.0, 0.5};
+  const LimitResult r = analyse_limit(s, {});
+  REQUIRE(r.status == LimitStatus::success);
+  // The bases: 6 m below the left springing, 4 m below the right one (at y = 2 m).
+  CHECK(close(r.ring.joints.front().intrados.y(), -6.0, kExact));
+  CHECK(close(r.ring.joints.back().intrados.y(), -2.0, kExact));
+  // Walls that do not limit the arch: its own thrust range; b_min below the walls given.
+  Scene bare = s;
+  bare.left_wall.reset();
+  bare.right_wall.reset();
+  const LimitResult arch = analyse_limit(bare, {});
+  CHECK(close(r.H_min(), arch.H_min(), kConverged));
+  CHECK(close(r.H_max(), arch.H_max(), kConverged));
+  CHECK(r.wall_thickness_min < 2.0);
+}
+
+TEST_CASE("walls: on walls thinner than b_min the system does not stand; t_min is searched only on arches the walls carry") {
+  const Scene s = on_walls(0.08, 1.0, 0.12);  // t = 0.8 m on walls 1.2 m thick, b_min = 1.66 m
+  const LimitResult r = analyse_limit(s, {});
+  CHECK(r.status == LimitStatus::inadmissible);
+  CHECK(r.wall_thickness_min > 0.12 * s.span());
+  CHECK(r.message.find("thinner than b_min") != std::string::npos);
+  // No arch up to 1.2 m thick (a springing joint as wide as the walls) stands on them.
+  CHECK(std::isnan(r.thickness_min));
+  CHECK(r.message.find("up to 1.2 m") != std::string::npos);
 }

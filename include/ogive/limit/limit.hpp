@@ -243,7 +243,9 @@ struct LimitResult {
                           // arch holds a straight thrust line of any H (infinite compressive strength)
   double thickness_min = std::numeric_limits<double>::quiet_NaN();  // t_min, m, same axis and loads; NaN
                                                                    // (with a message) below 1e-6 of the span;
-                                                                   // on the scene's walls when it has any
+                                                                   // on the scene's walls when it has any (up
+                                                                   // to the thickness whose springing joint
+                                                                   // is as wide as the thinnest wall)
   // With walls: the least wall thickness b_min (m) on which the arch as it is stands, every wall of the
   // scene given that thickness (their heights, densities and top loads kept): the root of the
   // feasibility margin in b_w, as t_min's. When the walls stand at the least thickness that carries the
