@@ -186,6 +186,8 @@ double thickest_on_walls(const Scene& scene) {
 }
 
 double arch_half_load(const Ring& ring) {
+  // Without walls, the ring's totals summed as they always were (the same V to the bit).
+  if (ring.left_wall_joints == 0 && ring.right_wall_joints == 0) return 0.5 * (ring.total_dead() + ring.total_live());
   double total = 0;
   for (int k = ring.left_springing(); k < ring.right_springing(); ++k) {
     const Voussoir& v = ring.voussoirs[static_cast<std::size_t>(k)];
