@@ -114,3 +114,12 @@ TEST_CASE("cli: thrust on walls prints each wall's resultant, elastic and cracke
   const Run plain = run_command({"thrust"});
   CHECK(plain.out.find("wall") == std::string::npos);
 }
+
+TEST_CASE("cli: draw on walls shows the walls, the limit lines and the elastic resultant down to the bases") {
+  const Run r = run_command({"draw", "--curve", "semicircular", "--thickness-ratio", "0.1", "--wall-height", "10",
+                             "--wall-thickness", "2", "--limit", "--output", "-"});
+  REQUIRE(r.status == 0);
+  for (const char* id : {"wall-left", "wall-right", "ground-left", "thrust-line-min", "wall-resultant-left",
+                         "wall-resultant-right"})
+    CHECK(r.out.find(std::string("id=\"") + id + "\"") != std::string::npos);
+}

@@ -21,7 +21,8 @@
 //   #wall-left, #wall-right   the walls under the springings (Scene::left_wall, right_wall), filled,
 //               with the ground under each base hatched (#ground-left, #ground-right); a springing on a
 //               wall has no support drawn of its own. The limit analysis' lines (extra_lines) run down
-//               through the walls to their bases, with the hinges at the walls' beds.
+//               through the walls to their bases, with the hinges at the walls' beds; `ogive draw` adds
+//               the elastic arch's resultant down each wall as extra lines (#wall-resultant-left, ...).
 //   #support-left, #support-right   clamped springings: a line along the springing section, hatched on
 //               the side of the support, as engineering drawings show a fixed support
 //   #support-movement   when the scene's support displacement d is non-zero: an arrow at each springing
