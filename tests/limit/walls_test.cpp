@@ -211,7 +211,7 @@ TEST_CASE("walls: a rampant arch on walls of different heights, each from its ow
   CHECK(r.wall_thickness_min < 2.0);
 }
 
-TEST_CASE("walls: on walls thinner than b_min the system does not stand; t_min is searched only on arches the walls carry") {
+TEST_CASE("walls: on walls thinner than b_min the system does not stand, and t_min is searched only on arches the walls carry") {
   const Scene s = on_walls(0.08, 1.0, 0.12);  // t = 0.8 m on walls 1.2 m thick, b_min = 1.66 m
   const LimitResult r = analyse_limit(s, {});
   CHECK(r.status == LimitStatus::inadmissible);
