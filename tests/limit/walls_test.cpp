@@ -48,9 +48,19 @@ TEST_CASE("walls: the semicircle at t/L 0.10 on walls as high as the span needs 
   const LimitResult r = analyse_limit(s, {});
   REQUIRE(r.status == LimitStatus::success);
   CHECK(close(r.wall_thickness_min / L, 0.1678, kFourDigits));
+  // By hand: the arch's minimum-thrust state (H, V) crosses the springing joint at x_s; a wall of
+  // thickness b (unit weight gamma, height h) on the point of tipping about its outer toe balances the
+  // moments about the toe: H h = V (x_s - x_i + b) + gamma h b^2 / 2, x_i the inner face.
+  const LimitResult arch = analyse_limit(paper_scene(0.0, 0.10), {});
+  {
+    const double H = arch.min_state.H, V = arch.min_state.V_left, x_s = arch.min_state.crossing.front().x();
+    const double x_i = arch.ring.joints.front().intrados.x(), h = L, gamma = s.material.density * s.material.gravity;
+    const double a = 0.5 * gamma * h, c = V * (x_s - x_i) - H * h;
+    const double b = (-V + std::sqrt(V * V - 4 * a * c)) / (2 * a);
+    CHECK(close(r.wall_thickness_min, b, kConverged));
+  }
   // At that thickness the only state left is the arch's minimum-thrust state, and the walls tip about
   // their outer toes at the base.
-  const LimitResult arch = analyse_limit(paper_scene(0.0, 0.10), {});
   Scene least = s;
   least.left_wall->thickness = least.right_wall->thickness = r.wall_thickness_min * (1 + 1e-9);
   const LimitResult at = analyse_limit(least, {});
