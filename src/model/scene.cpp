@@ -85,8 +85,15 @@ bool same_wall(const std::optional<Wall>& a, const std::optional<Wall>& b) {
                 a->top_load == b->top_load && a->top_load_at == b->top_load_at);
 }
 
-// One wall's fields and fit to its springing (Scene::validate).
-void validate_wall(const Wall& w, const Curve& curve, double thickness, bool right) {
+// A wall's height and thickness at the most, in spans: beyond, it is no wall of a vault (and its
+// weight's products leave the range of a double).
+constexpr double kLargestWall = 100.0;
+// The walls' weight and top load at the most, relative to the arch's loads: beyond, the arch's forces are
+// round-off in the system's equilibrium (the limit analysis works in units of the whole load).
+constexpr double kHeaviestWalls = 1e4;
+
+// One wall's fields and fit to its springing (Scene::validate); arch_load: the arch's loads (N/m).
+void validate_wall(const Wall& w, const Curve& curve, double thickness, double gravity, double arch_load, bool right) {
   const char* side = right ? "right_wall" : "left_wall";
   auto field = [&](const char* name) { return fmt::format("{}_{}", side, name); };
   if (!std::isfinite(w.height) || !(w.height >= 0)) refuse(field("height").c_str(), "must be finite and >= 0", w.height);
@@ -99,6 +106,18 @@ void validate_wall(const Wall& w, const Curve& curve, double thickness, bool rig
   if (!(w.top_load_at >= 0 && w.top_load_at <= 1))
     refuse(field("top_load_at").c_str(), "must lie in [0, 1] (a fraction of the wall's thickness from its inner face)",
            w.top_load_at);
+  const double L = curve.span();
+  if (w.height > kLargestWall * L)
+    throw std::invalid_argument(fmt::format("{}: must be at most {} spans ({} m), got {} m", field("height"),
+                                            kLargestWall, kLargestWall * L, w.height));
+  if (w.thickness > kLargestWall * L)
+    throw std::invalid_argument(fmt::format("{}: must be at most {} spans ({} m), got {} m", field("thickness"),
+                                            kLargestWall, kLargestWall * L, w.thickness));
+  const double load = w.density * gravity * w.thickness * (w.height + thickness) + w.top_load;
+  if (!std::isfinite(load) || load > kHeaviestWalls * arch_load)
+    throw std::invalid_argument(fmt::format(
+        "{}, {}: the wall's weight and top load ({} N/m) must be at most {:g} times the arch's loads ({} N/m)",
+        field("density"), field("top_load"), load, kHeaviestWalls, arch_load));
   const WallOutline o = wall_outline(curve, thickness, w, right);
   // The springing joint from its intrados point outwards: its horizontal width, on the wall's side.
   const double width = o.outward * (o.joint.extrados.x() - o.joint.intrados.x());
@@ -233,8 +252,9 @@ void Scene::validate() const {
   if (thickness >= limit)
     throw std::invalid_argument(fmt::format(
         "thickness: must be less than twice the smallest radius of curvature ({} m), got {} m", limit, thickness));
-  if (left_wall) validate_wall(*left_wall, *curve, thickness, false);
-  if (right_wall) validate_wall(*right_wall, *curve, thickness, true);
+  const double arch_load = reference_load_per_length() * curve->whole_length();
+  if (left_wall) validate_wall(*left_wall, *curve, thickness, material.gravity, arch_load, false);
+  if (right_wall) validate_wall(*right_wall, *curve, thickness, material.gravity, arch_load, true);
 }
 
 const char* to_string(BeamModel m) {

@@ -89,6 +89,9 @@ TEST_CASE("cli: bad wall input gets one line and exit 2") {
   check_refused({"limit", "--wall-height", "5", "--wall-thickness", "2", "--wall-top-load-at", "1.5"});
   check_refused({"limit", "--wall-height", "5", "--wall-thickness", "2", "--wall-top-load", "-3"});
   check_refused({"limit", "--wall-height", "5kg", "--wall-thickness", "2"});
+  check_refused({"limit", "--wall-height", "1e308", "--wall-thickness", "2"});  // beyond 100 spans
+  check_refused({"thrust", "--wall-height", "5", "--wall-thickness", "1e300"});
+  check_refused({"limit", "--wall-height", "5", "--wall-thickness", "2", "--wall-density", "1e12"});  // too heavy
   check_refused({"limit", "--curve", "segmental", "--wall-height", "0", "--wall-thickness", "3"});  // below the joint
   for (const char* command : {"profile", "spread", "assess", "check", "curve", "bench", "report"})
     check_refused({command, "--wall-height", "5", "--wall-thickness", "2"});

@@ -180,8 +180,9 @@ struct Scene {
   // above the springing, no rotation given to a pinned springing, a thickness that fits the curve
   // (t < 2 * smallest radius of curvature, so that the intrados does not fold over), and the elastic
   // section for the curved beam model, and walls with finite fields, h_w >= 0 (deep enough to hold an
-  // inclined springing joint), b_w at least the springing joint's horizontal width, and a springing joint
-  // that rests on its wall (its extrados point over the wall, not inside the span).
+  // inclined springing joint), b_w at least the springing joint's horizontal width, h_w and b_w at most
+  // 100 spans, a weight and top load at most 1e4 times the arch's loads, and a springing joint that rests
+  // on its wall (its extrados point over the wall, not inside the span).
   void validate() const;
 };
 
