@@ -96,6 +96,18 @@ TEST_CASE("walls: walls of no height, or very thick ones, give the arch's own nu
     CHECK(close(r.thickness_min, arch.thickness_min, kConverged));
     CHECK(r.V == arch.V);  // the arch's loads: the walls' weight is not V
   }
+  SUBCASE("walls five spans thick: the same collapse load factor and acceleration") {
+    Scene loaded = paper_scene(0.0, 0.10);
+    loaded.loads.points.push_back({50e3, 0.3});
+    LimitOptions o;
+    o.horizontal_load_factor = true;
+    const LimitResult bare = analyse_limit(loaded, o);
+    loaded.left_wall = loaded.right_wall = Wall{loaded.span(), 5.0 * loaded.span(), loaded.material.density, 0.0, 0.5};
+    const LimitResult r = analyse_limit(loaded, o);
+    REQUIRE(r.status == LimitStatus::success);
+    CHECK(close(r.load_factor(), bare.load_factor(), kConverged));
+    CHECK(close(r.horizontal_load_factor(), bare.horizontal_load_factor(), kConverged));
+  }
 }
 
 TEST_CASE("walls: a symmetric system has mirrored hinges") {
