@@ -61,6 +61,30 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"fill_height", "m", "the fill's level h_f above the springing line"},
     {"unit_weight", "N/m^3", "the masonry's unit weight gamma = rho g as given (--unit-weight; density is then gamma / g); empty: --density gave it"},
     {"loads_file", "", "the --loads-file whose loads the scene carries too"},
+    {"wall_height", "m", "--wall-height as given: both walls' height h_w from the base to the springing line"},
+    {"wall_thickness", "m", "--wall-thickness as given: both walls' thickness b_w"},
+    {"wall_density", "kg/m^3", "--wall-density as given: both walls' density"},
+    {"wall_top_load", "N/m", "--wall-top-load as given: the load on both walls' tops, downwards"},
+    {"wall_top_load_at", "", "--wall-top-load-at as given: where it acts, a fraction of b_w from the inner face"},
+    {"left_wall_height", "m", "left wall's height h_w from its base to the springing line; empty: no wall"},
+    {"left_wall_thickness", "m", "left wall's thickness b_w, outwards from the vertical through the springing's intrados point"},
+    {"left_wall_density", "kg/m^3", "left wall's density"},
+    {"left_wall_top_load", "N/m", "load on the left wall's top, downwards"},
+    {"left_wall_top_load_at", "", "where it acts, a fraction of b_w from the inner face"},
+    {"right_wall_height", "m", "right wall's height h_w from its base to the springing line; empty: no wall"},
+    {"right_wall_thickness", "m", "right wall's thickness b_w, outwards from the vertical through the springing's intrados point"},
+    {"right_wall_density", "kg/m^3", "right wall's density"},
+    {"right_wall_top_load", "N/m", "load on the right wall's top, downwards"},
+    {"right_wall_top_load_at", "", "where it acts, a fraction of b_w from the inner face"},
+    {"left_wall_crossings", "", "thrust: where the resultant of the left springing's reaction, the wall's weight and its top load crosses the left wall's beds, y/L:x/L joined by ';', from the highest bed to the base in four equal parts (the wall rigid)"},
+    {"left_wall_base_eccentricity", "m", "thrust: the resultant's distance from the centre of the left wall's base, outwards positive"},
+    {"left_wall_stability_ratio", "", "thrust: the left wall base's half-width over the resultant's distance from its centre (> 1: the resultant inside the base)"},
+    {"left_wall_geometric_factor", "", "thrust: Heyman's geometric factor of the left wall, b_w over the thickness at which the base's resultant would reach the outer toe; empty where none does"},
+    {"right_wall_crossings", "", "thrust: as left_wall_crossings, down the right wall"},
+    {"right_wall_base_eccentricity", "m", "thrust: as left_wall_base_eccentricity, of the right wall (outwards: +x)"},
+    {"right_wall_stability_ratio", "", "thrust: as left_wall_stability_ratio, of the right wall"},
+    {"right_wall_geometric_factor", "", "thrust: as left_wall_geometric_factor, of the right wall"},
+    {"wall_thickness_min", "m", "least wall thickness b_min on which the arch as it is stands (every wall given that thickness); empty without walls"},
     {"horizontal_acceleration", "", "horizontal acceleration a / g, left to right positive, on the self-weight and fill"},
     {"method", "", "method that produced the numbers (closed-form, shooting, multiple-shooting)"},
     {"integrator", "", "CVODE's method (adams, bdf); empty for the closed form"},
@@ -94,7 +118,7 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"boundary_residual", "", "largest residual of the six boundary conditions (and a hinge's M = 0), scaled units"},
     {"equilibrium_residual", "", "largest residual of the domain's equilibrium (forces, moments) / its load"},
     {"message", "", "why the status is not success; empty on success"},
-    {"s", "m", "arc length from the left springing (limit --thrust-line: of the joint's axis point)"},
+    {"s", "m", "arc length from the left springing (limit --thrust-line: of the joint's axis point; a wall's bed lies outside the arch's arc lengths, below 0 on the left wall, beyond the arch's length on the right one)"},
     {"x", "m", "axis point, horizontal from the left springing"},
     {"y", "m", "axis point, up from the springing line"},
     {"theta", "rad", "tangent angle to the horizontal, in the direction of increasing s"},
@@ -140,7 +164,7 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"H_max_over_V", "", "limit: H_max / V, V half the total vertical load (the V column; with a symmetric scene, H_over_V's V_left)"},
     {"thickness_min_ratio", "", "limit, assess: t_min / span, the thinnest arch of the same axis that stands"},
     {"geometric_safety_factor", "", "limit, assess: t / t_min"},
-    {"hinges_min", "", "limit: hinges of the minimum-thrust state, x/L:face joined by ';' (face: intrados, extrados, or axis for a pin; x from the left springing's axis point, so a hinge on a springing's outer face lies beyond [0, 1], e.g. -0.04 at t/L 0.08)"},
+    {"hinges_min", "", "limit: hinges of the minimum-thrust state, x/L:face joined by ';' (face: intrados, extrados, or axis for a pin; x from the left springing's axis point, so a hinge on a springing's outer face lies beyond [0, 1], e.g. -0.04 at t/L 0.08); on walls a hinge at a bed's edge is x/L:wall-outer@y/L or wall-inner@y/L, y from the springing line (the base at -h_w/L)"},
     {"hinges_max", "", "limit: hinges of the maximum-thrust state, x/L:face joined by ';'"},
     {"load_factor", "", "limit, assess: multiplier on the live load (every point and live load) at collapse (static LP)"},
     {"load_factor_mechanism", "", "limit: the same from the mechanism of those hinges by virtual work"},
@@ -152,8 +176,8 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"hinges_horizontal", "", "limit: hinges of the mechanism of a_c, x/L:face joined by ';'"},
     {"lp_solves", "", "limit: linear programs solved for the row"},
     {"state", "", "limit --thrust-line: min, max or collapse"},
-    {"joint", "", "limit --thrust-line: joint index from the left springing"},
-    {"hinge", "", "limit --thrust-line: intrados, extrados (a hinge) or axis (a pin), else empty"},
+    {"joint", "", "limit --thrust-line: joint index from the left springing (on walls: from the left wall's base)"},
+    {"hinge", "", "limit --thrust-line: intrados, extrados (a hinge) or axis (a pin), else empty; at a wall's bed intrados is its edge on the wall's inner face, extrados on the outer one"},
     {"moving", "", "spread: the springings that move outwards, left, right or both"},
     {"left_settlement_share", "m/m", "spread: the left springing's settlement, downwards positive, per metre of d, the outward movement of each springing that moves (--left-settlement-share)"},
     {"right_settlement_share", "m/m", "spread: the right springing's settlement, downwards positive, per metre of d (--right-settlement-share)"},
@@ -238,7 +262,10 @@ const std::vector<std::string>& scene_columns() {
       "right_spread_ratio", "left_settlement_ratio", "right_settlement_ratio", "left_rotation", "right_rotation",
       "point_load", "point_load_at", "live_load", "live_load_from", "live_load_to", "fill_density",
       "fill_height_ratio", "loads_file", "horizontal_acceleration", "thickness", "rise", "radius", "point_load_x",
-      "live_load_from_x", "live_load_to_x", "fill_height", "unit_weight"};
+      "live_load_from_x", "live_load_to_x", "fill_height", "unit_weight", "wall_height", "wall_thickness",
+      "wall_density", "wall_top_load", "wall_top_load_at", "left_wall_height", "left_wall_thickness",
+      "left_wall_density", "left_wall_top_load", "left_wall_top_load_at", "right_wall_height",
+      "right_wall_thickness", "right_wall_density", "right_wall_top_load", "right_wall_top_load_at"};
   return columns;
 }
 
@@ -392,6 +419,11 @@ void add_scene_columns(CsvRow& row, const SceneParameters& p, const Curve* curve
   else if (curve && row.wants_next()) row.add(rounded(curve->rise()));
   else row.add(std::string_view{});
   for (double v : {p.radius, p.point_load_x, p.live_load_from_x, p.live_load_to_x, p.fill_height, p.unit_weight})
+    add_parameter(row, v);
+  for (double v : {p.wall_height, p.wall_thickness, p.wall_density, p.wall_top_load, p.wall_top_load_at,
+                   p.left_wall_height, p.left_wall_thickness, p.left_wall_density, p.left_wall_top_load,
+                   p.left_wall_top_load_at, p.right_wall_height, p.right_wall_thickness, p.right_wall_density,
+                   p.right_wall_top_load, p.right_wall_top_load_at})
     add_parameter(row, v);
 }
 

@@ -50,6 +50,16 @@ constexpr std::pair<std::string_view, std::string_view> kFieldOptions[] = {
     {"live_load_to", "--live-load-to"},
     {"fill_density", "--fill-density"},
     {"fill_height_ratio", "--fill-height-ratio"},
+    {"left_wall_height", "--left-wall-height"},
+    {"left_wall_thickness", "--left-wall-thickness"},
+    {"left_wall_density", "--left-wall-density"},
+    {"left_wall_top_load", "--left-wall-top-load"},
+    {"left_wall_top_load_at", "--left-wall-top-load-at"},
+    {"right_wall_height", "--right-wall-height"},
+    {"right_wall_thickness", "--right-wall-thickness"},
+    {"right_wall_density", "--right-wall-density"},
+    {"right_wall_top_load", "--right-wall-top-load"},
+    {"right_wall_top_load_at", "--right-wall-top-load-at"},
     {"joints_count", "--joints-count"},
     {"friction", "--friction"},
     {"compressive_strength", "--compressive-strength"},
@@ -131,6 +141,10 @@ void refuse_empty_name(const CLI::App& cmd, const char* flag, const std::string&
 
 void hide_inapplicable(CLI::App& cmd, std::span<const Inapplicable> options) {
   for (const Inapplicable& o : options) cmd.get_option(o.flag)->group("");
+}
+
+bool walls_given(const CLI::App& cmd) {
+  return given(cmd, "--wall-height") || given(cmd, "--left-wall-height") || given(cmd, "--right-wall-height");
 }
 
 void refuse_inapplicable(const CLI::App& cmd, const char* command, std::span<const Inapplicable> options) {

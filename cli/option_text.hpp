@@ -46,6 +46,8 @@ std::string did_you_mean(const std::string& name, const std::vector<std::string>
 // which copies every option's names for each option it compares (a one-scene run asks some 80 times).
 // CLI::OptionNotFound, as App::count, for a flag that cmd does not have.
 bool given(const CLI::App& cmd, std::string_view flag);
+// Whether a wall option (--wall-height, --left-wall-height, --right-wall-height) was given.
+bool walls_given(const CLI::App& cmd);
 
 // A file or directory option given as "": UsageError naming it (rather than read as not given);
 // `what` says what the option takes, e.g. "a file, or - for standard input".

@@ -31,11 +31,12 @@ bool non_negative(double v) { return v >= 0; }
 bool small_movement(double v) { return std::abs(v) <= 0.01; }
 constexpr const char* kSpanRule = "must lie in [0, 1] (x / L within the span)";
 constexpr const char* kInSpanRule = "must lie in [0, L] (m from the left springing, within the span)";
+constexpr const char* kWallFractionRule = "must lie in [0, 1] (a fraction of the wall's thickness from its inner face)";
 constexpr const char* kMovementRule = "must lie in [-0.01, 0.01] (beyond, small-displacement theory does not hold)";
 
 // What each scene option is, with its unit, for --help (the rules are scene_axes').
 const std::map<std::string, std::string>& axis_meanings() {
-  static const std::map<std::string, std::string> meanings = {
+  static std::map<std::string, std::string> meanings = {
       {"--span", "span L between the springings' axis points, m"},
       {"--youngs-modulus", "Young's modulus E, Pa"},
       {"--poisson-ratio", "Poisson's ratio nu (shear modulus G = E / (2 (1 + nu)))"},
@@ -78,6 +79,25 @@ const std::map<std::string, std::string>& axis_meanings() {
       {"--left-rotation", "left springing's rotation, rad, counter-clockwise positive (clamped only)"},
       {"--right-rotation", "right springing's rotation, rad, counter-clockwise positive (clamped only)"},
   };
+  // The walls' options, each in three forms: both walls, the left one, the right one.
+  static const bool walls_added = [] {
+    const std::pair<const char*, const char*> wall[] = {
+        {"height", "wall's height h_w from its base to the springing line, m (docs/model.md, Walls; limit, draw, "
+                   "report)"},
+        {"thickness", "wall's thickness b_w from the vertical through the springing's intrados point outwards, m "
+                      "(needed with a height)"},
+        {"density", "wall's density, kg/m^3 (default: --density)"},
+        {"top-load", "vertical load on the wall's top (a wall above, a roof), downwards, N/m (kN/m with --units kN) "
+                     "(default 0)"},
+        {"top-load-at", "where the top load acts, a fraction of b_w from the inner face (default 0.5)"},
+    };
+    for (const auto& [name, meaning] : wall)
+      for (const char* side : {"", "left-", "right-"})
+        meanings.emplace(fmt::format("--{}wall-{}", side, name),
+                         std::string(*side ? (side[0] == 'l' ? "left " : "right ") : "each ") + meaning);
+    return true;
+  }();
+  (void)walls_added;
   return meanings;
 }
 
@@ -87,6 +107,7 @@ std::string absent_default(const std::string& flag) {
   if (flag == "--left-spread-ratio" || flag == "--right-spread-ratio") return " (default: --support-displacement-ratio)";
   if (flag == "--point-load-at" || flag == "--live-load-from" || flag == "--live-load-to") return "";
   if (flag == "--thickness") return " (default: --thickness-ratio)";
+  if (flag.find("wall-") != std::string::npos) return "";
   if (flag == "--rise" || flag == "--radius") return " (default: the curve's)";
   return " (default: none)";
 }
@@ -146,6 +167,21 @@ std::vector<Axis> scene_axes() {
       {"--eccentricity", "0", &P::eccentricity, [](double v) { return v >= 0 && v <= 100; },
        "must lie in [0, 100]"},
       {"--radius", "", &P::radius, positive, "must be > 0"},
+      {"--wall-height", "", &P::wall_height, non_negative, "must be >= 0"},
+      {"--left-wall-height", "", &P::left_wall_height, non_negative, "must be >= 0"},
+      {"--right-wall-height", "", &P::right_wall_height, non_negative, "must be >= 0"},
+      {"--wall-thickness", "", &P::wall_thickness, positive, "must be > 0"},
+      {"--left-wall-thickness", "", &P::left_wall_thickness, positive, "must be > 0"},
+      {"--right-wall-thickness", "", &P::right_wall_thickness, positive, "must be > 0"},
+      {"--wall-density", "", &P::wall_density, non_negative, "must be >= 0"},
+      {"--left-wall-density", "", &P::left_wall_density, non_negative, "must be >= 0"},
+      {"--right-wall-density", "", &P::right_wall_density, non_negative, "must be >= 0"},
+      {"--wall-top-load", "", &P::wall_top_load, non_negative, "must be >= 0 (downwards)"},
+      {"--left-wall-top-load", "", &P::left_wall_top_load, non_negative, "must be >= 0 (downwards)"},
+      {"--right-wall-top-load", "", &P::right_wall_top_load, non_negative, "must be >= 0 (downwards)"},
+      {"--wall-top-load-at", "", &P::wall_top_load_at, within_span, kWallFractionRule},
+      {"--left-wall-top-load-at", "", &P::left_wall_top_load_at, within_span, kWallFractionRule},
+      {"--right-wall-top-load-at", "", &P::right_wall_top_load_at, within_span, kWallFractionRule},
   };
 }
 

@@ -38,6 +38,11 @@ struct SceneParameters {
   double horizontal_acceleration;
   double left_spread_ratio, right_spread_ratio, left_settlement_ratio, right_settlement_ratio, left_rotation,
       right_rotation;
+  // The walls (--wall-...: both; --left-wall-..., --right-wall-...: one side, over the first). The
+  // left_ and right_ fields are each wall's as built (NaN height: no wall on that side).
+  double wall_height, wall_thickness, wall_density, wall_top_load, wall_top_load_at;
+  double left_wall_height, left_wall_thickness, left_wall_density, left_wall_top_load, left_wall_top_load_at;
+  double right_wall_height, right_wall_thickness, right_wall_density, right_wall_top_load, right_wall_top_load_at;
   const char* left_support = "clamped";
   const char* right_support = "clamped";
   const char* section = "elastic";

@@ -100,6 +100,39 @@ std::shared_ptr<const Curve> read_points(const SceneOptions& o) {
   }
 }
 
+// The commands whose analyses take walls (the limit analysis of the system): the others refuse them.
+void refuse_walls(const CLI::App& cmd) {
+  const std::string name = cmd.get_name();
+  if (!walls_given(cmd) || name == "limit" || name == "draw" || name == "thrust") return;
+  const char* flag = given(cmd, "--wall-height") ? "--wall-height" : given(cmd, "--left-wall-height") ? "--left-wall-height" : "--right-wall-height";
+  throw UsageError(fmt::format("{}: does not apply to {} (walls are taken by ogive limit, thrust and draw)", flag,
+                               cmd.get_name()));
+}
+
+// A wall's options need its height, and a height needs a thickness: each side's own option or the
+// one of both walls.
+void check_wall_options(const CLI::App& cmd) {
+  const bool any_height = given_of(cmd, {"--wall-height", "--left-wall-height", "--right-wall-height"}) != nullptr;
+  for (const char* name : {"thickness", "density", "top-load", "top-load-at"}) {
+    const std::string both = fmt::format("--wall-{}", name);
+    if (given(cmd, both) && !any_height)
+      throw UsageError(fmt::format("{}: needs --wall-height (or --left-wall-height, --right-wall-height)", both));
+  }
+  for (const char* side : {"left", "right"}) {
+    const std::string height = fmt::format("--{}-wall-height", side);
+    const bool has_height = given(cmd, "--wall-height") || given(cmd, height);
+    for (const char* name : {"thickness", "density", "top-load", "top-load-at"}) {
+      const std::string flag = fmt::format("--{}-wall-{}", side, name);
+      if (given(cmd, flag) && !has_height)
+        throw UsageError(fmt::format("{}: needs --wall-height or {}", flag, height));
+    }
+    const std::string thickness = fmt::format("--{}-wall-thickness", side);
+    if (has_height && !given(cmd, "--wall-thickness") && !given(cmd, thickness))
+      throw UsageError(fmt::format("{}: needs --wall-thickness or {} (the wall's b_w)",
+                                   given(cmd, height) ? height : std::string("--wall-height"), thickness));
+  }
+}
+
 // Load and movement options that need another, or exclude one.
 void check_option_pairs(const CLI::App& cmd) {
   auto needs = [&](const char* flag, const char* other) {
@@ -125,6 +158,7 @@ void check_option_pairs(const CLI::App& cmd) {
   needs("--fill-height", "--fill-density");
   if (given(cmd, "--fill-density") && !given_of(cmd, {"--fill-height-ratio", "--fill-height"}))
     throw UsageError("--fill-density: needs --fill-height-ratio or --fill-height");
+  check_wall_options(cmd);
   for (const char* side : {"--left-spread-ratio", "--right-spread-ratio"})
     if (given(cmd, side) && given(cmd, "--support-displacement-ratio"))
       throw UsageError(fmt::format("{}: cannot be combined with --support-displacement-ratio (both springings "
@@ -152,6 +186,7 @@ ScenePlan::ScenePlan(SceneOptions& o, const CLI::App& cmd) : options_(o) {
   refuse_inapplicable(*family_, o.curve, cmd);
   if (family_->file) o.points = read_points(o);
   check_option_pairs(cmd);
+  refuse_walls(cmd);
   choose_supports(o, cmd);
   choose_dimensions(o, cmd);
   if (!o.loads_file.empty()) o.file_loads = read_loads(o);
@@ -332,6 +367,19 @@ SceneParameters ScenePlan::parameters(std::size_t index) const {
     if (std::isnan(*x) && !std::isnan(ratio)) *x = decimal_product(ratio, p.span);
   if (std::isnan(p.left_spread_ratio)) p.left_spread_ratio = p.support_displacement_ratio;
   if (std::isnan(p.right_spread_ratio)) p.right_spread_ratio = p.support_displacement_ratio;
+  // Each wall's fields: its own option, else both walls', else the default (none without a height).
+  const auto either = [](double own, double both) { return std::isnan(own) ? both : own; };
+  for (auto [h, b, rho, q, at] : {std::tuple{&p.left_wall_height, &p.left_wall_thickness, &p.left_wall_density,
+                                             &p.left_wall_top_load, &p.left_wall_top_load_at},
+                                  std::tuple{&p.right_wall_height, &p.right_wall_thickness, &p.right_wall_density,
+                                             &p.right_wall_top_load, &p.right_wall_top_load_at}}) {
+    *h = either(*h, p.wall_height);
+    if (std::isnan(*h)) continue;
+    *b = either(*b, p.wall_thickness);
+    *rho = either(either(*rho, p.wall_density), p.density);
+    *q = either(either(*q, p.wall_top_load), 0.0);
+    *at = either(either(*at, p.wall_top_load_at), 0.5);
+  }
   p.left_support = left_kind_ == SupportKind::clamped ? "clamped" : "pinned";
   p.right_support = right_kind_ == SupportKind::clamped ? "clamped" : "pinned";
   p.crown_hinge = options_.crown_hinge;
@@ -438,6 +486,12 @@ ScenePlan::Built ScenePlan::build(const SceneParameters& p) const {
     if (!std::isnan(p.live_load))
       scene.loads.live.push_back({p.live_load * p.force_unit, p.live_load_from, p.live_load_to});
     if (!std::isnan(p.fill_density)) scene.loads.fills.push_back({p.fill_density, p.fill_height_ratio});
+    if (!std::isnan(p.left_wall_height))
+      scene.left_wall = Wall{p.left_wall_height, p.left_wall_thickness, p.left_wall_density,
+                             p.left_wall_top_load * p.force_unit, p.left_wall_top_load_at};
+    if (!std::isnan(p.right_wall_height))
+      scene.right_wall = Wall{p.right_wall_height, p.right_wall_thickness, p.right_wall_density,
+                              p.right_wall_top_load * p.force_unit, p.right_wall_top_load_at};
     scene.validate();
     warn_of_small_loads(p, scene);
     out.scene = std::move(scene);

@@ -49,6 +49,10 @@ const std::map<std::string_view, const Dimension*>& dimensions() {
       {"--live-load", &kPressure},    {"--density", &kDensity},         {"--fill-density", &kDensity},
       {"--youngs-modulus", &kModulus}, {"--unit-weight", &kUnitWeight}, {"--gravity", &kAcceleration},
       {"--compressive-strength", &kStress},
+      {"--wall-height", &kLength},    {"--left-wall-height", &kLength}, {"--right-wall-height", &kLength},
+      {"--wall-thickness", &kLength}, {"--left-wall-thickness", &kLength}, {"--right-wall-thickness", &kLength},
+      {"--wall-density", &kDensity},  {"--left-wall-density", &kDensity}, {"--right-wall-density", &kDensity},
+      {"--wall-top-load", &kLineForce}, {"--left-wall-top-load", &kLineForce}, {"--right-wall-top-load", &kLineForce},
   };
   return of;
 }

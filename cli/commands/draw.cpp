@@ -31,6 +31,7 @@
 #include "criteria.hpp"
 #include "interrupt.hpp"
 #include "limit_text.hpp"
+#include "ogive/core/wall_resultant.hpp"
 #include "ogive/limit/limit.hpp"
 #include "ogive/limit/spreading.hpp"
 #include "ogive/output/html_report.hpp"
@@ -84,11 +85,31 @@ void add_limit_drawing(const Scene& scene, double compressive_strength, DrawingO
   add_limit_analysis(drawing, scene, r);
 }
 
+// The elastic (or cracked-section) arch's resultant carried down its rigid walls (wall_resultant.hpp),
+// from the springing joint's lower end to the base: the line of thrust continued through each wall.
+constexpr int kWallResultantBeds = 40;
+void add_wall_resultants(const Scene& scene, const Solution& sol, DrawingOptions& drawing) {
+  if (!sol.field) return;
+  for (bool right : {false, true}) {
+    if (!(right ? scene.right_wall : scene.left_wall)) continue;
+    ExtraThrustLine line;
+    line.id = right ? "wall-resultant-right" : "wall-resultant-left";
+    line.colour = "#c0392b";
+    line.label = fmt::format("{} wall: the line of thrust's resultant down the rigid wall", right ? "right" : "left");
+    for (const WallBedCrossing& b : wall_resultant(scene, sol.reactions, right, kWallResultantBeds).beds)
+      line.points.push_back({b.x, b.y});
+    drawing.extra_lines.push_back(std::move(line));
+  }
+}
+
 // The options a spreading stage does not take: it starts from the arch at d = 0, both springings moving
 // apart, vertical loads only.
 constexpr auto kStageMoves = springing_movements("the rigid voussoirs' springings move apart from d = 0");
 constexpr Inapplicable kNotForSpreadStage[] = {
     {"--horizontal-acceleration", "the mechanism of rigid voussoirs carries vertical loads only"},
+    {"--wall-height", "the spreading mechanism stands on the ground, not on walls"},
+    {"--left-wall-height", "the spreading mechanism stands on the ground, not on walls"},
+    {"--right-wall-height", "the spreading mechanism stands on the ground, not on walls"},
 };
 
 // The arch of rigid voussoirs on spreading springings (ogive spread's mechanism with its defaults: both
@@ -144,6 +165,9 @@ std::string draw_title(const SceneParameters& p) {
   title += fmt::format(", span {:.6g} m, t/L {:.6g}", p.span, p.thickness_ratio);
   if (p.support_displacement_ratio != 0) title += fmt::format(", d/L {:.6g}", p.support_displacement_ratio);
   if (p.plane_strain) title += ", plane strain";
+  for (auto [side, h, b] : {std::tuple{"left", p.left_wall_height, p.left_wall_thickness},
+                            std::tuple{"right", p.right_wall_height, p.right_wall_thickness}})
+    if (!std::isnan(h)) title += fmt::format(", {} wall {:g} m high, {:g} m thick", side, h, b);
   if (std::string(p.section) != "elastic") title += fmt::format(", {} section", p.section);
   const double kilonewtons = p.force_unit / 1000;  // the force options' unit in kN
   if (!std::isnan(p.point_load))
@@ -336,6 +360,7 @@ int run_draw(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
     DrawingOptions drawing;
     drawing.title = draw_title(p);
     if (to.limit) add_limit_drawing(scene, compressive_strength, drawing);
+    add_wall_resultants(scene, sol, drawing);
     if (to.spread_stage) add_spread_drawing(scene, *to.spread_stage, drawing);
     return arch_svg(scene, sol, drawing);
   };

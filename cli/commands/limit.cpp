@@ -145,12 +145,12 @@ void add_limit_setup(CsvRow& row, const LimitOptions& o) {
 }
 
 // The columns of limit: a summary per scene, or (--thrust-line) one row per joint of one state.
-Columns limit_columns(bool lines, bool timed) {
+Columns limit_columns(bool lines, bool timed, bool walls) {
   std::vector<std::string> results = {"joints", "weight", "joints_count", "friction", "compressive_strength"},
                            defaults;
   const std::vector<std::string> summary = {
       "status", "H_min", "H_max", "V", "H_min_over_V", "H_max_over_V", "thickness_min_ratio",
-      "geometric_safety_factor", "hinges_min", "hinges_max", "load_factor", "load_factor_mechanism",
+      "geometric_safety_factor", "wall_thickness_min", "hinges_min", "hinges_max", "load_factor", "load_factor_mechanism",
       "hinges_collapse", "horizontal_load_factor", "horizontal_load_factor_mechanism", "hinges_horizontal",
       "lp_solves", "message", "median_seconds"};
   const std::vector<std::string> joints = {"state",      "status",     "H",          "load_factor", "joint",
@@ -159,7 +159,7 @@ Columns limit_columns(bool lines, bool timed) {
   const std::vector<std::string>& own = lines ? joints : summary;
   results.insert(results.end(), own.begin(), own.end());
   for (const std::string& name : own)
-    if (name != "lp_solves" && (name != "median_seconds" || timed) &&
+    if (name != "lp_solves" && (name != "median_seconds" || timed) && (name != "wall_thickness_min" || walls) &&
         std::find(kHorizontalColumns.begin(), kHorizontalColumns.end(), name) == kHorizontalColumns.end())
       defaults.push_back(name);
   return Columns(results, defaults);
@@ -187,10 +187,12 @@ std::string summary_row(const Columns& columns, const SceneParameters& p, const 
   add_limit_setup(row, o);
   row.add(to_string(r.status)).add(r.H_min()).add(r.H_max()).add(r.V).add(r.H_min() / r.V).add(r.H_max() / r.V);
   row.add(r.thickness_min / L).add(scene.thickness / r.thickness_min);
-  row.add(hinge_text(r.min_state.hinges, L)).add(hinge_text(r.max_state.hinges, L));
-  row.add(r.load_factor()).add(r.load_factor_mechanism).add(hinge_text(r.collapse_state.hinges, L));
+  if (scene.has_walls()) row.add(r.wall_thickness_min);
+  else row.add(std::string_view{});
+  row.add(hinge_text(r.min_state.hinges, L, &r.ring)).add(hinge_text(r.max_state.hinges, L, &r.ring));
+  row.add(r.load_factor()).add(r.load_factor_mechanism).add(hinge_text(r.collapse_state.hinges, L, &r.ring));
   row.add(r.horizontal_load_factor()).add(r.horizontal_load_factor_mechanism);
-  row.add(hinge_text(r.horizontal_state.hinges, L));
+  row.add(hinge_text(r.horizontal_state.hinges, L, &r.horizontal_ring));
   row.add(r.lp_solves).add(r.message);
   if (timed) row.add(median_seconds);
   else row.add(std::string_view{});
@@ -235,7 +237,7 @@ int run_limit(LimitCommandOptions& lo, const CLI::App& cmd, std::ostream& out) {
   const LimitText& text = lo.text;
   check_threads(text.threads);
   const bool lines = !text.thrust_line.empty(), timed = text.repeats > 0;
-  Columns columns = limit_columns(lines, timed);
+  Columns columns = limit_columns(lines, timed, walls_given(cmd));
   if (lo.columns.columns == "help") {
     write_all(out, columns.help(lo.columns));
     return kExitOk;

@@ -38,10 +38,15 @@ double compressive_strength_of(const std::string& text, const CLI::App& cmd) {
   return f_c;
 }
 
-std::string hinge_text(const std::vector<Hinge>& hinges, double span) {
+std::string hinge_text(const std::vector<Hinge>& hinges, double span, const Ring* ring) {
   std::string text;
   for (const Hinge& h : hinges) {
     if (!text.empty()) text += ';';
+    if (ring && (h.joint < ring->left_springing() || h.joint > ring->right_springing())) {
+      text += fmt::format("{:.6g}:wall-{}@{:.6g}", h.point.x() / span, h.face == Face::extrados ? "outer" : "inner",
+                          h.point.y() / span);
+      continue;
+    }
     text += fmt::format("{:.6g}:{}", h.point.x() / span, to_string(h.face));
   }
   return text;

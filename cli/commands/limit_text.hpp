@@ -35,7 +35,9 @@ const std::map<std::string, WeightModel>& weight_models();
 const std::map<std::string, JointOrientation>& joint_orientations();
 
 // Hinges as "x/L:face" joined by ';' (x of the hinge point over the span, on the intrados, extrados or
-// axis), e.g. "0.1129:intrados;0.5:extrados": no commas inside the CSV field.
-std::string hinge_text(const std::vector<Hinge>& hinges, double span);
+// axis), e.g. "0.1129:intrados;0.5:extrados": no commas inside the CSV field. Given the ring, a hinge
+// at a wall's bed is "x/L:wall-outer@y/L" (or wall-inner: the bed's edge on the wall's outer or inner
+// face, y over the span from the springing line).
+std::string hinge_text(const std::vector<Hinge>& hinges, double span, const Ring* ring = nullptr);
 
 }  // namespace ogive::cli

@@ -9,6 +9,8 @@
 
 #include "cli.hpp"
 #include "columns.hpp"
+#include "ogive/core/wall_resultant.hpp"
+#include "option_text.hpp"
 #include "commands.hpp"
 #include "limit_text.hpp"
 #include "ogive/core/thrust_line.hpp"
@@ -31,17 +33,44 @@ struct ThrustOptions {
   int threads = 1;
 };
 
-Columns thrust_columns() {
-  return Columns(
-      {"method", "integrator", "rtol", "status", "domain", "H", "V", "H_over_V", "H_left", "V_left", "M_left",
-       "H_right", "V_right", "M_right", "max_thrust_eccentricity", "max_thrust_eccentricity_at", "thrust_in_kern",
-       "thrust_in_section", "max_compressive_stress", "max_compressive_stress_at", "max_stress_ratio", "steps", "rhs_evaluations", "segments", "newton_iterations", "condition_estimate",
-       "error_estimate", "boundary_residual", "equilibrium_residual", "message", "beam_model", "model_error_estimate"},
-      // The thrust line's and the stress's summaries are asked for by name (or --all-columns): each scans
-      // the whole field,
-      // a few times the cost of the reactions in closed form, which a sweep of 10^6 scenes would feel.
-      {"method", "status", "domain", "H", "V", "H_over_V", "H_left", "V_left", "M_left", "H_right", "V_right",
-       "M_right", "error_estimate", "message"});
+// The walls' columns (wall_resultant.hpp), each side's: printed by default when walls are given.
+const std::vector<std::string> kWallColumns = {
+    "left_wall_crossings",  "left_wall_base_eccentricity",  "left_wall_stability_ratio",  "left_wall_geometric_factor",
+    "right_wall_crossings", "right_wall_base_eccentricity", "right_wall_stability_ratio", "right_wall_geometric_factor"};
+// The beds at which the crossings column gives the resultant: this many equal parts of the wall.
+constexpr int kWallCrossingParts = 4;
+
+Columns thrust_columns(bool walls) {
+  std::vector<std::string> all = {
+      "method", "integrator", "rtol", "status", "domain", "H", "V", "H_over_V", "H_left", "V_left", "M_left",
+      "H_right", "V_right", "M_right", "max_thrust_eccentricity", "max_thrust_eccentricity_at", "thrust_in_kern",
+      "thrust_in_section", "max_compressive_stress", "max_compressive_stress_at", "max_stress_ratio", "steps", "rhs_evaluations", "segments", "newton_iterations", "condition_estimate",
+      "error_estimate", "boundary_residual", "equilibrium_residual", "message", "beam_model", "model_error_estimate"};
+  // The thrust line's and the stress's summaries are asked for by name (or --all-columns): each scans
+  // the whole field, a few times the cost of the reactions in closed form, which a sweep of 10^6 scenes
+  // would feel.
+  std::vector<std::string> defaults = {"method", "status", "domain", "H", "V", "H_over_V", "H_left", "V_left", "M_left",
+                                       "H_right", "V_right", "M_right", "error_estimate", "message"};
+  all.insert(all.end(), kWallColumns.begin(), kWallColumns.end());
+  if (walls) defaults.insert(defaults.end(), kWallColumns.begin(), kWallColumns.end());
+  return Columns(all, defaults);
+}
+
+// One wall's columns: its resultant's crossings as y/L:x/L at the beds, its base's eccentricity, its
+// stability ratio and geometric factor (empty without that wall or without reactions).
+void add_wall_columns(CsvRow& row, const Scene& scene, const Solution& sol, bool right) {
+  if (!(right ? scene.right_wall : scene.left_wall) || !sol.field) {
+    for (int k = 0; k < 4; ++k) row.add(std::string_view{});
+    return;
+  }
+  const WallResultant w = wall_resultant(scene, sol.reactions, right, kWallCrossingParts);
+  const double L = scene.span();
+  std::string text;
+  // Six digits, so a bed's height at the springing line is 0 however the round-off of its joint fell.
+  auto shown = [&](double v) { return std::abs(v) < 1e-12 * L ? 0.0 : v / L; };
+  for (const WallBedCrossing& b : w.beds)
+    text += fmt::format("{}{:.6g}:{:.6g}", text.empty() ? "" : ";", shown(b.y), shown(b.x));
+  row.add(text).add(w.base_eccentricity).add(w.stability_ratio).add(w.geometric_factor);
 }
 
 // "half" or "whole": the model a solution used (empty without one).
@@ -72,12 +101,14 @@ std::string thrust_row(const Columns& columns, const SceneParameters& p, const S
   row.add(d.condition_estimate).add(d.error_estimate);
   row.add(d.boundary_residual).add(d.equilibrium_residual).add(sol.message);
   row.add(sol.model ? to_string(sol.model->beam_model()) : "").add(d.model_error_estimate);
+  add_wall_columns(row, scene, sol, false);
+  add_wall_columns(row, scene, sol, true);
   return row.take();
 }
 
 int run_thrust(ThrustOptions& to, const CLI::App& cmd, std::ostream& out) {
   check_threads(to.threads);
-  Columns columns = thrust_columns();
+  Columns columns = thrust_columns(walls_given(cmd));
   if (to.columns.columns == "help") {
     write_all(out, columns.help(to.columns));
     return kExitOk;

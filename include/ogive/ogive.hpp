@@ -16,6 +16,7 @@
 
 #include "ogive/core/solution.hpp"
 #include "ogive/core/thrust_line.hpp"
+#include "ogive/core/wall_resultant.hpp"
 
 #include "ogive/limit/limit.hpp"
 #include "ogive/limit/spreading.hpp"

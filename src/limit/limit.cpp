@@ -17,6 +17,9 @@ using limit_detail::LimitLp;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+using limit_detail::cross;
+using limit_detail::fails_virtual_work;
+
 // The thinnest arch the search for t_min tries, relative to the span.
 constexpr double kThinnestResolved = 1e-6;
 
@@ -395,31 +398,38 @@ void require_loaded(const Scene& scene, const Ring& ring) {
       level));
 }
 
-// Makes r an lp_failure, and says why, when the static multiplier of a collapse and the kinematic one of
-// its hinges disagree (neither absent); true then. The two are the same number computed twice (the
-// thrust line passes through the mechanism's hinges, so the virtual work of its loads vanishes at the
-// static multiplier): a difference says that the program's answer is off by as much.
-bool fails_virtual_work(LimitResult& r, const char* what, double static_factor, double kinematic_factor) {
-  if (std::isnan(static_factor) || std::isnan(kinematic_factor)) return false;
-  const double scale = std::max(std::abs(static_factor), std::abs(kinematic_factor));
-  if (std::abs(static_factor - kinematic_factor) <= kStaticKinematicTolerance * scale) return false;
-  const std::string why = fmt::format("the {} of the linear program ({:.6g}) and the virtual work of its mechanism "
-                                      "({:.6g}) disagree: the program's answer is not to be trusted",
-                                      what, static_factor, kinematic_factor);
-  r.status = LimitStatus::lp_failure;
-  r.message = r.message.empty() ? why : why + "; " + r.message;
-  return true;
+// The notes of a successful result after the first (how t_min's search ended): what is absent, and why.
+void add_notes(LimitResult& r, const LimitOptions& options, const std::string& walls_note, bool forceless,
+               bool unbounded_thrust, bool live) {
+  auto note = [&](const std::string& text) { r.message += (r.message.empty() ? "" : "; ") + text; };
+  if (!walls_note.empty()) note(walls_note);
+  if (forceless)
+    note("the thrust vanishes at some joints (voussoirs without weight or load between loaded ones): no margin "
+         "there to search t_min by, and no hinge");
+  if (unbounded_thrust) note("no largest thrust: a thrust line of any H fits inside the arch (H_max absent)");
+  if (live && std::isnan(r.load_factor()))
+    note("the live load cannot turn the arch into a mechanism (no finite load factor)");
+  if (!std::isnan(r.load_factor()) && std::isnan(r.load_factor_mechanism)) {
+    if (r.collapse_state.hinges.size() > kMaxMechanismHinges)
+      note(fmt::format("the collapse state touches {} joints: the mechanism check takes at most {} hinges "
+                       "(a run of consecutive ones counting as three)",
+                       r.collapse_state.hinges.size(), kMaxMechanismHinges));
+    else
+      note(options.friction > 0 ? "no rotational mechanism through the collapse hinges: joints slide at collapse"
+                                : "no one-degree rotational mechanism through the collapse hinges");
+  }
 }
 
 // Why no thrust line stands: where it would have to fit, and whether a thicker arch would stand (t_min
 // below `t_cap`).
-std::string inadmissible_message(const LimitOptions& options, double t_min, double t_cap) {
-  std::string where = options.friction > 0 ? "inside the arch and its joints' friction cones" : "inside the arch";
+std::string inadmissible_message(const LimitOptions& options, double t_min, double t_cap, const std::string& on,
+                                 const std::string& thinner) {
+  std::string where = "inside the arch" + on + (options.friction > 0 ? " and its joints' friction cones" : "");
   if (std::isfinite(options.compressive_strength))
     where += fmt::format(" clear of the stress blocks that crush its joints (compressive strength {:g} Pa)",
                          options.compressive_strength);
-  return std::isnan(t_min) ? fmt::format("no thrust line fits {} at any thickness up to {} m", where, t_cap)
-                           : fmt::format("no thrust line fits {}: t < t_min", where);
+  return std::isnan(t_min) ? fmt::format("no thrust line fits {} at any thickness up to {} m{}", where, t_cap, thinner)
+                           : fmt::format("no thrust line fits {}: t < t_min{}", where, thinner);
 }
 
 // One analysis on the ring whose joints are `refined` and the loads' (fractions_at), and where the next
@@ -430,7 +440,7 @@ struct Round {
 };
 
 Round analyse_round(const Scene& scene, const LimitOptions& options, const std::vector<double>& refined,
-                    double previous_t_min, Work& work) {
+                    double previous_t_min, double previous_b_min, Work& work) {
   const Curve& curve = *scene.curve;
   Round round;
   LimitResult& r = round.result;
@@ -441,7 +451,7 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   const bool live = ring.has_live_load();
   const double load_factor = live ? 1.0 : 0.0;  // the H range and t_min: under the loads as given
 
-  r.V = 0.5 * (ring.total_dead() + ring.total_live());
+  r.V = limit_detail::arch_half_load(ring);
   LimitLp& lp = programs_of(ring, options, work, work.lp);
   const int solves_before = lp.solves();
   auto fail = [&](const char* problem, const char* failure) {  // failure: LimitLp::Answer::failure
@@ -495,7 +505,7 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   MarginFunction f{scene,        options, refined, load_factor, work, 0, false, margin.basis,
                    std::numeric_limits<double>::infinity(), {}, static_cast<int>(ring.joints.size())};
   const double t = scene.thickness;
-  const double t_cap = 0.99 * max_thickness(curve);
+  const double t_cap = std::min(0.99 * max_thickness(curve), limit_detail::thickest_on_walls(scene));
   // Where the thrust vanishes at some joint the margin is zero at every thickness that stands (no
   // distance from the faces to give): its sign is the round-off's, and t_min is not searched.
   const bool forceless = r.min_state.forceless || r.max_state.forceless;
@@ -520,6 +530,10 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
     round.refinement.insert(round.refinement.end(), f.feasible_refinement.begin(), f.feasible_refinement.end());
     if (f.feasible_blocks) work.beside_loads = true;
   }
+  const limit_detail::WallSearch walls =
+      limit_detail::least_wall_thickness(scene, options, fractions_at(scene, t, options, refined, work.beside_loads), load_factor,
+                                         previous_b_min, r, round.refinement);
+  if (walls.failed) return fail("the feasibility margin while searching the least wall thickness", nullptr);
   // The next ring is refined next to every joint the collapse state touches; the result lists the
   // mechanism's hinges (a thrust line along a face touches a run of joints, of which the mechanism needs
   // one).
@@ -527,27 +541,12 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   if (fails_virtual_work(r, "collapse load factor", r.load_factor(), r.load_factor_mechanism)) return round;
   if (!admissible) {
     r.status = LimitStatus::inadmissible;
-    r.message = inadmissible_message(options, r.thickness_min, t_cap);
+    r.message = inadmissible_message(options, r.thickness_min, t_cap, walls.on, walls.thinner);
     return round;
   }
   r.status = LimitStatus::success;
   if (!bracketed) r.message = fmt::format("t_min below {} m: not searched further", hi);
-  auto note = [&](const std::string& text) { r.message += (r.message.empty() ? "" : "; ") + text; };
-  if (forceless)
-    note("the thrust vanishes at some joints (voussoirs without weight or load between loaded ones): no margin "
-         "there to search t_min by, and no hinge");
-  if (unbounded_thrust) note("no largest thrust: a thrust line of any H fits inside the arch (H_max absent)");
-  if (live && std::isnan(r.load_factor()))
-    note("the live load cannot turn the arch into a mechanism (no finite load factor)");
-  if (!std::isnan(r.load_factor()) && std::isnan(r.load_factor_mechanism)) {
-    if (r.collapse_state.hinges.size() > kMaxMechanismHinges)
-      note(fmt::format("the collapse state touches {} joints: the mechanism check takes at most {} hinges "
-                       "(a run of consecutive ones counting as three)",
-                       r.collapse_state.hinges.size(), kMaxMechanismHinges));
-    else
-      note(options.friction > 0 ? "no rotational mechanism through the collapse hinges: joints slide at collapse"
-                                : "no one-degree rotational mechanism through the collapse hinges");
-  }
+  add_notes(r, options, walls.note, forceless, unbounded_thrust, live);
   return round;
 }
 
@@ -566,6 +565,7 @@ double largest_change(const LimitResult& a, const LimitResult& b) {
   compare(a.H_min(), b.H_min());
   compare(a.H_max(), b.H_max());
   compare(a.thickness_min, b.thickness_min);
+  compare(a.wall_thickness_min, b.wall_thickness_min);
   compare(a.load_factor(), b.load_factor());
   compare(a.load_factor_mechanism, b.load_factor_mechanism);
   return worst;
@@ -641,7 +641,7 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
   // project's machine took longer than the analysis itself.
   thread_local Work work;
   work.forget();
-  Round round = analyse_round(scene, options, refined, kNaN, work);
+  Round round = analyse_round(scene, options, refined, kNaN, kNaN, work);
   int solves = round.result.lp_solves;
   double change = std::numeric_limits<double>::infinity();
   // Converged after two refinements in a row that moved no number by more than the tolerance: one alone
@@ -655,7 +655,8 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
     }
     refined.insert(refined.end(), round.refinement.begin(), round.refinement.end());
     refined = limit_detail::merged_fractions(std::move(refined));
-    Round next = analyse_round(scene, options, refined, round.result.thickness_min, work);
+    Round next =
+        analyse_round(scene, options, refined, round.result.thickness_min, round.result.wall_thickness_min, work);
     solves += next.result.lp_solves;
     change = next.result.status == LimitStatus::lp_failure ? change : largest_change(round.result, next.result);
     round = std::move(next);

@@ -5,6 +5,7 @@
 #include <compare>
 #include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "ogive/limit/limit.hpp"
@@ -33,11 +34,44 @@ std::vector<double> load_fractions(const Curve& curve, double thickness, const L
                                    const LimitOptions& options);
 // uniform_fractions(options.joints_count) with the scene's load_fractions.
 std::vector<double> starting_fractions(const Scene& scene, const LimitOptions& options);
-// Sorted, strictly inside (0, 1), none within kFractionGap of the one before.
+// Sorted, strictly inside (0, 1) or encoding a wall's bed (kept_wall_fraction), none within
+// kFractionGap of the one before.
 std::vector<double> merged_fractions(std::vector<double> fractions);
 // Appends the fractions that halve the two voussoirs on each side of each hinge's joint (on both sides
-// of the ring: the fractions are shared).
+// of the arch: the fractions are shared), and for a hinge at a wall's bed the encoded depth fractions
+// that halve the two blocks on each side of it (that wall's only).
 void add_refinement(const Ring& ring, const std::vector<Hinge>& hinges, std::vector<double>& out);
+
+// Walls (src/limit/walls.cpp). A wall's beds lie at depth fractions f in [0, 1] of the wall from its
+// highest bed (0) to its base (1): kWallBlocks equal blocks, and the beds that the refinement adds,
+// carried among the arch's fractions encoded as 2 + f (left wall) or 4 + f (right wall), which
+// merged_fractions keeps and the arch's joints ignore.
+inline constexpr int kWallBlocks = 16;
+bool is_wall_fraction(double f);    // an encoded wall bed, not an arch joint
+bool kept_wall_fraction(double f);  // an encoded wall bed strictly inside its wall (0 < f < 1, by kFractionGap)
+// Puts the scene's walls on the ring (built without them): the left wall's beds and blocks before the
+// arch, the right wall's after it (Ring::left_wall_joints), at the fractions' encoded wall beds.
+void attach_walls(const Scene& scene, const std::vector<double>& fractions, Ring& ring);
+// The thickest arch whose springing joints the scene's walls carry whole (as wide as the thinnest
+// wall): where t_min's search stops; infinity without walls.
+double thickest_on_walls(const Scene& scene);
+// Half the arch's loads (dead plus live at factor 1; the walls' not counted): LimitResult::V.
+double arch_half_load(const Ring& ring);
+// The least wall thickness of the scene on the joints `fractions`, under dead + load_factor * live,
+// starting near `near` (the previous ring's; NaN: none): into r (wall_thickness_min, lp_solves), with
+// the refinement next to its hinges appended to `refinement`. Nothing without walls.
+struct WallSearch {
+  double b_min = std::numeric_limits<double>::quiet_NaN();
+  std::string note;                // why there is no root, or why it is the least thickness allowed
+  // For the message of a system that does not stand: " on its walls" (empty without walls), and
+  // " (or the walls are thinner than b_min)" when some is.
+  std::string on, thinner;
+  std::vector<double> refinement;  // next to the hinges of the thinnest wall that stands
+  int solves = 0;
+  bool failed = false;  // a program stopped without an answer
+};
+WallSearch least_wall_thickness(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions,
+                                double load_factor, double near, LimitResult& r, std::vector<double>& refinement);
 // The ring of the scene (as make_ring) with its joints at `fractions` (as merged_fractions returns them).
 Ring make_ring_at(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions);
 
@@ -95,6 +129,9 @@ struct LeastMechanism {
   std::vector<Hinge> hinges;
 };
 LeastMechanism least_mechanism(const Ring& ring, const std::vector<Hinge>& hinges, LiveKind live);
+// Makes r an lp_failure, and says why, when the static multiplier of a collapse (`what`) and the
+// kinematic one of its hinges disagree by more than kStaticKinematicTolerance (neither absent); true then.
+bool fails_virtual_work(LimitResult& r, const char* what, double static_factor, double kinematic_factor);
 
 // The linear programs of one ring and its loads. Unknowns: the thrust H, the left support's vertical
 // reaction V and moment M about the origin, the load factor lambda and the margin mu. Joint j carries

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include <Eigen/LU>
+#include <fmt/format.h>
 
 #include "limit/limit_internal.hpp"
 #include "ogive/limit/limit.hpp"
@@ -143,4 +145,23 @@ double mechanism_horizontal_load_factor(const Ring& ring, const std::vector<Hing
   return limit_detail::least_mechanism(ring, hinges, limit_detail::LiveKind::horizontal).factor;
 }
 
+namespace limit_detail {
+
+// Makes r an lp_failure, and says why, when the static multiplier of a collapse and the kinematic one of
+// its hinges disagree (neither absent); true then. The two are the same number computed twice (the
+// thrust line passes through the mechanism's hinges, so the virtual work of its loads vanishes at the
+// static multiplier): a difference says that the program's answer is off by as much.
+bool fails_virtual_work(LimitResult& r, const char* what, double static_factor, double kinematic_factor) {
+  if (std::isnan(static_factor) || std::isnan(kinematic_factor)) return false;
+  const double scale = std::max(std::abs(static_factor), std::abs(kinematic_factor));
+  if (std::abs(static_factor - kinematic_factor) <= kStaticKinematicTolerance * scale) return false;
+  const std::string why = fmt::format("the {} of the linear program ({:.6g}) and the virtual work of its mechanism "
+                                      "({:.6g}) disagree: the program's answer is not to be trusted",
+                                      what, static_factor, kinematic_factor);
+  r.status = LimitStatus::lp_failure;
+  r.message = r.message.empty() ? why : why + "; " + r.message;
+  return true;
+}
+
+}  // namespace limit_detail
 }  // namespace ogive

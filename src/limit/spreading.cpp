@@ -591,6 +591,7 @@ double coarsest_next_to(const Ring& ring, const std::vector<Hinge>& hinges) {
 SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread) {
   std::string why;
   if (!spread.is_valid(&why)) throw std::invalid_argument("SpreadOptions: " + why);
+  if (scene.has_walls()) throw std::invalid_argument("left_wall, right_wall: the spreading analysis takes no walls");
   // The ring and the path are those without friction (the cone is checked on each state); the state at
   // d = 0 with friction, and whether there is one, is limit's with it.
   LimitOptions frictionless = limit;

@@ -590,7 +590,7 @@ std::vector<double> merged_fractions(std::vector<double> f) {
   std::vector<double> out;
   out.reserve(f.size());
   for (double x : f) {
-    if (!(x > kFractionGap && x < 1.0 - kFractionGap)) continue;
+    if (!(x > kFractionGap && x < 1.0 - kFractionGap) && !kept_wall_fraction(x)) continue;
     if (!out.empty() && x - out.back() <= kFractionGap) continue;
     out.push_back(x);
   }
@@ -615,20 +615,9 @@ std::vector<double> load_fractions(const Curve& curve, double thickness, const L
   return out;
 }
 
-void add_refinement(const Ring& ring, const std::vector<Hinge>& hinges, std::vector<double>& out) {
-  const int m = ring.crown_joint();  // voussoirs per side
-  const std::vector<double>& f = ring.joint_fractions;
-  // Side joint i's fraction: 0 at the springing, 1 at the crown.
-  auto at = [&](int i) { return i <= 0 ? 0.0 : i >= m ? 1.0 : f[static_cast<std::size_t>(i - 1)]; };
-  // Two voussoirs on each side of the hinge: the true hinge may lie beyond the next joint.
-  for (const Hinge& h : hinges) {
-    const int i = h.joint <= m ? h.joint : 2 * m - h.joint;
-    for (int k = std::max(i - 2, 0); k < std::min(i + 2, m); ++k) out.push_back(0.5 * (at(k) + at(k + 1)));
-  }
-}
-
 struct RingScratch::Impl {
   std::array<SideRing, 2> sides;
+  std::vector<double> arch;  // the arch's fractions of a ring with walls
 };
 
 RingScratch::RingScratch() : impl_(std::make_unique<Impl>()) {}
@@ -648,14 +637,18 @@ void make_ring_at(const Scene& scene, const LimitOptions& options, const std::ve
                   RingScratch& scratch) {
   if (!scene.curve) throw std::invalid_argument("curve: a scene needs a generator curve");
   const Material& m = scene.material;
-  build_ring(*scene.curve, scene.thickness, m.density * m.gravity, scene.loads.fills, m.gravity, options, fractions,
-             ring, scratch.impl_->sides);
+  // The arch's fractions come first (merged_fractions sorts them); the walls' beds after them.
+  const auto walls = std::find_if(fractions.begin(), fractions.end(), is_wall_fraction);
+  const std::vector<double>& arch = walls == fractions.end() ? fractions : scratch.impl_->arch;
+  if (walls != fractions.end()) scratch.impl_->arch.assign(fractions.begin(), walls);
+  build_ring(*scene.curve, scene.thickness, m.density * m.gravity, scene.loads.fills, m.gravity, options, arch, ring,
+             scratch.impl_->sides);
   add_live_loads(ring, scene.loads, options.weight);
+  attach_walls(scene, fractions, ring);
   ring.acceleration = scene.horizontal_acceleration;
-  const int last = static_cast<int>(ring.joints.size()) - 1;
-  if (scene.left.kind == SupportKind::pinned) ring.pins.push_back(0);
+  if (scene.left.kind == SupportKind::pinned) ring.pins.push_back(ring.left_springing());
   if (scene.crown_hinge) ring.pins.push_back(ring.crown_joint());
-  if (scene.right.kind == SupportKind::pinned) ring.pins.push_back(last);
+  if (scene.right.kind == SupportKind::pinned) ring.pins.push_back(ring.right_springing());
 }
 
 Ring make_ring_at(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions) {

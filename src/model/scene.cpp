@@ -79,10 +79,105 @@ bool mirror_invariant(const std::vector<Load>& loads) {
   return true;
 }
 
+bool same_wall(const std::optional<Wall>& a, const std::optional<Wall>& b) {
+  if (a.has_value() != b.has_value()) return false;
+  return !a || (a->height == b->height && a->thickness == b->thickness && a->density == b->density &&
+                a->top_load == b->top_load && a->top_load_at == b->top_load_at);
+}
+
+// A wall's height and thickness at the most, in spans: beyond, it is no wall of a vault (and its
+// weight's products leave the range of a double).
+constexpr double kLargestWall = 100.0;
+// The walls' weight and top load at the most, relative to the arch's loads: beyond, the arch's forces are
+// round-off in the system's equilibrium (the limit analysis works in units of the whole load).
+constexpr double kHeaviestWalls = 1e4;
+
+// One wall's fields and fit to its springing (Scene::validate); arch_load: the arch's loads (N/m).
+void validate_wall(const Wall& w, const Curve& curve, double thickness, double gravity, double arch_load, bool right) {
+  const char* side = right ? "right_wall" : "left_wall";
+  auto field = [&](const char* name) { return fmt::format("{}_{}", side, name); };
+  if (!std::isfinite(w.height) || !(w.height >= 0)) refuse(field("height").c_str(), "must be finite and >= 0", w.height);
+  if (!std::isfinite(w.thickness) || !(w.thickness > 0))
+    refuse(field("thickness").c_str(), "must be finite and > 0", w.thickness);
+  if (!std::isfinite(w.density) || !(w.density >= 0))
+    refuse(field("density").c_str(), "must be finite and >= 0", w.density);
+  if (!std::isfinite(w.top_load) || !(w.top_load >= 0))
+    refuse(field("top_load").c_str(), "must be finite and >= 0 (downwards)", w.top_load);
+  if (!(w.top_load_at >= 0 && w.top_load_at <= 1))
+    refuse(field("top_load_at").c_str(), "must lie in [0, 1] (a fraction of the wall's thickness from its inner face)",
+           w.top_load_at);
+  const double L = curve.span();
+  if (w.height > kLargestWall * L)
+    throw std::invalid_argument(fmt::format("{}: must be at most {} spans ({} m), got {} m", field("height"),
+                                            kLargestWall, kLargestWall * L, w.height));
+  if (w.thickness > kLargestWall * L)
+    throw std::invalid_argument(fmt::format("{}: must be at most {} spans ({} m), got {} m", field("thickness"),
+                                            kLargestWall, kLargestWall * L, w.thickness));
+  const double load = w.density * gravity * w.thickness * (w.height + thickness) + w.top_load;
+  if (!std::isfinite(load) || load > kHeaviestWalls * arch_load)
+    throw std::invalid_argument(fmt::format(
+        "{}, {}: the wall's weight and top load ({} N/m) must be at most {:g} times the arch's loads ({} N/m)",
+        field("density"), field("top_load"), load, kHeaviestWalls, arch_load));
+  const WallOutline o = wall_outline(curve, thickness, w, right);
+  // The springing joint from its intrados point outwards: its horizontal width, on the wall's side.
+  const double width = o.outward * (o.joint.extrados.x() - o.joint.intrados.x());
+  if (width < -1e-12 * curve.span())
+    throw std::invalid_argument(fmt::format(
+        "{}: the springing joint leans inwards (its extrados point lies {} m inside the span beyond its intrados "
+        "point): it does not rest on the wall's top",
+        field("thickness"), -width));
+  if (w.thickness < width * (1 - 1e-12))
+    throw std::invalid_argument(fmt::format(
+        "{}: must be at least the springing joint's horizontal width ({} m), the wall carrying the whole joint, got {} m",
+        field("thickness"), width, w.thickness));
+  if (o.base_y > o.top_y + 1e-12 * curve.span())
+    throw std::invalid_argument(fmt::format(
+        "{}: must reach the springing joint's lower end ({} m below the springing's axis point), got {} m",
+        field("height"), o.joint.axis.y() - o.top_y, w.height));
+}
+
 }  // namespace
+
+SpringingJoint springing_joint(const Curve& curve, double thickness, bool right) {
+  const CurvePoint q = right ? curve.at_whole_arch(curve.whole_length()) : curve.at(0.0);
+  // The normal towards the extrados (the left of the direction of travel, left to right), as the ring's
+  // joints are made (src/limit/voussoirs.cpp).
+  const Eigen::Vector2d p(q.x, q.y), normal(-std::sin(q.theta), std::cos(q.theta));
+  const double half_t = 0.5 * thickness;
+  return {p - half_t * normal, p + half_t * normal, p};
+}
+
+WallOutline wall_outline(const Curve& curve, double thickness, const Wall& wall, bool right) {
+  return wall_outline(springing_joint(curve, thickness, right), wall, right);
+}
+
+WallOutline wall_outline(const SpringingJoint& joint, const Wall& wall, bool right) {
+  WallOutline o;
+  o.joint = joint;
+  o.outward = right ? 1.0 : -1.0;
+  o.inner_x = o.joint.intrados.x();
+  o.outer_x = o.inner_x + o.outward * wall.thickness;
+  o.top_y = std::min(o.joint.intrados.y(), o.joint.extrados.y());
+  o.base_y = o.joint.axis.y() - wall.height;
+  // The wedge's outline (either orientation) by the shoelace formula.
+  const Eigen::Vector2d I = o.joint.intrados, E = o.joint.extrados;
+  const Eigen::Vector2d p[] = {{o.outer_x, o.top_y}, {o.inner_x, o.top_y}, I, E, {o.outer_x, E.y()}};
+  double a = 0;
+  Eigen::Vector2d c = Eigen::Vector2d::Zero();
+  for (std::size_t i = 0; i < 5; ++i) {
+    const Eigen::Vector2d &u = p[i], &v = p[(i + 1) % 5];
+    const double w = u.x() * v.y() - v.x() * u.y();
+    a += w;
+    c += w * (u + v);
+  }
+  o.wedge_area = 0.5 * std::abs(a);
+  if (a != 0) o.wedge_centroid = c / (3.0 * a);
+  return o;
+}
 
 bool Scene::symmetric() const {
   if (!curve || curve->extent() != CurveExtent::half || horizontal_acceleration != 0) return false;
+  if (!same_wall(left_wall, right_wall)) return false;
   if (left.kind != right.kind || left.spread != right.spread || left.settlement != right.settlement ||
       left.rotation != -right.rotation)
     return false;
@@ -157,6 +252,9 @@ void Scene::validate() const {
   if (thickness >= limit)
     throw std::invalid_argument(fmt::format(
         "thickness: must be less than twice the smallest radius of curvature ({} m), got {} m", limit, thickness));
+  const double arch_load = reference_load_per_length() * curve->whole_length();
+  if (left_wall) validate_wall(*left_wall, *curve, thickness, material.gravity, arch_load, false);
+  if (right_wall) validate_wall(*right_wall, *curve, thickness, material.gravity, arch_load, true);
 }
 
 const char* to_string(BeamModel m) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -174,6 +175,28 @@ std::string supports_svg(const std::vector<Springing>& ends, const Frame& frame,
       drawn.add({p.x, p.y + 1.5 * frame.reach});
     }
   return out;
+}
+
+// The walls under the springings (Scene::left_wall, right_wall): each outline filled (#wall-left,
+// #wall-right), the wedge under an inclined springing joint included, and the ground under its base
+// hatched as a clamped support is (#ground-left, #ground-right); the view takes them in.
+void draw_walls(std::string& body, const Scene& scene, const Frame& frame, Box& drawn) {
+  for (bool right : {false, true}) {
+    const std::optional<Wall>& wall = right ? scene.right_wall : scene.left_wall;
+    if (!wall) continue;
+    const WallOutline o = wall_outline(*scene.curve, scene.thickness, *wall, right);
+    const Eigen::Vector2d I = o.joint.intrados, E = o.joint.extrados;
+    const std::vector<PlanePoint> outline = {
+        frame.at(o.inner_x, o.base_y), frame.at(o.outer_x, o.base_y), frame.at(o.outer_x, std::max(o.top_y, E.y())),
+        frame.at(E.x(), E.y()),        frame.at(I.x(), I.y()),        frame.at(o.inner_x, o.top_y)};
+    for (PlanePoint q : outline) drawn.add(q);
+    path(body, right ? "wall-right" : "wall-left", {outline},
+         fmt::format("fill=\"#e8e2d6\" stroke=\"black\" stroke-width=\"{}\"", frame.stroke).c_str());
+    const SectionFaces base{outline[0], outline[1]};
+    clamped_support(body, right ? "ground-right" : "ground-left", base, PlanePoint{0.0, -1.0}, frame.reach,
+                    frame.stroke);
+    for (PlanePoint q : {outline[0], outline[1]}) drawn.add({q.x, q.y - 1.5 * frame.reach});
+  }
 }
 
 // The thrust line: runs of drawable stations (finite, not far from the arch); the view follows the
@@ -447,10 +470,15 @@ std::string arch_svg(const Scene& scene, const Solution& solution, const Drawing
   // What is drawn grows the view beyond the arch: the supports, the thrust line, the loads, the arrows.
   Box drawn = frame.box;
   const std::vector<Springing> ends = springings(scene, frame);
-  const std::string supports = supports_svg(ends, frame, drawn);
+  // A springing on a wall has the wall for its support (draw_walls).
+  std::vector<Springing> held;
+  for (const Springing& e : ends)
+    if (!(e.id == std::string("support-left") ? scene.left_wall : scene.right_wall)) held.push_back(e);
+  const std::string supports = supports_svg(held, frame, drawn);
   const std::vector<std::vector<PlanePoint>> thrust = thrust_runs(solution, frame, drawn);
   std::string body;
   draw_fills(body, scene, outline, frame, drawn);
+  draw_walls(body, scene, frame, drawn);
   draw_arch(body, outline, frame.stroke);
   draw_cracks(body, scene, solution, frame);
   for (const CollapseMechanism& m : options.mechanisms) draw_mechanism(body, scene, m, frame, drawn);

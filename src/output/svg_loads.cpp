@@ -331,6 +331,9 @@ std::vector<ExtraThrustLine> limit_thrust_lines(const LimitResult& r) {
 std::optional<CollapseMechanism> collapse_mechanism(const Scene& scene, const LimitResult& r) {
   const ThrustState& c = r.collapse_state;
   if (!c.found() || c.hinges.size() != 4) return std::nullopt;
+  // The displaced blocks are the arch's: a mechanism that turns a wall is drawn by its hinges alone.
+  for (const Hinge& h : c.hinges)
+    if (h.joint < r.ring.left_springing() || h.joint > r.ring.right_springing()) return std::nullopt;
   CollapseMechanism m;
   for (const Hinge& h : c.hinges) {
     m.hinge_s.push_back(r.ring.joints[static_cast<std::size_t>(h.joint)].s);

@@ -103,6 +103,10 @@ inline const std::vector<CliCase>& cli_cases() {
       {{"thrust", "--method", "closed-form", "--supports", "pinned"}, "--right-settlement-ratio"},
       {{"thrust", "--method", "closed-form", "--eccentricity", "0.5"}, "--left-rotation"},
       {{"thrust", "--method", "closed-form", "--supports", "pinned"}, "--horizontal-acceleration"},
+      // The walls (their resultant down each wall in thrust's columns).
+      {{"thrust", "--method", "closed-form", "--wall-thickness", "3"}, "--wall-height"},
+      {{"thrust", "--method", "closed-form", "--wall-height", "5"}, "--wall-thickness"},
+      {{"thrust", "--method", "closed-form", "--wall-height", "5", "--wall-thickness", "3"}, "--wall-top-load"},
   };
   return cases;
 }

@@ -100,3 +100,29 @@ TEST_CASE("svg: the collapse mechanism is the limit analysis' collapse state - f
   const Scene bare = paper_scene(0.5, 0.1);
   CHECK_FALSE(collapse_mechanism(bare, analyse_limit(bare, LimitOptions{})).has_value());
 }
+
+TEST_CASE("svg: walls are drawn under the springings, the limit analysis' lines running down them to the base") {
+  Scene scene = paper_scene(0.0, 0.1);
+  const double L = scene.span();
+  scene.left_wall = scene.right_wall = Wall{L, 0.2 * L, scene.material.density, 0.0, 0.5};
+  const LimitResult r = analyse_limit(scene, LimitOptions{});
+  DrawingOptions drawing;
+  add_limit_analysis(drawing, scene, r);
+  REQUIRE(!drawing.extra_lines.empty());
+  // The minimum thrust line ends at the walls' bases, y = -h_w, with a point per bed.
+  const ExtraThrustLine& min = drawing.extra_lines.front();
+  CHECK(min.points.size() == r.ring.joints.size());
+  CHECK(close(min.points.front().y, -L, kExact));
+  CHECK(close(min.points.back().y, -L, kExact));
+  const std::string svg = arch_svg(scene, solve(scene), drawing);
+  for (const char* id : {"wall-left", "wall-right", "ground-left", "ground-right"})
+    CHECK(svg.find(std::string("id=\"") + id + "\"") != std::string::npos);
+  // The springings stand on the walls: no support of their own.
+  CHECK(svg.find("id=\"support-left\"") == std::string::npos);
+  // A mechanism that turns a wall is not drawn displaced.
+  scene.left_wall->thickness = scene.right_wall->thickness = 0.19 * L;
+  scene.loads.points = {{2e4, 0.3}};
+  const LimitResult c = analyse_limit(scene, LimitOptions{});
+  REQUIRE(c.collapse_state.found());
+  CHECK_FALSE(collapse_mechanism(scene, c).has_value());
+}

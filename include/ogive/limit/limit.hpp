@@ -135,7 +135,8 @@ struct Voussoir {
 };
 
 // joints.size() == voussoirs.size() + 1; voussoir k lies between joints k and k + 1; as many voussoirs
-// on each side of the crown, and joints[crown_joint()] is the vertical crown joint, at Curve::crown.
+// of the arch on each side of the crown, and joints[crown_joint()] is the vertical crown joint, at
+// Curve::crown.
 // A ring of a half curve (or of a symmetric whole one) is symmetric about mid-span.
 struct Ring {
   std::vector<Joint> joints;
@@ -151,7 +152,16 @@ struct Ring {
   // radial joints only: the radial joint through the intrados' crown point, beside the vertical crown
   // joint (the two meet there, and the wedge between them is a voussoir).
   std::vector<double> joint_fractions;
-  int crown_joint() const { return static_cast<int>(joints.size() / 2); }
+  // Walls (Scene::left_wall, right_wall): the ring is then the chain from the left wall's base up the
+  // wall, over the arch and down the right wall to its base. Its first left_wall_joints joints are the
+  // left wall's horizontal beds (base first), its last right_wall_joints the right wall's (base last);
+  // each bed's intrados point is on the wall's inner face, its extrados point on the outer one, and its
+  // s lies outside the arch's [0, whole length] (below 0 on the left wall, beyond it on the right one),
+  // ascending along the chain. The voussoirs between them are the wall's blocks. 0 and 0 without walls.
+  int left_wall_joints = 0, right_wall_joints = 0;
+  int left_springing() const { return left_wall_joints; }
+  int right_springing() const { return static_cast<int>(joints.size()) - 1 - right_wall_joints; }
+  int crown_joint() const { return (left_springing() + right_springing()) / 2; }
   double total_weight() const;  // N/m, the self-weight
   double total_fill() const;    // N/m
   double total_dead() const;    // N/m, self-weight plus fill
@@ -195,8 +205,8 @@ struct Hinge {
 // One thrust line in equilibrium: the reactions and, for each joint, where the resultant crosses it.
 struct ThrustState {
   double H = std::numeric_limits<double>::quiet_NaN();            // N/m, inward push of each support
-  double V_left = std::numeric_limits<double>::quiet_NaN();       // N/m, upward reaction, left support
-  double V_right = std::numeric_limits<double>::quiet_NaN();      // N/m, upward reaction, right support
+  double V_left = std::numeric_limits<double>::quiet_NaN();       // N/m, upward reaction, left support (wall's base)
+  double V_right = std::numeric_limits<double>::quiet_NaN();      // N/m, upward reaction, right support (wall's base)
   double load_factor = std::numeric_limits<double>::quiet_NaN();  // multiplier on the live load
   std::vector<Eigen::Vector2d> crossing;  // m, one per joint: the resultant's point on the joint
   std::vector<Eigen::Vector2d> force;     // N/m, one per joint: the part left of it on the part right of it
@@ -240,12 +250,21 @@ struct LimitResult {
   std::string message;  // empty on success
   // V: half the total vertical load (dead plus live at factor 1): each springing's share when the
   // scene is symmetric, the scale of H_min / V and H_max / V otherwise (each state has V_left, V_right).
-  double V = std::numeric_limits<double>::quiet_NaN();
+  double V = std::numeric_limits<double>::quiet_NaN();  // the arch's loads only (the walls' not counted)
   ThrustState min_state;  // the smallest H (the arch pushes least: the state a spreading support reaches)
   ThrustState max_state;  // the largest H; absent (with a message) when H is unbounded: a flat, thick
                           // arch holds a straight thrust line of any H (infinite compressive strength)
   double thickness_min = std::numeric_limits<double>::quiet_NaN();  // t_min, m, same axis and loads; NaN
-                                                                   // (with a message) below 1e-6 of the span
+                                                                   // (with a message) below 1e-6 of the span;
+                                                                   // on the scene's walls when it has any (up
+                                                                   // to the thickness whose springing joint
+                                                                   // is as wide as the thinnest wall)
+  // With walls: the least wall thickness b_min (m) on which the arch as it is stands, every wall of the
+  // scene given that thickness (their heights, densities and top loads kept): the root of the
+  // feasibility margin in b_w, as t_min's. When the walls stand at the least thickness that carries the
+  // springing joints (their horizontal width) that width, with a message; NaN without walls, when the
+  // arch itself cannot stand, or when no wall up to 1000 spans thick holds it (with a message).
+  double wall_thickness_min = std::numeric_limits<double>::quiet_NaN();
   // With a live load: the largest multiplier of the live load that the arch carries (dead loads
   // times 1), its state with the collapse mechanism's hinges, and the kinematic multiplier of the same
   // hinges by virtual work (mechanism_load_factor); absent without a live load, or when the arch cannot

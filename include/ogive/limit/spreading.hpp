@@ -183,7 +183,7 @@ struct SpreadResult {
 };
 
 // The mechanism path of `scene` (as analyse_limit takes it) under the movement of `spread`. Throws
-// std::invalid_argument for invalid options or scene.
+// std::invalid_argument for invalid options or scene, or a scene on walls (Scene::left_wall, right_wall).
 SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread);
 
 }  // namespace ogive

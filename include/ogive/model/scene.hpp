@@ -9,7 +9,10 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "ogive/geometry/curve.hpp"
 #include "ogive/model/section.hpp"
@@ -90,6 +93,42 @@ struct Support {
   double rotation = 0;    // rad, counter-clockwise positive; a pinned springing's must be 0 (it is free)
 };
 
+// A wall under a springing (docs/model.md, "Walls"): a rectangular block of masonry whose inner face is
+// the vertical through the springing joint's intrados point and which extends outwards (away from the
+// span) by its thickness b_w, from its base h_w below the springing's axis point up to the springing
+// joint, which rests on its top. Its beds are horizontal; like the arch's joints they resist no tension
+// and (unless the limit analysis is given a friction coefficient) do not slide.
+struct Wall {
+  double height = 0;     // h_w, m, from the base to the springing line (the springing's axis point); >= 0
+  double thickness = 0;  // b_w, m, > 0, at least the springing joint's horizontal width
+  double density = 0;    // rho_w, kg/m^3, >= 0 (g is the scene's)
+  double top_load = 0;   // N per metre of vault width, >= 0, downwards, on the wall's top (a wall above, a roof)
+  double top_load_at = 0.5;  // where it acts: the fraction of b_w from the inner face, in [0, 1]
+};
+
+// A springing joint, normal to the axis at the springing (the bed of the arch on its support or wall).
+struct SpringingJoint {
+  Eigen::Vector2d intrados, extrados, axis;  // m
+};
+// The springing joint of the arch of `curve` with thickness t (m): the left one or the right one.
+SpringingJoint springing_joint(const Curve& curve, double thickness, bool right);
+
+// A wall's outline (m), from its springing joint and the Wall: `outward` is -1 for the left wall, +1 for
+// the right one; the inner face at x = inner_x, the outer one at outer_x = inner_x + outward b_w; the
+// highest horizontal bed at top_y (the lower end of the springing joint: the springing joint rests on it
+// when it is horizontal, else a wedge of wall fills the space between the two), the base at base_y =
+// the springing's axis height - h_w.
+struct WallOutline {
+  SpringingJoint joint;
+  double outward = -1, inner_x = 0, outer_x = 0, top_y = 0, base_y = 0;
+  // The wedge between the highest bed and the springing joint (with the wall's top beyond the joint's
+  // extrados at its height): area (m^2, 0 under a horizontal joint) and centroid (m).
+  double wedge_area = 0;
+  Eigen::Vector2d wedge_centroid = Eigen::Vector2d::Zero();
+};
+WallOutline wall_outline(const SpringingJoint& joint, const Wall& wall, bool right);
+WallOutline wall_outline(const Curve& curve, double thickness, const Wall& wall, bool right);
+
 struct Scene {
   // The axis: a half arch (symmetric) or a whole one, springing to springing (curve.hpp); required.
   std::shared_ptr<const Curve> curve;
@@ -112,6 +151,10 @@ struct Scene {
   // live loads) also carries a horizontal force a times its weight, to +x (left to right) for a > 0; a
   // fraction of g, finite. A scene with a != 0 is not symmetric: it is solved over the whole arch.
   double horizontal_acceleration = 0;
+  // The walls under the springings (none: the springing rests on the ground). A wall's base is the
+  // support then; only the limit analysis takes walls (analyse_limit), the elastic analyses do not.
+  std::optional<Wall> left_wall, right_wall;
+  bool has_walls() const { return left_wall.has_value() || right_wall.has_value(); }
 
   // Sets both springings' outward spread to d (m): today's "support displacement" of the paper.
   void set_support_displacement(double d) { left.spread = right.spread = d; }
@@ -136,7 +179,10 @@ struct Scene {
   // stiffness, density >= 0, some load (self-weight or another), loads inside the span, a fill level
   // above the springing, no rotation given to a pinned springing, a thickness that fits the curve
   // (t < 2 * smallest radius of curvature, so that the intrados does not fold over), and the elastic
-  // section for the curved beam model.
+  // section for the curved beam model, and walls with finite fields, h_w >= 0 (deep enough to hold an
+  // inclined springing joint), b_w at least the springing joint's horizontal width, h_w and b_w at most
+  // 100 spans, a weight and top load at most 1e4 times the arch's loads, and a springing joint that rests
+  // on its wall (its extrados point over the wall, not inside the span).
   void validate() const;
 };
 

@@ -18,6 +18,11 @@
 //   #thrust-line  the elastic line of thrust: the solution's profile points (thrust_x, thrust_y) in
 //               order, one per station; a station with no thrust point (N = 0) or one farther than
 //               kFarFromArch spans from the arch starts a new subpath and is not drawn
+//   #wall-left, #wall-right   the walls under the springings (Scene::left_wall, right_wall), filled,
+//               with the ground under each base hatched (#ground-left, #ground-right); a springing on a
+//               wall has no support drawn of its own. The limit analysis' lines (extra_lines) run down
+//               through the walls to their bases, with the hinges at the walls' beds; `ogive draw` adds
+//               the elastic arch's resultant down each wall as extra lines (#wall-resultant-left, ...).
 //   #support-left, #support-right   clamped springings: a line along the springing section, hatched on
 //               the side of the support, as engineering drawings show a fixed support
 //   #support-movement   when the scene's support displacement d is non-zero: an arrow at each springing
@@ -122,7 +127,8 @@ struct DrawingOptions {
 std::vector<ExtraThrustLine> limit_thrust_lines(const LimitResult& result);
 
 // The collapse mechanism of the limit analysis' collapse state (a live load's), labelled with its load
-// factor; none without a collapse state or unless it has four hinges. `scene` is the analysed one.
+// factor; none without a collapse state or unless it has four hinges, all in the arch (a mechanism that
+// turns a wall is not drawn displaced). `scene` is the analysed one.
 std::optional<CollapseMechanism> collapse_mechanism(const Scene& scene, const LimitResult& result);
 // The limit analysis into a drawing: its thrust lines (limit_thrust_lines) and its collapse mechanism
 // (collapse_mechanism), where there is one. `scene` is the analysed one.
