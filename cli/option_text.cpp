@@ -52,6 +52,7 @@ constexpr std::pair<std::string_view, std::string_view> kFieldOptions[] = {
     {"fill_height_ratio", "--fill-height-ratio"},
     {"joints_count", "--joints-count"},
     {"friction", "--friction"},
+    {"friction_model", "--friction-model"},
     {"compressive_strength", "--compressive-strength"},
     {"rtol", "--rtol"},
     {"atol", "--atol"},

@@ -104,6 +104,123 @@ LimitLp::Answer solve_warm(LimitLp& lp, std::vector<LimitLp::RowKey>& keys, Solv
   return a;
 }
 
+// Non-associative friction (Gilbert, Casapulla & Ahmed 2006): the iterations at the most, the change of
+// the normal forces (relative to the ring's loads, dead plus live at the factor found) at which they have
+// converged, and the under-relaxation's floor.
+constexpr int kMaxSlidingIterations = 4000;
+constexpr double kSlidingTolerance = 1e-10;
+constexpr double kSlidingRelaxationFloor = 1.0 / 64;
+// The shortest step tried towards held forces with no state before giving up.
+constexpr double kSlidingRetryFloor = 1e-6;
+
+// The factor a hair below the optimum at which the iteration looks for the optimal state nearest the
+// held normal forces (at the optimum itself the set can be empty by round-off).
+constexpr double kBelowOptimum = 1e-10;
+
+// Of the states at `a`'s factor (times 1 - kBelowOptimum) between the least and the largest thrust, the
+// one whose normal forces are nearest `held` (least squares); `a` itself when those programs fail.
+LimitLp::Answer nearest_optimal_state(LimitLp& lp, const LimitLp::Answer& a, const std::vector<double>& held) {
+  const double factor = a.load_factor * (1 - kBelowOptimum);
+  const LimitLp::Answer lo = lp.extreme_thrust(factor, false), hi = lp.extreme_thrust(factor, true);
+  if (lo.outcome != LimitLp::Outcome::optimal || hi.outcome != LimitLp::Outcome::optimal) return a;
+  const std::vector<double> N_lo = lp.normal_forces(lo), N_hi = lp.normal_forces(hi);
+  double num = 0, den = 0;
+  for (std::size_t j = 0; j < held.size(); ++j) {
+    const double d = N_hi[j] - N_lo[j];
+    num += d * (held[j] - N_lo[j]);
+    den += d * d;
+  }
+  const double theta = den > 0 ? std::clamp(num / den, 0.0, 1.0) : 0.0;
+  LimitLp::Answer out = lo;
+  out.H = lo.H + theta * (hi.H - lo.H);
+  out.V = lo.V + theta * (hi.V - lo.V);
+  out.M = lo.M + theta * (hi.M - lo.M);
+  out.load_factor = factor;
+  out.basis = a.basis;
+  return out;
+}
+
+// The outcome of the non-associative iteration: the last answer, and why it did not converge (empty:
+// it did).
+struct SlidingIteration {
+  LimitLp::Answer answer;
+  std::string failure;
+  int iterations = 0;
+};
+
+// The program `solve` (lp's collapse, say) with non-associative friction, from `first`, its optimum with
+// the Coulomb rows (the associative answer). Each iteration holds every joint's friction rows at the
+// normal forces N_prev of the previous state (|T| <= friction N_prev: fixed numbers), re-solves, and moves
+// N_prev towards the new normal forces, by a step halved whenever the change fails to shrink by a tenth
+// (the iteration can oscillate between two mechanisms). At the fixed point the state lies inside every
+// Coulomb cone (N = N_prev) and its mechanism, the normality of fixed-N rows, slides without opening.
+// `load_scale`: the live load's magnitude at factor 1 (added to the dead loads times the factor found).
+template <class Solve>
+SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptions& options,
+                                 const LimitLp::Answer& first, double load_scale, Solve&& solve) {
+  SlidingIteration out{first, {}, 0};
+  if (!(options.friction > 0) || options.friction_model != FrictionModel::non_associative ||
+      first.outcome != LimitLp::Outcome::optimal || !lp.slides(first.basis))
+    return out;  // no joint on its cone in the optimum's basis: its mechanism only hinges (no dilatancy)
+  std::vector<double> held = lp.normal_forces(first);
+  // The last held forces with a state (the first: the associative optimum is one), and the state's own.
+  std::vector<double> good = held, good_N = held;
+  double step = 1.0, previous = std::numeric_limits<double>::infinity();
+  std::vector<int> basis = first.basis;
+  for (int it = 1; it <= kMaxSlidingIterations; ++it) {
+    out.iterations = it;
+    lp.hold_sliding(held);
+    LimitLp::Answer a = solve(basis.empty() ? nullptr : &basis);
+    if (a.outcome == LimitLp::Outcome::infeasible && step > kSlidingRetryFloor) {
+      // Held forces with no state: a shorter step from the last ones that had one. (The held forces
+      // with a state are a convex set: the average of two states is one of the average forces.)
+      step *= 0.5;
+      for (std::size_t j = 0; j < held.size(); ++j) held[j] = good[j] + step * (good_N[j] - good[j]);
+      continue;
+    }
+    if (a.outcome != LimitLp::Outcome::optimal) {
+      lp.hold_sliding({});
+      out.answer = LimitLp::Answer{};
+      out.failure = fmt::format("no state with the joints' normal forces held at iteration {} ({})", it,
+                                a.outcome == LimitLp::Outcome::infeasible ? "infeasible"
+                                : a.outcome == LimitLp::Outcome::unbounded ? "unbounded"
+                                                                           : (a.failure ? a.failure : "LP failure"));
+      return out;
+    }
+    // The program's optimum is a vertex, whose normal forces jump from one to the next (H and the
+    // reactions are free of the held rows): of the optimal states along the thrust (the least and the
+    // largest H at the factor found, a hair below it), take the one whose normal forces are nearest the
+    // held ones, so that a state with N = held, where one exists, ends the iteration.
+    a = nearest_optimal_state(lp, a, held);
+    const std::vector<double> N = lp.normal_forces(a);
+    const double scale = std::abs(ring.total_dead()) + std::abs(a.load_factor) * load_scale;
+    double change = 0;
+    for (std::size_t j = 0; j < N.size(); ++j) change = std::max(change, std::abs(N[j] - held[j]));
+    change /= scale > 0 ? scale : 1.0;
+    basis = a.basis;
+    out.answer = std::move(a);
+    if (change <= kSlidingTolerance) {
+      lp.hold_sliding({});
+      return out;
+    }
+    if (!(change < 0.9 * previous)) step = std::max(0.5 * step, kSlidingRelaxationFloor);
+    previous = change;
+    // The same state as the last iteration's (its vertex settled): the relaxed steps would only creep
+    // towards its normal forces; hold them at once.
+    double moved = 0;
+    for (std::size_t j = 0; j < N.size() && !good_N.empty(); ++j) moved = std::max(moved, std::abs(N[j] - good_N[j]));
+    const bool settled = it > 1 && moved <= kSlidingTolerance * (scale > 0 ? scale : 1.0);
+    good = held;
+    good_N = N;
+    for (std::size_t j = 0; j < N.size(); ++j) held[j] = settled ? N[j] : held[j] + step * (N[j] - held[j]);
+  }
+  lp.hold_sliding({});
+  out.answer = LimitLp::Answer{};
+  out.failure = fmt::format("the normal forces still moved by {:.3g} of the loads after {} iterations", previous,
+                            kMaxSlidingIterations);
+  return out;
+}
+
 // The programs of `ring` in work's storage.
 LimitLp& programs_of(const Ring& ring, const LimitOptions& options, Work& work, std::unique_ptr<LimitLp>& lp) {
   if (lp) lp->load(ring, options.friction, options.compressive_strength);
@@ -205,6 +322,14 @@ double thinnest(MarginFunction& f, double lo, double f_lo, double hi, double f_h
 }
 
 }  // namespace
+
+const char* to_string(FrictionModel f) {
+  switch (f) {
+    case FrictionModel::associative: return "associative";
+    case FrictionModel::non_associative: return "non_associative";
+  }
+  return "unknown";
+}
 
 const char* to_string(LimitStatus s) {
   switch (s) {
@@ -336,6 +461,7 @@ struct HorizontalCollapse {
   ThrustState state;
   double mechanism = kNaN;
   std::vector<Hinge> mechanism_hinges;  // the mechanism's (limit_detail::least_mechanism); empty: none
+  std::string sliding_failure;  // why the non-associative iteration did not converge (then no state)
 };
 
 bool horizontal_collapse(const Ring& ring, const LimitOptions& options, Work& work, HorizontalCollapse& r,
@@ -348,8 +474,16 @@ bool horizontal_collapse(const Ring& ring, const LimitOptions& options, Work& wo
                                                    options.compressive_strength);
   LimitLp& lp = *work.horizontal_lp;
   const int solves_before = lp.solves();
-  const LimitLp::Answer c = solve_warm(lp, work.horizontal_basis, [&](const std::vector<int>* w) { return lp.collapse(w); });
+  LimitLp::Answer c = solve_warm(lp, work.horizontal_basis, [&](const std::vector<int>* w) { return lp.collapse(w); });
+  // The horizontal load of the dead loads at a_c (what the iteration's tolerance is relative to).
+  const SlidingIteration sliding =
+      non_associative(lp, ring, options, c, std::abs(ring.total_dead()), [&](const std::vector<int>* w) { return lp.collapse(w); });
   lp_solves += lp.solves() - solves_before;
+  if (!sliding.failure.empty()) {
+    r.sliding_failure = sliding.failure;
+    return true;
+  }
+  c = sliding.answer;
   if (c.outcome == LimitLp::Outcome::failure) return false;
   if (c.outcome != LimitLp::Outcome::optimal) return true;  // cannot stand, or no finite a_c
   // The state: the ring pushed by a_c with its live load at factor 1.
@@ -478,9 +612,16 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
     }
   }
   limit_detail::LeastMechanism mechanism;
+  std::string sliding_failure;  // the non-associative iteration's of the collapse load factor
   if (live) {
-    const LimitLp::Answer c = solve_warm(lp, work.collapse_basis, [&](Warm w) { return lp.collapse(w); });
-    if (c.outcome == LimitLp::Outcome::optimal) {
+    LimitLp::Answer c = solve_warm(lp, work.collapse_basis, [&](Warm w) { return lp.collapse(w); });
+    const SlidingIteration sliding =
+        non_associative(lp, ring, options, c, std::abs(ring.total_live()), [&](Warm w) { return lp.collapse(w); });
+    sliding_failure = sliding.failure;
+    if (sliding_failure.empty()) c = sliding.answer;
+    if (!sliding_failure.empty()) {
+      // No load factor: the collapse state stays absent.
+    } else if (c.outcome == LimitLp::Outcome::optimal) {
       r.collapse_state = state(c);
       mechanism = limit_detail::least_mechanism(ring, r.collapse_state.hinges, limit_detail::LiveKind::vertical);
       r.load_factor_mechanism = mechanism.factor;
@@ -536,8 +677,12 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   if (forceless)
     note("the thrust vanishes at some joints (voussoirs without weight or load between loaded ones): no margin "
          "there to search t_min by, and no hinge");
+  if (!sliding_failure.empty()) {
+    r.status = LimitStatus::not_converged;
+    note("the non-associative friction iteration of the collapse load factor did not converge: " + sliding_failure);
+  }
   if (unbounded_thrust) note("no largest thrust: a thrust line of any H fits inside the arch (H_max absent)");
-  if (live && std::isnan(r.load_factor()))
+  if (live && std::isnan(r.load_factor()) && sliding_failure.empty())
     note("the live load cannot turn the arch into a mechanism (no finite load factor)");
   if (!std::isnan(r.load_factor()) && std::isnan(r.load_factor_mechanism)) {
     if (r.collapse_state.hinges.size() > kMaxMechanismHinges)
@@ -677,6 +822,13 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
     if (h.failed) {
       r.status = LimitStatus::lp_failure;
       r.message = "the LP of the collapse acceleration stopped without an answer";
+      return r;
+    }
+    if (!h.collapse.sliding_failure.empty()) {
+      r.status = LimitStatus::not_converged;
+      const std::string text = "the non-associative friction iteration of the collapse acceleration did not "
+                               "converge: " + h.collapse.sliding_failure;
+      r.message = r.message.empty() ? text : text + "; " + r.message;
       return r;
     }
     r.horizontal_state = std::move(h.collapse.state);

@@ -159,6 +159,17 @@ class LimitLp {
   // The rows with those keys here (a cut's made anew when this ring has its joint); empty when one of
   // them has none (its joint is not in this ring).
   std::vector<int> rows(const std::vector<RowKey>& keys);
+  // Non-associative friction (Gilbert, Casapulla & Ahmed 2006): with `normal_forces` (N/m, one per
+  // joint, clamped at 0) each joint's two friction rows become |T_j| <= friction N_j with N_j those fixed
+  // numbers (a Tresca-like row: its normality has no dilatancy), linear in the unknowns like every row;
+  // empty: the Coulomb rows |T_j| <= friction n . F_j again, to the bit. Nothing without friction. The rows keep
+  // their keys (warm starts carry over).
+  void hold_sliding(const std::vector<double>& normal_forces);
+  // The normal force N_j = n_j . F_j (N/m, compression positive) of each joint in the state of an
+  // optimal answer of this ring's programs.
+  std::vector<double> normal_forces(const Answer& a) const;
+  // Whether a friction row is among the rows of an optimal basis (a joint may slide in its mechanism).
+  bool slides(const std::vector<int>& basis) const;
   int solves() const { return solves_; }
   // The linear programs solved for the crushing cuts beyond the first of each program (0 with infinite f_c).
   int cut_rounds() const;

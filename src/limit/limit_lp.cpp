@@ -17,6 +17,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 #include <Eigen/LU>
@@ -151,6 +152,16 @@ struct LimitLp::Impl {
     int face_row = 0;
   };
   std::vector<Normal> normals;
+  // Friction: per joint the index of its first friction row (the second follows) and its shear and
+  // normal force as linear functions of the unknowns (T = along . z + c, N = normal . z + c, program
+  // units), and the friction coefficient.
+  struct Sliding {
+    int row = 0;
+    Normal along, normal;
+  };
+  std::vector<Sliding> sliding;
+  double friction = 0;
+  std::vector<Inequality> coulomb;  // the friction rows as load() made them, while hold_sliding holds N
   std::vector<int> row_face;  // per joint row: 2 j + face (0 intrados, 1 extrados) of a face row, else -1
   // The cuts, rows cuts_begin on: joint, face and the normal force (N/m) they touch the condition at.
   struct Cut {
@@ -262,6 +273,9 @@ void LimitLp::load(const Ring& ring, double friction, double compressive_strengt
   p.cuts.clear();
   p.normals.clear();
   p.row_face.clear();
+  p.sliding.clear();
+  p.coulomb.clear();
+  p.friction = friction;
   LoadsLeftOfJoints& left = impl_->left;
   loads_left_of_joints(ring, left);
   std::size_t pin = 0;
@@ -305,6 +319,14 @@ void LimitLp::load(const Ring& ring, double friction, double compressive_strengt
     if (friction > 0) {
       // Normal n (towards the right-hand part) and direction d of the joint; F = (H + aG, V - D - lambda P).
       const Eigen::Vector2d d = (E - I) / h, n(d.y(), -d.x());
+      // v . F as a . z + c (the rows below are such functions of sign d - friction n, <= 0).
+      auto linear = [&](const Eigen::Vector2d& v) {
+        Impl::Normal f;
+        f.a = {v.x(), v.y(), 0.0, horizontal ? v.x() * G : -v.y() * P, 0.0};
+        f.c = a == 0 ? -v.y() * D : -v.y() * D + v.x() * aG;
+        return f;
+      };
+      p.sliding.push_back({static_cast<int>(rows.size()), linear(d), linear(n)});
       for (double sign : {1.0, -1.0}) {  // sign * (F . d) - friction * (F . n) <= 0
         const Eigen::Vector2d c = sign * d - friction * n;
         rows.push_back({{c.x(), c.y(), 0.0, horizontal ? c.x() * G : -c.y() * P, 0.0},
@@ -339,6 +361,59 @@ void LimitLp::load(const Ring& ring, double friction, double compressive_strengt
 }
 
 LimitLp::~LimitLp() = default;
+
+void LimitLp::hold_sliding(const std::vector<double>& normal_forces) {
+  Impl& p = *impl_;
+  if (p.sliding.empty()) return;
+  if (normal_forces.empty()) {  // the Coulomb rows as load() made them
+    for (std::size_t i = 0; i < p.coulomb.size(); ++i)
+      p.rows[static_cast<std::size_t>(p.sliding[i / 2].row) + i % 2] = p.coulomb[i];
+    p.coulomb.clear();
+    return;
+  }
+  if (normal_forces.size() != p.sliding.size())
+    throw std::logic_error("LimitLp::hold_sliding: one normal force per joint of the ring");
+  const bool saved = !p.coulomb.empty();
+  for (std::size_t j = 0; j < p.sliding.size(); ++j) {
+    const Impl::Sliding& sl = p.sliding[j];
+    const double N = std::max(0.0, normal_forces[j]) / p.weight;
+    for (int k = 0; k < 2; ++k) {
+      const double sign = k == 0 ? 1.0 : -1.0;
+      Inequality& row = p.rows[static_cast<std::size_t>(sl.row + k)];
+      if (!saved) p.coulomb.push_back(row);
+      // sign T <= friction N_j, T = along . z + c.
+      double sum = 0;
+      for (int c = 0; c < kUnknowns; ++c) {
+        row.a[c] = sign * sl.along.a[c];
+        sum += row.a[c] * row.a[c];
+      }
+      row.b = p.friction * N - sign * sl.along.c;
+      row.norm = std::sqrt(sum);
+    }
+  }
+}
+
+bool LimitLp::slides(const std::vector<int>& basis) const {
+  for (const Impl::Sliding& sl : impl_->sliding)
+    for (int r : basis)
+      if (r == sl.row || r == sl.row + 1) return true;
+  return false;
+}
+
+std::vector<double> LimitLp::normal_forces(const Answer& a) const {
+  const Impl& p = *impl_;
+  // The unknowns as the program's (lambda unscaled: the rows' lambda coefficients are for it).
+  const std::array<double, kUnknowns> z{a.H / p.weight, a.V / p.weight, a.M / (p.weight * p.span), a.load_factor,
+                                        a.margin};
+  std::vector<double> out;
+  out.reserve(p.sliding.size());
+  for (const Impl::Sliding& sl : p.sliding) {
+    double N = sl.normal.c;
+    for (int c = 0; c < kUnknowns; ++c) N += sl.normal.a[c] * z[c];
+    out.push_back(N * p.weight);
+  }
+  return out;
+}
 
 int LimitLp::clp_fallbacks() const { return impl_->fallbacks; }
 

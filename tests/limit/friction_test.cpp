@@ -1,0 +1,183 @@
+// Friction in the limit analysis (LimitOptions::friction, friction_model): the associative factor bounds
+// the non-associative one from above (every state the iteration converges to lies inside the cones); the
+// non-associative state is the iteration's fixed point, with its sliding joints on their cones; a
+// generous coefficient changes nothing, to the bit; where no joint slides the models agree; a vanishing
+// coefficient forbids the arch without a number.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "limit/limit_internal.hpp"
+#include "ogive/geometry/curve_families.hpp"
+#include "ogive/limit/limit.hpp"
+#include "support/scenes.hpp"
+#include "support/tolerances.hpp"
+
+using namespace ogive;
+
+namespace {
+
+// The iteration stops when the normal forces move by 1e-10 of the loads (limit.cpp): the state's
+// friction rows hold the previous iterate's N, so its |T| exceeds friction N by at most that, and the
+// load factor moves by as little; the LP's rows hold to 1e-11 of the load.
+constexpr double kIterationTolerance = 1e-8;
+// The factor of a fixed point re-solved from its own normal forces: the same vertex, to the LP's
+// round-off (and the iteration's last step).
+constexpr double kFixedPoint = 1e-7;
+
+// A flat segmental arch (rise L/10, t = L/20: the flat arches of bridges and floors) with a point load
+// near the springing, where sliding at the joints near the load competes with the hinges.
+Scene flat_segmental(double at) {
+  Scene s = paper_scene(0.0, 0.05);  // the paper's material (travertine)
+  s.curve = make_segmental(10.0, 0.1);
+  s.thickness = 0.5;
+  s.loads.points.push_back({5e4, at});
+  return s;
+}
+
+LimitOptions with_friction(double mu, FrictionModel model) {
+  LimitOptions o;
+  o.friction = mu;
+  o.friction_model = model;
+  return o;
+}
+LimitOptions with_friction(double mu, FrictionModel model, JointOrientation joints) {
+  LimitOptions o = with_friction(mu, model);
+  o.joints = joints;
+  return o;
+}
+
+// Each joint's normal force N (compression positive) and shear T of a state of the ring under vertical
+// loads, from the statics of the part left of the joint (independent of the LP's rows): F_j = (H,
+// V_left - the loads of voussoirs 0 .. j-1, the live ones times the state's factor).
+struct JointForce {
+  double N = 0, T = 0;
+};
+std::vector<JointForce> joint_forces(const Ring& ring, const ThrustState& st) {
+  std::vector<JointForce> out;
+  double below = 0;  // the loads left of the joint, downward
+  for (std::size_t j = 0; j < ring.joints.size(); ++j) {
+    if (j > 0) {
+      const Voussoir& v = ring.voussoirs[j - 1];
+      below += v.dead().force + st.load_factor * v.live.force;
+    }
+    const Eigen::Vector2d F(st.H, st.V_left - below);
+    const Eigen::Vector2d d = (ring.joints[j].extrados - ring.joints[j].intrados).normalized();
+    const Eigen::Vector2d n(d.y(), -d.x());
+    out.push_back({F.dot(n), F.dot(d)});
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("limit: friction: a generous coefficient gives the frictionless numbers to the bit, in both models") {
+  const Scene scene = flat_segmental(0.2);
+  const LimitResult none = analyse_limit(scene, LimitOptions{});
+  REQUIRE(none.status == LimitStatus::success);
+  for (FrictionModel model : {FrictionModel::associative, FrictionModel::non_associative}) {
+    CAPTURE(to_string(model));
+    const LimitResult rough = analyse_limit(scene, with_friction(10.0, model));
+    REQUIRE(rough.status == LimitStatus::success);
+    CHECK(rough.load_factor() == none.load_factor());
+    CHECK(rough.load_factor_mechanism == none.load_factor_mechanism);
+    CHECK(rough.H_min() == none.H_min());
+    CHECK(rough.H_max() == none.H_max());
+    CHECK(rough.thickness_min == none.thickness_min);
+  }
+}
+
+// A thick segmental arch (rise L/4, t = 0.15 L) with vertical joints, whose joints near the springings lie
+// nearly along the thrust, and a point load at 0.15 L.
+Scene thick_vertical_joints() {
+  Scene s = paper_scene(0.0, 0.15);
+  s.curve = make_segmental(10.0, 0.25);
+  s.thickness = 1.5;
+  s.loads.points.push_back({5e4, 0.15});
+  return s;
+}
+
+TEST_CASE("limit: friction: where no joint slides, or slides with its normal force fixed, the models agree") {
+  const Scene scene = flat_segmental(0.1);
+  // Friction 0.5 and 0.7: the associative optimum has no joint on its cone, a mechanism of hinges only:
+  // the same bits.
+  for (double mu : {0.5, 0.7}) {
+    CAPTURE(mu);
+    const LimitResult a = analyse_limit(scene, with_friction(mu, FrictionModel::associative));
+    const LimitResult n = analyse_limit(scene, with_friction(mu, FrictionModel::non_associative));
+    REQUIRE(n.status == LimitStatus::success);
+    CHECK(n.load_factor() == a.load_factor());
+  }
+  // Friction 0.3: joints slide at collapse, but the associative state is already the fixed point.
+  const LimitResult a = analyse_limit(scene, with_friction(0.3, FrictionModel::associative));
+  const LimitResult n = analyse_limit(scene, with_friction(0.3, FrictionModel::non_associative));
+  REQUIRE(n.status == LimitStatus::success);
+  CHECK(close(n.load_factor(), a.load_factor(), kIterationTolerance));
+}
+
+TEST_CASE("limit: friction: the non-associative factor is at most the associative one, below it where joints slide") {
+  // Measured: associative 7.49, 9.90 and 16.8, non-associative 2.22, 2.42 and 2.69 (docs/limit-analysis.md).
+  for (double mu : {0.65, 0.7, 0.8}) {
+    CAPTURE(mu);
+    const Scene scene = thick_vertical_joints();
+    const LimitResult a = analyse_limit(scene, with_friction(mu, FrictionModel::associative, JointOrientation::vertical));
+    const LimitResult n =
+        analyse_limit(scene, with_friction(mu, FrictionModel::non_associative, JointOrientation::vertical));
+    REQUIRE(a.status == LimitStatus::success);
+    REQUIRE(n.status == LimitStatus::success);
+    REQUIRE(std::isfinite(n.load_factor()));
+    // The non-associative state lies inside the cones: the associative program's optimum bounds it.
+    // Here the associative factor is more than twice the non-associative one (its dilatancy wedges the
+    // voussoirs apart against rigid springings).
+    CHECK(n.load_factor() < 0.5 * a.load_factor());
+    // The thrust range is that of the states inside the cones in both models (on rings refined next to
+    // different collapse hinges: the same to the convergence in the joints).
+    CHECK(close(n.H_min(), a.H_min(), kLimitTolerance));
+    CHECK(close(n.H_max(), a.H_max(), kLimitTolerance));
+
+    // The converged state, by the statics of each joint: inside every cone, and on it at some joint
+    // (it slides there; a state off every cone would be the associative optimum, hinging only).
+    const std::vector<JointForce> forces = joint_forces(n.ring, n.collapse_state);
+    const double scale = n.ring.total_dead() + n.load_factor() * n.ring.total_live();
+    double worst = -1, closest = 1;
+    for (const JointForce& f : forces) {
+      CHECK(f.N > -kIterationTolerance * scale);
+      worst = std::max(worst, (std::abs(f.T) - mu * f.N) / scale);
+      closest = std::min(closest, std::abs(std::abs(f.T) - mu * f.N) / scale);
+    }
+    CHECK(worst <= kIterationTolerance);
+    CHECK(closest <= kIterationTolerance);
+
+    // The fixed point: the program with every joint's sliding rows held at the state's own normal
+    // forces (|T_j| <= mu N_j, fixed numbers) has the same optimum.
+    limit_detail::LimitLp lp(n.ring, mu);
+    const limit_detail::LimitLp::Answer first = lp.collapse();
+    REQUIRE(first.outcome == limit_detail::LimitLp::Outcome::optimal);
+    CHECK(n.load_factor() <= first.load_factor * (1 + kIterationTolerance));
+    std::vector<double> held;
+    for (const JointForce& f : forces) held.push_back(f.N);
+    lp.hold_sliding(held);
+    const limit_detail::LimitLp::Answer again = lp.collapse();
+    REQUIRE(again.outcome == limit_detail::LimitLp::Outcome::optimal);
+    CHECK(close(again.load_factor, n.load_factor(), kFixedPoint));
+    // And back to the Coulomb rows, to the bit.
+    lp.hold_sliding({});
+    CHECK(lp.collapse().load_factor == first.load_factor);
+  }
+}
+
+TEST_CASE("limit: friction: a vanishing coefficient forbids the arch, without a number, in both models") {
+  for (double mu : {1e-3, 1e-9}) {
+    for (FrictionModel model : {FrictionModel::associative, FrictionModel::non_associative}) {
+      CAPTURE(mu);
+      CAPTURE(to_string(model));
+      const LimitResult r = analyse_limit(flat_segmental(0.1), with_friction(mu, model));
+      CHECK(r.status == LimitStatus::inadmissible);
+      CHECK(std::isnan(r.H_min()));
+      CHECK(std::isnan(r.load_factor()));
+      CHECK(!r.message.empty());
+    }
+  }
+}
