@@ -13,7 +13,10 @@
 namespace ogive {
 namespace {
 
+using limit_detail::fails_virtual_work;
+using limit_detail::inadmissible_message;
 using limit_detail::LimitLp;
+using limit_detail::require_loaded;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -102,123 +105,6 @@ LimitLp::Answer solve_warm(LimitLp& lp, std::vector<LimitLp::RowKey>& keys, Solv
   LimitLp::Answer a = solve(warm.empty() ? nullptr : &warm);
   keys = lp.keys(a.basis);
   return a;
-}
-
-// Non-associative friction (Gilbert, Casapulla & Ahmed 2006): the iterations at the most, the change of
-// the normal forces (relative to the ring's loads, dead plus live at the factor found) at which they have
-// converged, and the under-relaxation's floor.
-constexpr int kMaxSlidingIterations = 4000;
-constexpr double kSlidingTolerance = 1e-10;
-constexpr double kSlidingRelaxationFloor = 1.0 / 64;
-// The shortest step tried towards held forces with no state before giving up.
-constexpr double kSlidingRetryFloor = 1e-6;
-
-// The factor a hair below the optimum at which the iteration looks for the optimal state nearest the
-// held normal forces (at the optimum itself the set can be empty by round-off).
-constexpr double kBelowOptimum = 1e-10;
-
-// Of the states at `a`'s factor (times 1 - kBelowOptimum) between the least and the largest thrust, the
-// one whose normal forces are nearest `held` (least squares); `a` itself when those programs fail.
-LimitLp::Answer nearest_optimal_state(LimitLp& lp, const LimitLp::Answer& a, const std::vector<double>& held) {
-  const double factor = a.load_factor * (1 - kBelowOptimum);
-  const LimitLp::Answer lo = lp.extreme_thrust(factor, false), hi = lp.extreme_thrust(factor, true);
-  if (lo.outcome != LimitLp::Outcome::optimal || hi.outcome != LimitLp::Outcome::optimal) return a;
-  const std::vector<double> N_lo = lp.normal_forces(lo), N_hi = lp.normal_forces(hi);
-  double num = 0, den = 0;
-  for (std::size_t j = 0; j < held.size(); ++j) {
-    const double d = N_hi[j] - N_lo[j];
-    num += d * (held[j] - N_lo[j]);
-    den += d * d;
-  }
-  const double theta = den > 0 ? std::clamp(num / den, 0.0, 1.0) : 0.0;
-  LimitLp::Answer out = lo;
-  out.H = lo.H + theta * (hi.H - lo.H);
-  out.V = lo.V + theta * (hi.V - lo.V);
-  out.M = lo.M + theta * (hi.M - lo.M);
-  out.load_factor = factor;
-  out.basis = a.basis;
-  return out;
-}
-
-// The outcome of the non-associative iteration: the last answer, and why it did not converge (empty:
-// it did).
-struct SlidingIteration {
-  LimitLp::Answer answer;
-  std::string failure;
-  int iterations = 0;
-};
-
-// The program `solve` (lp's collapse, say) with non-associative friction, from `first`, its optimum with
-// the Coulomb rows (the associative answer). Each iteration holds every joint's friction rows at the
-// normal forces N_prev of the previous state (|T| <= friction N_prev: fixed numbers), re-solves, and moves
-// N_prev towards the new normal forces, by a step halved whenever the change fails to shrink by a tenth
-// (the iteration can oscillate between two mechanisms). At the fixed point the state lies inside every
-// Coulomb cone (N = N_prev) and its mechanism, the normality of fixed-N rows, slides without opening.
-// `load_scale`: the live load's magnitude at factor 1 (added to the dead loads times the factor found).
-template <class Solve>
-SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptions& options,
-                                 const LimitLp::Answer& first, double load_scale, Solve&& solve) {
-  SlidingIteration out{first, {}, 0};
-  if (!(options.friction > 0) || options.friction_model != FrictionModel::non_associative ||
-      first.outcome != LimitLp::Outcome::optimal || !lp.slides(first.basis))
-    return out;  // no joint on its cone in the optimum's basis: its mechanism only hinges (no dilatancy)
-  std::vector<double> held = lp.normal_forces(first);
-  // The last held forces with a state (the first: the associative optimum is one), and the state's own.
-  std::vector<double> good = held, good_N = held;
-  double step = 1.0, previous = std::numeric_limits<double>::infinity();
-  std::vector<int> basis = first.basis;
-  for (int it = 1; it <= kMaxSlidingIterations; ++it) {
-    out.iterations = it;
-    lp.hold_sliding(held);
-    LimitLp::Answer a = solve(basis.empty() ? nullptr : &basis);
-    if (a.outcome == LimitLp::Outcome::infeasible && step > kSlidingRetryFloor) {
-      // Held forces with no state: a shorter step from the last ones that had one. (The held forces
-      // with a state are a convex set: the average of two states is one of the average forces.)
-      step *= 0.5;
-      for (std::size_t j = 0; j < held.size(); ++j) held[j] = good[j] + step * (good_N[j] - good[j]);
-      continue;
-    }
-    if (a.outcome != LimitLp::Outcome::optimal) {
-      lp.hold_sliding({});
-      out.answer = LimitLp::Answer{};
-      out.failure = fmt::format("no state with the joints' normal forces held at iteration {} ({})", it,
-                                a.outcome == LimitLp::Outcome::infeasible ? "infeasible"
-                                : a.outcome == LimitLp::Outcome::unbounded ? "unbounded"
-                                                                           : (a.failure ? a.failure : "LP failure"));
-      return out;
-    }
-    // The program's optimum is a vertex, whose normal forces jump from one to the next (H and the
-    // reactions are free of the held rows): of the optimal states along the thrust (the least and the
-    // largest H at the factor found, a hair below it), take the one whose normal forces are nearest the
-    // held ones, so that a state with N = held, where one exists, ends the iteration.
-    a = nearest_optimal_state(lp, a, held);
-    const std::vector<double> N = lp.normal_forces(a);
-    const double scale = std::abs(ring.total_dead()) + std::abs(a.load_factor) * load_scale;
-    double change = 0;
-    for (std::size_t j = 0; j < N.size(); ++j) change = std::max(change, std::abs(N[j] - held[j]));
-    change /= scale > 0 ? scale : 1.0;
-    basis = a.basis;
-    out.answer = std::move(a);
-    if (change <= kSlidingTolerance) {
-      lp.hold_sliding({});
-      return out;
-    }
-    if (!(change < 0.9 * previous)) step = std::max(0.5 * step, kSlidingRelaxationFloor);
-    previous = change;
-    // The same state as the last iteration's (its vertex settled): the relaxed steps would only creep
-    // towards its normal forces; hold them at once.
-    double moved = 0;
-    for (std::size_t j = 0; j < N.size() && !good_N.empty(); ++j) moved = std::max(moved, std::abs(N[j] - good_N[j]));
-    const bool settled = it > 1 && moved <= kSlidingTolerance * (scale > 0 ? scale : 1.0);
-    good = held;
-    good_N = N;
-    for (std::size_t j = 0; j < N.size(); ++j) held[j] = settled ? N[j] : held[j] + step * (N[j] - held[j]);
-  }
-  lp.hold_sliding({});
-  out.answer = LimitLp::Answer{};
-  out.failure = fmt::format("the normal forces still moved by {:.3g} of the loads after {} iterations", previous,
-                            kMaxSlidingIterations);
-  return out;
 }
 
 // The programs of `ring` in work's storage.
@@ -322,14 +208,6 @@ double thinnest(MarginFunction& f, double lo, double f_lo, double hi, double f_h
 }
 
 }  // namespace
-
-const char* to_string(FrictionModel f) {
-  switch (f) {
-    case FrictionModel::associative: return "associative";
-    case FrictionModel::non_associative: return "non_associative";
-  }
-  return "unknown";
-}
 
 const char* to_string(LimitStatus s) {
   switch (s) {
@@ -476,8 +354,8 @@ bool horizontal_collapse(const Ring& ring, const LimitOptions& options, Work& wo
   const int solves_before = lp.solves();
   LimitLp::Answer c = solve_warm(lp, work.horizontal_basis, [&](const std::vector<int>* w) { return lp.collapse(w); });
   // The horizontal load of the dead loads at a_c (what the iteration's tolerance is relative to).
-  const SlidingIteration sliding =
-      non_associative(lp, ring, options, c, std::abs(ring.total_dead()), [&](const std::vector<int>* w) { return lp.collapse(w); });
+  const limit_detail::SlidingIteration sliding =
+      limit_detail::non_associative(lp, ring, options, c, std::abs(ring.total_dead()), [&](const std::vector<int>* w) { return lp.collapse(w); });
   lp_solves += lp.solves() - solves_before;
   if (!sliding.failure.empty()) {
     r.sliding_failure = sliding.failure;
@@ -497,63 +375,27 @@ bool horizontal_collapse(const Ring& ring, const LimitOptions& options, Work& wo
   return true;
 }
 
-// Throws std::invalid_argument when nothing loads the ring. Scene::validate lets density 0 pass with a
-// fill; a fill whose level lies below the extrados over the whole span (it meets the extrados beyond the
-// springing's vertical) loads nothing, and a ring that carries nothing has no thrust, no thinnest
-// thickness and no mechanism to find. A fill that reaches the extrados over any part of the span is a
-// scene: the unloaded voussoirs carry its thrust.
-//
-// Loads so small that the squares of the forces underflow (below about 1e-154 N/m; kSmallestLoads leaves
-// room for the moments and sums) would make every joint look forceless and every thrust line admissible
-// or none: refused too. The analysis is homogeneous in the loads, so such a scene is the same arch as
-// one with its loads in ordinary units.
-constexpr double kSmallestLoads = 1e-100;  // N/m, the ring's total load
-
-void require_loaded(const Scene& scene, const Ring& ring) {
-  const double total = std::abs(ring.total_dead()) + std::abs(ring.total_live());
-  if (total != 0.0 && total < kSmallestLoads)
-    throw std::invalid_argument(fmt::format(
-        "density, fill_density: the ring's loads total {:.3g} N/m, below {:g} N/m, too small for the arithmetic of "
-        "rigid voussoirs (their squares underflow); the analysis is the same at any scale: give the loads in N",
-        total, kSmallestLoads));
-  if (ring.total_dead() != 0.0 || ring.has_live_load()) return;
-  double level = 0;
-  for (const FillLoad& fill : scene.loads.fills)
-    if (fill.density > 0) level = std::max(level, fill.height_ratio);
-  if (!(level > 0))
-    throw std::invalid_argument("density, fill_density: with no self-weight and no fill's weight (both 0) and no "
-                                "point or live load the ring carries nothing: nothing to analyse");
-  throw std::invalid_argument(fmt::format(
-      "fill_height_ratio: the fill's level ({} of the span) lies below the arch's extrados over the whole span, "
-      "so the fill loads nothing, and with density 0 the ring has no weight: nothing to analyse",
-      level));
+// Why a collapse load factor has no kinematic one to check it against.
+std::string no_mechanism_note(const LimitResult& r, const LimitOptions& options) {
+  if (r.collapse_state.hinges.size() > kMaxMechanismHinges)
+    return fmt::format("the collapse state touches {} joints: the mechanism check takes at most {} hinges "
+                       "(a run of consecutive ones counting as three)",
+                       r.collapse_state.hinges.size(), kMaxMechanismHinges);
+  return options.friction > 0 ? "no rotational mechanism through the collapse hinges: joints slide at collapse"
+                              : "no one-degree rotational mechanism through the collapse hinges";
 }
 
-// Makes r an lp_failure, and says why, when the static multiplier of a collapse and the kinematic one of
-// its hinges disagree (neither absent); true then. The two are the same number computed twice (the
-// thrust line passes through the mechanism's hinges, so the virtual work of its loads vanishes at the
-// static multiplier): a difference says that the program's answer is off by as much.
-bool fails_virtual_work(LimitResult& r, const char* what, double static_factor, double kinematic_factor) {
-  if (std::isnan(static_factor) || std::isnan(kinematic_factor)) return false;
-  const double scale = std::max(std::abs(static_factor), std::abs(kinematic_factor));
-  if (std::abs(static_factor - kinematic_factor) <= kStaticKinematicTolerance * scale) return false;
-  const std::string why = fmt::format("the {} of the linear program ({:.6g}) and the virtual work of its mechanism "
-                                      "({:.6g}) disagree: the program's answer is not to be trusted",
-                                      what, static_factor, kinematic_factor);
-  r.status = LimitStatus::lp_failure;
-  r.message = r.message.empty() ? why : why + "; " + r.message;
-  return true;
-}
-
-// Why no thrust line stands: where it would have to fit, and whether a thicker arch would stand (t_min
-// below `t_cap`).
-std::string inadmissible_message(const LimitOptions& options, double t_min, double t_cap) {
-  std::string where = options.friction > 0 ? "inside the arch and its joints' friction cones" : "inside the arch";
-  if (std::isfinite(options.compressive_strength))
-    where += fmt::format(" clear of the stress blocks that crush its joints (compressive strength {:g} Pa)",
-                         options.compressive_strength);
-  return std::isnan(t_min) ? fmt::format("no thrust line fits {} at any thickness up to {} m", where, t_cap)
-                           : fmt::format("no thrust line fits {}: t < t_min", where);
+// The collapse load factor's program, by the friction model: with `failure` (then no answer: the
+// outcome infeasible) when the non-associative iteration did not converge.
+LimitLp::Answer collapse_answer(LimitLp& lp, const Ring& ring, const LimitOptions& options, Work& work,
+                                std::string& failure) {
+  auto collapse = [&](const std::vector<int>* w) { return lp.collapse(w); };
+  const LimitLp::Answer c = solve_warm(lp, work.collapse_basis, collapse);
+  limit_detail::SlidingIteration sliding =
+      limit_detail::non_associative(lp, ring, options, c, std::abs(ring.total_live()), collapse);
+  failure = sliding.failure;
+  if (!failure.empty()) sliding.answer.outcome = LimitLp::Outcome::infeasible;
+  return sliding.answer;
 }
 
 // One analysis on the ring whose joints are `refined` and the loads' (fractions_at), and where the next
@@ -584,8 +426,9 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
     r.lp_solves += lp.solves() - solves_before;
     return round;
   };
-  const double f_c = options.compressive_strength;
-  auto state = [&](const LimitLp::Answer& a) { return thrust_state(ring, a.H, a.V, a.M, a.load_factor, 1e-9, f_c); };
+  auto state = [&](const LimitLp::Answer& a) {
+    return thrust_state(ring, a.H, a.V, a.M, a.load_factor, 1e-9, options.compressive_strength);
+  };
 
   using Warm = const std::vector<int>*;
   LimitLp::Answer margin = solve_warm(lp, work.margin_basis, [&](Warm w) { return lp.margin(load_factor, w); });
@@ -614,14 +457,8 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   limit_detail::LeastMechanism mechanism;
   std::string sliding_failure;  // the non-associative iteration's of the collapse load factor
   if (live) {
-    LimitLp::Answer c = solve_warm(lp, work.collapse_basis, [&](Warm w) { return lp.collapse(w); });
-    const SlidingIteration sliding =
-        non_associative(lp, ring, options, c, std::abs(ring.total_live()), [&](Warm w) { return lp.collapse(w); });
-    sliding_failure = sliding.failure;
-    if (sliding_failure.empty()) c = sliding.answer;
-    if (!sliding_failure.empty()) {
-      // No load factor: the collapse state stays absent.
-    } else if (c.outcome == LimitLp::Outcome::optimal) {
+    const LimitLp::Answer c = collapse_answer(lp, ring, options, work, sliding_failure);
+    if (c.outcome == LimitLp::Outcome::optimal) {
       r.collapse_state = state(c);
       mechanism = limit_detail::least_mechanism(ring, r.collapse_state.hinges, limit_detail::LiveKind::vertical);
       r.load_factor_mechanism = mechanism.factor;
@@ -677,22 +514,13 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   if (forceless)
     note("the thrust vanishes at some joints (voussoirs without weight or load between loaded ones): no margin "
          "there to search t_min by, and no hinge");
-  if (!sliding_failure.empty()) {
-    r.status = LimitStatus::not_converged;
-    note("the non-associative friction iteration of the collapse load factor did not converge: " + sliding_failure);
-  }
+  if (!sliding_failure.empty()) r.status = LimitStatus::not_converged;
   if (unbounded_thrust) note("no largest thrust: a thrust line of any H fits inside the arch (H_max absent)");
-  if (live && std::isnan(r.load_factor()) && sliding_failure.empty())
-    note("the live load cannot turn the arch into a mechanism (no finite load factor)");
-  if (!std::isnan(r.load_factor()) && std::isnan(r.load_factor_mechanism)) {
-    if (r.collapse_state.hinges.size() > kMaxMechanismHinges)
-      note(fmt::format("the collapse state touches {} joints: the mechanism check takes at most {} hinges "
-                       "(a run of consecutive ones counting as three)",
-                       r.collapse_state.hinges.size(), kMaxMechanismHinges));
-    else
-      note(options.friction > 0 ? "no rotational mechanism through the collapse hinges: joints slide at collapse"
-                                : "no one-degree rotational mechanism through the collapse hinges");
-  }
+  if (live && std::isnan(r.load_factor()))
+    note(sliding_failure.empty() ? "the live load cannot turn the arch into a mechanism (no finite load factor)"
+                                 : "the non-associative friction iteration of the collapse load factor did not "
+                                   "converge: " + sliding_failure);
+  if (!std::isnan(r.load_factor()) && std::isnan(r.load_factor_mechanism)) note(no_mechanism_note(r, options));
   return round;
 }
 

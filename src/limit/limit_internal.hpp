@@ -3,8 +3,10 @@
 #pragma once
 
 #include <compare>
+#include <functional>
 #include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "ogive/limit/limit.hpp"
@@ -182,5 +184,33 @@ class LimitLp {
   std::unique_ptr<LpWorkspace> own_workspace_;
   int solves_ = 0;
 };
+
+// The outcome of the non-associative iteration: the last answer, and why it did not converge (empty:
+// it did).
+struct SlidingIteration {
+  LimitLp::Answer answer;
+  std::string failure;
+  int iterations = 0;
+};
+// A program of lp solved from an optimal basis to start from (nullptr: none).
+using SolveWarm = std::function<LimitLp::Answer(const std::vector<int>*)>;
+// The program `solve` (lp's collapse, say) with non-associative friction, from `first`, its optimum with
+// the Coulomb rows (the associative answer). Each iteration holds every joint's friction rows at the
+// normal forces N_prev of the previous state (|T| <= friction N_prev: fixed numbers), re-solves, and moves
+// N_prev towards the new normal forces, by a step halved whenever the change fails to shrink by a tenth
+// (the iteration can oscillate between two mechanisms). At the fixed point the state lies inside every
+// Coulomb cone (N = N_prev) and its mechanism, the normality of fixed-N rows, slides without opening.
+// `load_scale`: the live load's magnitude at factor 1 (added to the dead loads times the factor found).
+SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptions& options,
+                                 const LimitLp::Answer& first, double load_scale, const SolveWarm& solve);
+
+// The analysis's checks (limit_checks.cpp). Throws std::invalid_argument naming the field when nothing
+// (or next to nothing) loads the ring.
+void require_loaded(const Scene& scene, const Ring& ring);
+// Makes r an lp_failure, and says why, when the static multiplier of a collapse and the kinematic one of
+// its hinges disagree beyond kStaticKinematicTolerance (neither absent); true then.
+bool fails_virtual_work(LimitResult& r, const char* what, double static_factor, double kinematic_factor);
+// Why no thrust line stands, and whether a thicker arch would (t_min below t_cap).
+std::string inadmissible_message(const LimitOptions& options, double t_min, double t_cap);
 
 }  // namespace ogive::limit_detail

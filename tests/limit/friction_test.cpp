@@ -9,6 +9,8 @@
 #include <cmath>
 #include <vector>
 
+#include <Eigen/LU>
+
 #include "limit/limit_internal.hpp"
 #include "ogive/geometry/curve_families.hpp"
 #include "ogive/limit/limit.hpp"
@@ -165,6 +167,97 @@ TEST_CASE("limit: friction: the non-associative factor is at most the associativ
     // And back to the Coulomb rows, to the bit.
     lp.hold_sliding({});
     CHECK(lp.collapse().load_factor == first.load_factor);
+  }
+}
+
+namespace {
+
+// The three-pinned arch is statically determinate: its reactions follow from the three pins at each load
+// factor, so the largest factor whose state lies inside every joint and every cone is found by statics
+// alone, in both models (a state unique at each factor is the collapse state whatever the flow rule).
+// The left part of joint j: the support's force R = (H, V) and moment M about the origin, and the loads
+// of voussoirs 0 .. j-1 (downward W at x: moment -x W); across joint j it passes F_j = R + loads with
+// moment m_j about the origin, which crosses the joint at Q where Q x F_j = m_j.
+struct Statics {
+  const Ring& ring;
+  Eigen::Vector3d at0, per_factor;  // (H, V, M) at factor 0, and per unit factor
+
+  explicit Statics(const Ring& r) : ring(r) {
+    Eigen::Matrix3d A;
+    Eigen::Vector3d b0, b1;
+    for (int i = 0; i < 3; ++i) {
+      const int j = ring.pins[static_cast<std::size_t>(i)];
+      const Eigen::Vector2d P = ring.joints[static_cast<std::size_t>(j)].axis;
+      // P x (H, V - D - f L) = M - (MD + f ML): P.x (V - D - f L) - P.y H - M = -(MD + f ML).
+      double D = 0, MD = 0, L = 0, ML = 0;
+      for (int k = 0; k < j; ++k) {
+        const Voussoir& v = ring.voussoirs[static_cast<std::size_t>(k)];
+        D += v.dead().force, MD += v.dead().moment, L += v.live.force, ML += v.live.moment;
+      }
+      A.row(i) << -P.y(), P.x(), -1.0;
+      b0(i) = P.x() * D - MD;
+      b1(i) = P.x() * L - ML;
+    }
+    const Eigen::FullPivLU<Eigen::Matrix3d> lu(A);
+    at0 = lu.solve(b0);
+    per_factor = lu.solve(b1);
+  }
+  // Whether the state at factor f lies inside every joint (its crossing between the faces, compressed)
+  // and every cone |T| <= mu N.
+  bool admissible(double f, double mu) const {
+    const Eigen::Vector3d x = at0 + f * per_factor;
+    double D = 0, MD = 0;
+    for (std::size_t j = 0; j < ring.joints.size(); ++j) {
+      if (j > 0) {
+        const Voussoir& v = ring.voussoirs[j - 1];
+        D += v.dead().force + f * v.live.force;
+        MD += v.dead().moment + f * v.live.moment;
+      }
+      const Eigen::Vector2d F(x(0), x(1) - D);
+      const double m = x(2) - MD;
+      const Joint& joint = ring.joints[j];
+      const Eigen::Vector2d e = joint.extrados - joint.intrados;
+      auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); };
+      const double s = (m - cross(joint.intrados, F)) / cross(e, F);
+      const Eigen::Vector2d d = e.normalized(), n(d.y(), -d.x());
+      const double N = F.dot(n), T = F.dot(d);
+      if (!(N > 0) || s < 0 || s > 1 || std::abs(T) > mu * N) return false;
+    }
+    return true;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("limit: friction: the three-pinned arch's load factor by statics, where a joint slides, in both models") {
+  Scene scene = paper_scene(0.0, 0.1);
+  scene.curve = make_segmental(10.0, 0.25);
+  scene.left.kind = scene.right.kind = SupportKind::pinned;
+  scene.crown_hinge = true;
+  scene.loads.points.push_back({5e4, 0.3});
+  for (double mu : {0.2, 0.3}) {
+    for (FrictionModel model : {FrictionModel::associative, FrictionModel::non_associative}) {
+      CAPTURE(mu);
+      CAPTURE(to_string(model));
+      const LimitResult r = analyse_limit(scene, with_friction(mu, model));
+      REQUIRE(r.status == LimitStatus::success);
+      REQUIRE(r.ring.pins.size() == 3);
+      // Bisection on the statics of the result's ring: stands at 0, not at twice the factor found.
+      const Statics statics(r.ring);
+      double lo = 0, hi = 2 * r.load_factor();
+      REQUIRE(statics.admissible(lo, mu));
+      REQUIRE(!statics.admissible(hi, mu));
+      while (hi - lo > 1e-13 * hi) {
+        const double mid = 0.5 * (lo + hi);
+        (statics.admissible(mid, mu) ? lo : hi) = mid;
+      }
+      // The programs' rows hold to 1e-11 of the load, the iteration to 1e-10 of it.
+      CHECK(close(r.load_factor(), lo, kIterationTolerance));
+      // A joint slides there: friction, not a fourth hinge, limits the factor (without friction the
+      // three-pinned arch carries more).
+      CHECK(statics.admissible(r.load_factor() * (1 - 1e-6), 10.0));
+      CHECK(statics.admissible(r.load_factor() * (1 + 1e-6), 10.0));
+    }
   }
 }
 
