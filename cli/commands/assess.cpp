@@ -77,7 +77,7 @@ AssessmentOptions assessment_options(const AssessText& t, const CLI::App& cmd) {
   if (given(cmd, "--friction") && !(t.friction > 0))
     throw UsageError(fmt::format("--friction: must be > 0 (omit it for no sliding check), got {}", t.friction));
   o.limit.friction = t.friction;
-  o.limit.friction_model = friction_model_of(t.friction_model);
+  o.limit.friction_model = friction_model_of(t.friction_model, cmd);
   o.limit.compressive_strength = compressive_strength_of(t.compressive_strength, cmd);
   std::string why;
   if (!o.is_valid(&why)) throw UsageError(as_option_message(why));

@@ -112,7 +112,7 @@ std::vector<LimitOptions> limit_options(const LimitText& t, const CLI::App& cmd)
   if (given(cmd, "--friction") && !(t.friction > 0))
     throw UsageError(fmt::format("--friction: must be > 0 (omit it for no sliding check), got {}", t.friction));
   o.friction = t.friction;
-  o.friction_model = friction_model_of(t.friction_model);
+  o.friction_model = friction_model_of(t.friction_model, cmd);
   o.compressive_strength = compressive_strength_of(t.compressive_strength, cmd);
   // The loads are the scene's (--point-load, --live-load, --fill-density, --loads-file) and so are the
   // pins (--supports pinned, --crown-hinge); the rest of the scene options does not enter rigid voussoirs.

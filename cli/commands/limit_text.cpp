@@ -45,7 +45,9 @@ void add_friction_model_option(CLI::App& cmd, std::string& text) {
       ->capture_default_str();
 }
 
-FrictionModel friction_model_of(const std::string& text) {
+FrictionModel friction_model_of(const std::string& text, const CLI::App& cmd) {
+  if (given(cmd, "--friction-model") && !given(cmd, "--friction"))
+    throw UsageError("--friction-model: applies with --friction only (without it the joints do not slide)");
   static const std::map<std::string, FrictionModel> names = {{"associative", FrictionModel::associative},
                                                              {"non-associative", FrictionModel::non_associative}};
   return lookup(names, text, "--friction-model");
