@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include <Eigen/LU>
@@ -288,6 +289,26 @@ TEST_CASE("limit: friction: the three-pinned arch's load factor by statics, wher
       CHECK(statics.admissible(r.load_factor() * (1 + 1e-6), 10.0));
     }
   }
+}
+
+TEST_CASE("limit: friction: a_c by the non-associative iteration is a converged number or none, never a guess") {
+  // The thick segmental arch with vertical joints under a horizontal acceleration (friction 0.7): the
+  // associative a_c is 1.65; the iteration's held normal forces can run out of states.
+  LimitOptions o = with_friction(0.7, FrictionModel::non_associative, JointOrientation::vertical);
+  o.horizontal_load_factor = true;
+  const LimitResult n = analyse_limit(thick_vertical_joints(), o);
+  o.friction_model = FrictionModel::associative;
+  const LimitResult a = analyse_limit(thick_vertical_joints(), o);
+  REQUIRE(std::isfinite(a.horizontal_load_factor()));
+  if (std::isnan(n.horizontal_load_factor())) {
+    CHECK(n.status == LimitStatus::not_converged);
+    CHECK(n.message.find("non-associative friction iteration of the collapse acceleration did not converge") !=
+          std::string::npos);
+  } else {
+    CHECK(n.horizontal_load_factor() <= a.horizontal_load_factor() * (1 + kIterationTolerance));
+  }
+  // The load factor converged either way (its own iteration).
+  CHECK(std::isfinite(n.load_factor()));
 }
 
 TEST_CASE("limit: friction: a vanishing coefficient forbids the arch, without a number, in both models") {
