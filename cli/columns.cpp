@@ -157,6 +157,7 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"weight", "", "limit, spread: voussoir (each voussoir's weight at its centroid) or axis (rho g t per axis length)"},
     {"joints_count", "", "limit, spread: joints springing to springing, both included"},
     {"friction", "", "limit, spread: friction coefficient of the joints; empty: no sliding check"},
+    {"friction_model", "", "limit, assess: the sliding's flow rule with friction, non-associative or associative; empty: no sliding check"},
     {"compressive_strength", "Pa", "limit, spread, assess: the masonry's compressive strength f_c (kPa with --units kN, as the stresses); empty: infinite (no crushing)"},
     {"H_min", "N/m", "limit: minimum horizontal thrust of an admissible state"},
     {"H_max", "N/m", "limit: maximum horizontal thrust of an admissible state"},

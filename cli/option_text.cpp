@@ -62,6 +62,7 @@ constexpr std::pair<std::string_view, std::string_view> kFieldOptions[] = {
     {"right_wall_top_load_at", "--right-wall-top-load-at"},
     {"joints_count", "--joints-count"},
     {"friction", "--friction"},
+    {"friction_model", "--friction-model"},
     {"compressive_strength", "--compressive-strength"},
     {"rtol", "--rtol"},
     {"atol", "--atol"},

@@ -32,6 +32,7 @@ struct AssessText {
   std::string joints = "radial", weight = "voussoir";
   int joints_count = kDefaultJointsCount;
   double friction = 0;
+  std::string friction_model = "non-associative";
   std::string compressive_strength;
   int threads = 1;
 };
@@ -60,6 +61,7 @@ void add_rigid_block_options(CLI::App& cmd, AssessText& t) {
       ->capture_default_str();
   cmd.add_option("--friction", t.friction, "friction coefficient of the joints (> 0): adds the sliding check")
       ->check(finite_number());
+  add_friction_model_option(cmd, t.friction_model);
   add_compressive_strength_option(cmd, t.compressive_strength,
                                   "the rigid voussoirs' joints crush (the geometric and load factors, a_c); omitted: "
                                   "infinite strength");
@@ -75,6 +77,7 @@ AssessmentOptions assessment_options(const AssessText& t, const CLI::App& cmd) {
   if (given(cmd, "--friction") && !(t.friction > 0))
     throw UsageError(fmt::format("--friction: must be > 0 (omit it for no sliding check), got {}", t.friction));
   o.limit.friction = t.friction;
+  o.limit.friction_model = friction_model_of(t.friction_model, cmd);
   o.limit.compressive_strength = compressive_strength_of(t.compressive_strength, cmd);
   std::string why;
   if (!o.is_valid(&why)) throw UsageError(as_option_message(why));
@@ -86,8 +89,8 @@ constexpr const char* kCriterionColumns[] = {"geometric_safety_factor", "load_fa
                                              "spread_capacity_ratio", "max_thrust_eccentricity"};
 
 Columns assess_columns() {
-  std::vector<std::string> results = {"joints",  "weight",    "joints_count", "friction", "compressive_strength",
-                                      "verdict", "governing", "margin"};
+  std::vector<std::string> results = {"joints",  "weight",    "joints_count", "friction", "friction_model",
+                                      "compressive_strength", "verdict", "governing", "margin"};
   std::vector<std::string> defaults = {"verdict", "governing", "margin"};
   for (const char* c : kCriterionColumns)
     for (const std::string& name : {std::string(c), std::string(c) + "_required", std::string(c) + "_outcome"}) {
@@ -115,6 +118,7 @@ std::string assessment_row(const Columns& columns, const SceneParameters& p, con
   add_scene_columns(row, p, scene.curve.get());
   row.add(to_string(o.limit.joints)).add(to_string(o.limit.weight)).add(o.limit.joints_count);
   row.add(o.limit.friction > 0 ? o.limit.friction : std::numeric_limits<double>::quiet_NaN());
+  row.add(friction_model_text(o.limit));
   row.add(std::isfinite(o.limit.compressive_strength) ? o.limit.compressive_strength
                                                       : std::numeric_limits<double>::quiet_NaN());
   row.add(to_string(a.verdict)).add(to_string(a.governing)).add(a.margin);

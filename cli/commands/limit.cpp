@@ -48,6 +48,7 @@ struct LimitText {
   std::string joints = "radial", weight = "voussoir", thrust_line;
   int joints_count = kDefaultJointsCount;
   double friction = 0;
+  std::string friction_model = "non-associative";
   std::string compressive_strength;
   int repeats = 0;
   int threads = 1;
@@ -73,6 +74,7 @@ void add_analysis_options(CLI::App& cmd, LimitText& t) {
       ->capture_default_str();
   cmd.add_option("--friction", t.friction, "friction coefficient of the joints (> 0): adds the sliding check")
       ->check(finite_number());
+  add_friction_model_option(cmd, t.friction_model);
   add_compressive_strength_option(cmd, t.compressive_strength,
                                   "the joints crush (stress blocks at the hinges); omitted: infinite strength");
   cmd.add_option("--thrust-line", t.thrust_line, "instead of the summary, one row per joint of the min, max, collapse or horizontal (the acceleration a_c of collapse) state");
@@ -110,6 +112,7 @@ std::vector<LimitOptions> limit_options(const LimitText& t, const CLI::App& cmd)
   if (given(cmd, "--friction") && !(t.friction > 0))
     throw UsageError(fmt::format("--friction: must be > 0 (omit it for no sliding check), got {}", t.friction));
   o.friction = t.friction;
+  o.friction_model = friction_model_of(t.friction_model, cmd);
   o.compressive_strength = compressive_strength_of(t.compressive_strength, cmd);
   // The loads are the scene's (--point-load, --live-load, --fill-density, --loads-file) and so are the
   // pins (--supports pinned, --crown-hinge); the rest of the scene options does not enter rigid voussoirs.
@@ -140,13 +143,14 @@ std::vector<std::string> varying_setup(const LimitText& t) {
 void add_limit_setup(CsvRow& row, const LimitOptions& o) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   row.add(to_string(o.joints)).add(to_string(o.weight)).add(o.joints_count);
-  row.add(o.friction > 0 ? o.friction : nan);
+  row.add(o.friction > 0 ? o.friction : nan).add(friction_model_text(o));
   row.add(std::isfinite(o.compressive_strength) ? o.compressive_strength : nan);
 }
 
 // The columns of limit: a summary per scene, or (--thrust-line) one row per joint of one state.
 Columns limit_columns(bool lines, bool timed, bool walls) {
-  std::vector<std::string> results = {"joints", "weight", "joints_count", "friction", "compressive_strength"},
+  std::vector<std::string> results = {"joints",   "weight", "joints_count", "friction", "friction_model",
+                                      "compressive_strength"},
                            defaults;
   const std::vector<std::string> summary = {
       "status", "H_min", "H_max", "V", "H_min_over_V", "H_max_over_V", "thickness_min_ratio",

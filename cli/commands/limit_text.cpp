@@ -38,6 +38,26 @@ double compressive_strength_of(const std::string& text, const CLI::App& cmd) {
   return f_c;
 }
 
+void add_friction_model_option(CLI::App& cmd, std::string& text) {
+  cmd.add_option("--friction-model", text,
+                 "with --friction: non-associative (sliding without dilatancy, masonry: Gilbert et al.'s iteration) or "
+                 "associative (an upper bound of the non-associative load factor and a_c)")
+      ->capture_default_str();
+}
+
+FrictionModel friction_model_of(const std::string& text, const CLI::App& cmd) {
+  if (given(cmd, "--friction-model") && !given(cmd, "--friction"))
+    throw UsageError("--friction-model: applies with --friction only (without it the joints do not slide)");
+  static const std::map<std::string, FrictionModel> names = {{"associative", FrictionModel::associative},
+                                                             {"non-associative", FrictionModel::non_associative}};
+  return lookup(names, text, "--friction-model");
+}
+
+std::string friction_model_text(const LimitOptions& o) {
+  if (!(o.friction > 0)) return {};
+  return o.friction_model == FrictionModel::associative ? "associative" : "non-associative";
+}
+
 std::string hinge_text(const std::vector<Hinge>& hinges, double span, const Ring* ring) {
   std::string text;
   for (const Hinge& h : hinges) {

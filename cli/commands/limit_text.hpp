@@ -23,6 +23,12 @@ void add_compressive_strength_option(CLI::App& cmd, std::string& text, const cha
 // The strength in Pa: infinity when the option is not given (Heyman's infinite strength); UsageError
 // naming the option for a value that is not a finite number > 0.
 double compressive_strength_of(const std::string& text, const CLI::App& cmd);
+// --friction-model associative|non-associative (limit, assess): the sliding's flow rule with --friction.
+void add_friction_model_option(CLI::App& cmd, std::string& text);
+// The model named; UsageError naming the option for another name, or when given without --friction.
+FrictionModel friction_model_of(const std::string& text, const CLI::App& cmd);
+// The friction model's column: its name with friction, empty without (no sliding check).
+std::string friction_model_text(const LimitOptions& o);
 // A compressive stress (Pa) over f_c; NaN (an empty field) at infinite strength or without a stress.
 inline double stress_ratio(double stress, double compressive_strength) {
   return std::isfinite(compressive_strength) ? stress / compressive_strength : std::numeric_limits<double>::quiet_NaN();

@@ -13,12 +13,12 @@
 namespace ogive {
 namespace {
 
+using limit_detail::fails_virtual_work;
+using limit_detail::inadmissible_message;
 using limit_detail::LimitLp;
+using limit_detail::require_loaded;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-using limit_detail::cross;
-using limit_detail::fails_virtual_work;
 
 // The thinnest arch the search for t_min tries, relative to the span.
 constexpr double kThinnestResolved = 1e-6;
@@ -339,6 +339,7 @@ struct HorizontalCollapse {
   ThrustState state;
   double mechanism = kNaN;
   std::vector<Hinge> mechanism_hinges;  // the mechanism's (limit_detail::least_mechanism); empty: none
+  std::string sliding_failure;  // why the non-associative iteration did not converge (then no state)
 };
 
 bool horizontal_collapse(const Ring& ring, const LimitOptions& options, Work& work, HorizontalCollapse& r,
@@ -351,8 +352,16 @@ bool horizontal_collapse(const Ring& ring, const LimitOptions& options, Work& wo
                                                    options.compressive_strength);
   LimitLp& lp = *work.horizontal_lp;
   const int solves_before = lp.solves();
-  const LimitLp::Answer c = solve_warm(lp, work.horizontal_basis, [&](const std::vector<int>* w) { return lp.collapse(w); });
+  LimitLp::Answer c = solve_warm(lp, work.horizontal_basis, [&](const std::vector<int>* w) { return lp.collapse(w); });
+  // The horizontal load of the dead loads at a_c (what the iteration's tolerance is relative to).
+  const limit_detail::SlidingIteration sliding =
+      limit_detail::non_associative(lp, ring, options, c, std::abs(ring.total_dead()), [&](const std::vector<int>* w) { return lp.collapse(w); });
   lp_solves += lp.solves() - solves_before;
+  if (!sliding.failure.empty()) {
+    r.sliding_failure = sliding.failure;
+    return true;
+  }
+  c = sliding.answer;
   if (c.outcome == LimitLp::Outcome::failure) return false;
   if (c.outcome != LimitLp::Outcome::optimal) return true;  // cannot stand, or no finite a_c
   // The state: the ring pushed by a_c with its live load at factor 1.
@@ -366,70 +375,45 @@ bool horizontal_collapse(const Ring& ring, const LimitOptions& options, Work& wo
   return true;
 }
 
-// Throws std::invalid_argument when nothing loads the ring. Scene::validate lets density 0 pass with a
-// fill; a fill whose level lies below the extrados over the whole span (it meets the extrados beyond the
-// springing's vertical) loads nothing, and a ring that carries nothing has no thrust, no thinnest
-// thickness and no mechanism to find. A fill that reaches the extrados over any part of the span is a
-// scene: the unloaded voussoirs carry its thrust.
-//
-// Loads so small that the squares of the forces underflow (below about 1e-154 N/m; kSmallestLoads leaves
-// room for the moments and sums) would make every joint look forceless and every thrust line admissible
-// or none: refused too. The analysis is homogeneous in the loads, so such a scene is the same arch as
-// one with its loads in ordinary units.
-constexpr double kSmallestLoads = 1e-100;  // N/m, the ring's total load
-
-void require_loaded(const Scene& scene, const Ring& ring) {
-  const double total = std::abs(ring.total_dead()) + std::abs(ring.total_live());
-  if (total != 0.0 && total < kSmallestLoads)
-    throw std::invalid_argument(fmt::format(
-        "density, fill_density: the ring's loads total {:.3g} N/m, below {:g} N/m, too small for the arithmetic of "
-        "rigid voussoirs (their squares underflow); the analysis is the same at any scale: give the loads in N",
-        total, kSmallestLoads));
-  if (ring.total_dead() != 0.0 || ring.has_live_load()) return;
-  double level = 0;
-  for (const FillLoad& fill : scene.loads.fills)
-    if (fill.density > 0) level = std::max(level, fill.height_ratio);
-  if (!(level > 0))
-    throw std::invalid_argument("density, fill_density: with no self-weight and no fill's weight (both 0) and no "
-                                "point or live load the ring carries nothing: nothing to analyse");
-  throw std::invalid_argument(fmt::format(
-      "fill_height_ratio: the fill's level ({} of the span) lies below the arch's extrados over the whole span, "
-      "so the fill loads nothing, and with density 0 the ring has no weight: nothing to analyse",
-      level));
+// Why a collapse load factor has no kinematic one to check it against.
+std::string no_mechanism_note(const LimitResult& r, const LimitOptions& options) {
+  if (r.collapse_state.hinges.size() > kMaxMechanismHinges)
+    return fmt::format("the collapse state touches {} joints: the mechanism check takes at most {} hinges "
+                       "(a run of consecutive ones counting as three)",
+                       r.collapse_state.hinges.size(), kMaxMechanismHinges);
+  return options.friction > 0 ? "no rotational mechanism through the collapse hinges: joints slide at collapse"
+                              : "no one-degree rotational mechanism through the collapse hinges";
 }
 
-// The notes of a successful result after the first (how t_min's search ended): what is absent, and why.
+// The notes of a successful result after the first (how t_min's search ended): what is absent, and why;
+// a non-associative iteration that did not converge (sliding_failure) makes it not_converged.
 void add_notes(LimitResult& r, const LimitOptions& options, const std::string& walls_note, bool forceless,
-               bool unbounded_thrust, bool live) {
+               bool unbounded_thrust, bool live, const std::string& sliding_failure) {
   auto note = [&](const std::string& text) { r.message += (r.message.empty() ? "" : "; ") + text; };
   if (!walls_note.empty()) note(walls_note);
   if (forceless)
     note("the thrust vanishes at some joints (voussoirs without weight or load between loaded ones): no margin "
          "there to search t_min by, and no hinge");
+  if (!sliding_failure.empty()) r.status = LimitStatus::not_converged;
   if (unbounded_thrust) note("no largest thrust: a thrust line of any H fits inside the arch (H_max absent)");
   if (live && std::isnan(r.load_factor()))
-    note("the live load cannot turn the arch into a mechanism (no finite load factor)");
-  if (!std::isnan(r.load_factor()) && std::isnan(r.load_factor_mechanism)) {
-    if (r.collapse_state.hinges.size() > kMaxMechanismHinges)
-      note(fmt::format("the collapse state touches {} joints: the mechanism check takes at most {} hinges "
-                       "(a run of consecutive ones counting as three)",
-                       r.collapse_state.hinges.size(), kMaxMechanismHinges));
-    else
-      note(options.friction > 0 ? "no rotational mechanism through the collapse hinges: joints slide at collapse"
-                                : "no one-degree rotational mechanism through the collapse hinges");
-  }
+    note(sliding_failure.empty() ? "the live load cannot turn the arch into a mechanism (no finite load factor)"
+                                 : "the non-associative friction iteration of the collapse load factor did not "
+                                   "converge: " + sliding_failure);
+  if (!std::isnan(r.load_factor()) && std::isnan(r.load_factor_mechanism)) note(no_mechanism_note(r, options));
 }
 
-// Why no thrust line stands: where it would have to fit, and whether a thicker arch would stand (t_min
-// below `t_cap`).
-std::string inadmissible_message(const LimitOptions& options, double t_min, double t_cap, const std::string& on,
-                                 const std::string& thinner) {
-  std::string where = "inside the arch" + on + (options.friction > 0 ? " and its joints' friction cones" : "");
-  if (std::isfinite(options.compressive_strength))
-    where += fmt::format(" clear of the stress blocks that crush its joints (compressive strength {:g} Pa)",
-                         options.compressive_strength);
-  return std::isnan(t_min) ? fmt::format("no thrust line fits {} at any thickness up to {} m{}", where, t_cap, thinner)
-                           : fmt::format("no thrust line fits {}: t < t_min{}", where, thinner);
+// The collapse load factor's program, by the friction model: with `failure` (then no answer: the
+// outcome infeasible) when the non-associative iteration did not converge.
+LimitLp::Answer collapse_answer(LimitLp& lp, const Ring& ring, const LimitOptions& options, Work& work,
+                                std::string& failure) {
+  auto collapse = [&](const std::vector<int>* w) { return lp.collapse(w); };
+  const LimitLp::Answer c = solve_warm(lp, work.collapse_basis, collapse);
+  limit_detail::SlidingIteration sliding =
+      limit_detail::non_associative(lp, ring, options, c, std::abs(ring.total_live()), collapse);
+  failure = sliding.failure;
+  if (!failure.empty()) sliding.answer.outcome = LimitLp::Outcome::infeasible;
+  return sliding.answer;
 }
 
 // One analysis on the ring whose joints are `refined` and the loads' (fractions_at), and where the next
@@ -460,8 +444,9 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
     r.lp_solves += lp.solves() - solves_before;
     return round;
   };
-  const double f_c = options.compressive_strength;
-  auto state = [&](const LimitLp::Answer& a) { return thrust_state(ring, a.H, a.V, a.M, a.load_factor, 1e-9, f_c); };
+  auto state = [&](const LimitLp::Answer& a) {
+    return thrust_state(ring, a.H, a.V, a.M, a.load_factor, 1e-9, options.compressive_strength);
+  };
 
   using Warm = const std::vector<int>*;
   LimitLp::Answer margin = solve_warm(lp, work.margin_basis, [&](Warm w) { return lp.margin(load_factor, w); });
@@ -488,8 +473,9 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
     }
   }
   limit_detail::LeastMechanism mechanism;
+  std::string sliding_failure;  // the non-associative iteration's of the collapse load factor
   if (live) {
-    const LimitLp::Answer c = solve_warm(lp, work.collapse_basis, [&](Warm w) { return lp.collapse(w); });
+    const LimitLp::Answer c = collapse_answer(lp, ring, options, work, sliding_failure);
     if (c.outcome == LimitLp::Outcome::optimal) {
       r.collapse_state = state(c);
       mechanism = limit_detail::least_mechanism(ring, r.collapse_state.hinges, limit_detail::LiveKind::vertical);
@@ -546,7 +532,7 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   }
   r.status = LimitStatus::success;
   if (!bracketed) r.message = fmt::format("t_min below {} m: not searched further", hi);
-  add_notes(r, options, walls.note, forceless, unbounded_thrust, live);
+  add_notes(r, options, walls.note, forceless, unbounded_thrust, live, sliding_failure);
   return round;
 }
 
@@ -678,6 +664,13 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
     if (h.failed) {
       r.status = LimitStatus::lp_failure;
       r.message = "the LP of the collapse acceleration stopped without an answer";
+      return r;
+    }
+    if (!h.collapse.sliding_failure.empty()) {
+      r.status = LimitStatus::not_converged;
+      const std::string text = "the non-associative friction iteration of the collapse acceleration did not "
+                               "converge: " + h.collapse.sliding_failure;
+      r.message = r.message.empty() ? text : text + "; " + r.message;
       return r;
     }
     r.horizontal_state = std::move(h.collapse.state);

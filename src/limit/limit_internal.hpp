@@ -3,6 +3,7 @@
 #pragma once
 
 #include <compare>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <string>
@@ -196,6 +197,17 @@ class LimitLp {
   // The rows with those keys here (a cut's made anew when this ring has its joint); empty when one of
   // them has none (its joint is not in this ring).
   std::vector<int> rows(const std::vector<RowKey>& keys);
+  // Non-associative friction (Gilbert, Casapulla & Ahmed 2006): with `normal_forces` (N/m, one per
+  // joint, clamped at 0) each joint's two friction rows become |T_j| <= friction N_j with N_j those fixed
+  // numbers (a Tresca-like row: its normality has no dilatancy), linear in the unknowns like every row;
+  // empty: the Coulomb rows |T_j| <= friction n . F_j again, to the bit. Nothing without friction. The rows keep
+  // their keys (warm starts carry over).
+  void hold_sliding(const std::vector<double>& normal_forces);
+  // The normal force N_j = n_j . F_j (N/m, compression positive) of each joint in the state of an
+  // optimal answer of this ring's programs.
+  std::vector<double> normal_forces(const Answer& a) const;
+  // Whether a friction row is among the rows of an optimal basis (a joint may slide in its mechanism).
+  bool slides(const std::vector<int>& basis) const;
   int solves() const { return solves_; }
   // The linear programs solved for the crushing cuts beyond the first of each program (0 with infinite f_c).
   int cut_rounds() const;
@@ -208,5 +220,32 @@ class LimitLp {
   std::unique_ptr<LpWorkspace> own_workspace_;
   int solves_ = 0;
 };
+
+// The outcome of the non-associative iteration: the last answer, and why it did not converge (empty:
+// it did).
+struct SlidingIteration {
+  LimitLp::Answer answer;
+  std::string failure;
+  int iterations = 0;
+};
+// A program of lp solved from an optimal basis to start from (nullptr: none).
+using SolveWarm = std::function<LimitLp::Answer(const std::vector<int>*)>;
+// The program `solve` (lp's collapse, say) with non-associative friction, from `first`, its optimum with
+// the Coulomb rows (the associative answer). Each iteration holds every joint's friction rows at the
+// normal forces N_prev of the previous state (|T| <= friction N_prev: fixed numbers), re-solves, and moves
+// N_prev towards the new normal forces, by a step halved whenever the change fails to shrink by a tenth
+// (the iteration can oscillate between two mechanisms). At the fixed point the state lies inside every
+// Coulomb cone (N = N_prev) and its mechanism, the normality of fixed-N rows, slides without opening.
+// `load_scale`: the live load's magnitude at factor 1 (added to the dead loads times the factor found).
+SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptions& options,
+                                 const LimitLp::Answer& first, double load_scale, const SolveWarm& solve);
+
+// The analysis's checks (limit_checks.cpp). Throws std::invalid_argument naming the field when nothing
+// (or next to nothing) loads the ring.
+void require_loaded(const Scene& scene, const Ring& ring);
+// Why no thrust line stands, and whether a thicker arch would (t_min below t_cap): `on` " on its walls"
+// (empty without), `thinner` whether a wall is thinner than b_min (LeastWallSearch's words).
+std::string inadmissible_message(const LimitOptions& options, double t_min, double t_cap, const std::string& on,
+                                 const std::string& thinner);
 
 }  // namespace ogive::limit_detail

@@ -86,7 +86,7 @@ CriterionResult acceleration(const LimitResult& lr, double need) {
   return judged(c, lr.horizontal_load_factor(), need);
 }
 
-CriterionResult spreading(const Scene& scene, const LimitOptions& limit, const SpreadOptions& o,
+CriterionResult spreading(const Scene& scene, const SpreadOptions& o,
                           const SpreadResult& sr, double need) {
   const Criterion c = Criterion::spread_capacity_ratio;
   if (!required(need)) return not_required(c);
@@ -243,7 +243,7 @@ Assessment assess(const Scene& scene, const AssessmentOptions& options) {
   a.criteria = {geometric_factor(scene, a.limit, need.geometric_safety_factor),
                 load_factor(a.limit, need.load_factor),
                 acceleration(a.limit, need.horizontal_load_factor),
-                spreading(scene, options.limit, options.spread, a.spreading, need.spread_capacity_ratio),
+                spreading(scene, options.spread, a.spreading, need.spread_capacity_ratio),
                 thrust_line(a.solution, line, need.thrust)};
   decide(a);
   add_warnings(a, scene, line);

@@ -80,4 +80,6 @@ TEST_CASE("cli: assess refuses bad input with one line") {
   check_refused({"assess", "--support-displacement-ratio", "1e-4"});
   check_refused({"assess", "--joints-count", "4"});
   check_refused({"assess", "--friction", "0"});
+  check_refused({"assess", "--friction-model", "associative"});
+  check_refused({"assess", "--friction", "0.5", "--friction-model", "dilatant"});
 }

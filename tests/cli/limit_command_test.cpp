@@ -130,10 +130,32 @@ TEST_CASE("cli: limit takes the scene's loads and pins: a live load's factor, th
   CHECK(close(std::stod(field(pinned.out, "H_min")), std::stod(field(pinned.out, "H_max")), kSameRing));
 }
 
+TEST_CASE("cli: limit's friction model: non-associative by default with --friction, its column empty without") {
+  const std::vector<std::string> scene = {"--curve", "segmental", "--rise-ratio", "0.25", "--thickness-ratio", "0.15",
+                                          "--joints", "vertical", "--point-load", "5e4", "--point-load-at", "0.15",
+                                          "--columns", "friction_model,status,load_factor"};
+  std::vector<std::string> args = scene;
+  args.insert(args.end(), {"--friction", "0.7"});
+  const Run fallback = limit_cli(args);
+  args.insert(args.end(), {"--friction-model", "associative"});
+  const Run associative = limit_cli(args);
+  REQUIRE(fallback.status == 0);
+  REQUIRE(associative.status == 0);
+  CHECK(field(fallback.out, "friction_model") == "non-associative");
+  CHECK(field(associative.out, "friction_model") == "associative");
+  // The associative factor bounds the non-associative one from above (docs/limit-analysis.md: 9.90, 2.42).
+  CHECK(std::stod(field(fallback.out, "load_factor")) < 0.5 * std::stod(field(associative.out, "load_factor")));
+  const Run none = limit_cli(scene);
+  REQUIRE(none.status == 0);
+  CHECK(field(none.out, "friction_model").empty());
+}
+
 TEST_CASE("cli: limit refuses bad input with one line and exit 2") {
   const std::vector<std::vector<std::string>> cases = {
       {"--friction", "0"},
       {"--friction", "-0.3"},
+      {"--friction", "0.5", "--friction-model", "dilatant"},
+      {"--friction-model", "associative"},
       {"--joints-count", "3"},
       {"--joints-count", "200"},
       {"--joints-count", "x"},

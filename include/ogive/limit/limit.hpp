@@ -64,8 +64,26 @@ enum class WeightModel {
              // at the centroid of the voussoir's piece of axis; the other loads on the axis
 };
 
+// How the joints slide (LimitOptions::friction > 0). Coulomb's cone |T| <= friction N bounds the joint
+// forces of every admissible state either way; the models differ in the sliding mechanism's flow rule.
+enum class FrictionModel {
+  // Associative (normality): a sliding joint also opens (dilatancy tan phi = friction). Every number is
+  // the largest over the states inside the cones: the collapse load factor and a_c are upper bounds of
+  // the non-associative ones (every real collapse state is inside the cones), exact where the collapse
+  // mechanism only hinges.
+  associative,
+  // Non-associative (masonry: sliding without dilatancy), the iterative method of Gilbert, Casapulla &
+  // Ahmed (2006): the load factor and a_c are those of a state whose sliding rows |T_j| <= friction N_j
+  // hold each N_j fixed at the previous iterate's normal force, re-solved until the normal forces
+  // converge; the converged state is inside every cone and has a mechanism that slides without opening.
+  // No theorem makes it a bound; it is at most the associative factor. A run that does not converge
+  // gives no load factor and says so (LimitStatus::not_converged).
+  non_associative,
+};
+
 const char* to_string(JointOrientation j);
 const char* to_string(WeightModel w);
+const char* to_string(FrictionModel f);
 
 // The default number of joints of the starting ring (analyse_limit then refines it; see there).
 inline constexpr int kDefaultJointsCount = 201;
@@ -82,6 +100,9 @@ struct LimitOptions {
   // Coulomb friction coefficient of the joints; 0: no sliding check (sliding is excluded). When > 0,
   // every joint must also satisfy |shear| <= friction * normal force.
   double friction = 0;
+  // The sliding's flow rule (with friction > 0): the collapse load factor and a_c by it. The thrust range
+  // and t_min are those of the states inside the cones whichever it is (FrictionModel, analyse_limit).
+  FrictionModel friction_model = FrictionModel::non_associative;
   // The masonry's compressive strength f_c (Pa, > 0; infinity: Heyman's infinite strength). Finite, the
   // joints crush: rigid-perfectly-plastic in compression, no tension, a joint of length h with normal
   // force N (N/m, compression positive) bears it on a stress block N / f_c deep at the face, so its
