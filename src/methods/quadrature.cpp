@@ -115,22 +115,13 @@ void curve_panel(const ArchModel& model, const Panel& panel, const ChebyshevRule
   out.component(kM).col(kLoad) += integral;
   for (int j = 0; j < kColumns; ++j) {
     const auto Fx = out.component(kFx).col(j), Fy = out.component(kFy).col(j), M = out.component(kM).col(j);
-    const bool weight = j == kLoad;  // the self-weight's own stress across the depth strains the load column
-    for (int i = 0; i < n; ++i) {
-      f[i] = bars[i].bending * M[i] + bars[i].coupling * (c[i] * Fx[i] + sn[i] * Fy[i]);
-      if (weight) f[i] += bars[i].load_curvature * model.weight_normal_load(c[i], sn[i]);
-    }
+    for (int i = 0; i < n; ++i) f[i] = bars[i].bending * M[i] + bars[i].coupling * (c[i] * Fx[i] + sn[i] * Fy[i]);
     cumulative(Q, J, f, scaled, integral);
     out.component(kPsi).col(j) = Y(kPsi, j) + integral.array();
     for (int i = 0; i < n; ++i) {
       StateVector y, dy;
       y << 0.0, 0.0, out.component(kPsi)(i, j), Fx[i], Fy[i], M[i];
       model.curved_derivative(c[i], sn[i], bars[i], y.data(), dy.data(), 0.0, 0.0, false);
-      if (weight) {
-        const double eps = bars[i].load_strain * model.weight_normal_load(c[i], sn[i]);
-        dy[kUx] += eps * c[i];
-        dy[kUy] += eps * sn[i];
-      }
       out.component(kUx)(i, j) = dy[kUx];
       out.component(kUy)(i, j) = dy[kUy];
     }

@@ -160,16 +160,13 @@ void ArchModel::tabulate_section() {
   // In rho^2 the factors are analytic up to rho^2 = 1, far from [0, 1/4]: degree 16 is at round-off.
   const ChebyshevRule& rule = chebyshev_rule(kSectionDegree);
   const double nu = section_poisson_ratio(), top = kTabulatedRho * kTabulatedRho;
-  // load_extension is odd in rho: its series is of load_extension / rho.
-  Eigen::Matrix<double, kSectionDegree + 1, 6> values;
+  Eigen::Matrix<double, kSectionDegree + 1, 4> values;
   for (int i = 0; i <= kSectionDegree; ++i) {
-    const double rho = std::sqrt(0.5 * (rule.node[i] + 1) * top);
-    const CurvedSection c = curved_section(rho, nu);
-    const double extension = rho > 0 ? c.load_extension / rho : curved_section(1e-6, nu).load_extension / 1e-6;
-    values.row(i) << c.axial, c.coupling, c.bending, c.shear, extension, c.load_curvature;
+    const CurvedSection c = curved_section(std::sqrt(0.5 * (rule.node[i] + 1) * top), nu);
+    values.row(i) << c.axial, c.coupling, c.bending, c.shear;
   }
-  const Eigen::Matrix<double, kSectionDegree + 1, 6> series = rule.to_coefficients * values;
-  for (int f = 0; f < 6; ++f)
+  const Eigen::Matrix<double, kSectionDegree + 1, 4> series = rule.to_coefficients * values;
+  for (int f = 0; f < 4; ++f)
     for (int i = 0; i <= kSectionDegree; ++i) section_series_[f][i] = series(i, f);
 }
 
@@ -188,8 +185,6 @@ ArchModel::CurvedBar ArchModel::curved_bar(double k) const {
     section.coupling = chebyshev_series(section_series_[1].data(), kSectionDegree, x);
     section.bending = chebyshev_series(section_series_[2].data(), kSectionDegree, x);
     section.shear = chebyshev_series(section_series_[3].data(), kSectionDegree, x);
-    section.load_extension = rho * chebyshev_series(section_series_[4].data(), kSectionDegree, x);
-    section.load_curvature = chebyshev_series(section_series_[5].data(), kSectionDegree, x);
   } else {
     section = curved_section(rho, section_poisson_ratio());
   }
@@ -197,8 +192,6 @@ ArchModel::CurvedBar ArchModel::curved_bar(double k) const {
   bar.coupling *= section.coupling;
   bar.bending = section.bending;
   bar.shear = section.shear;
-  bar.load_strain = -(k > 0 ? 1 : -1) * a_N_ * std::sqrt(12.0 * a_N_) * section.load_extension;
-  bar.load_curvature = -a_N_ * section.load_curvature;
   return bar;
 }
 
@@ -206,12 +199,11 @@ void ArchModel::curved_derivative(double c, double sn, const CurvedBar& bar, con
                                   double load, double horizontal, bool self_weight) const {
   const double N = c * y[kFx] + sn * y[kFy];
   const double V = -sn * y[kFx] + c * y[kFy];
-  const double q = self_weight ? weight_normal_load(c, sn) : 0.0;
-  const double eps = a_N_ * bar.axial * N + bar.coupling * y[kM] + bar.load_strain * q;
+  const double eps = a_N_ * bar.axial * N + bar.coupling * y[kM];
   const double rot = a_V_ * bar.shear * V + y[kPsi];
   dy[kUx] = eps * c - rot * sn;
   dy[kUy] = eps * sn + rot * c;
-  dy[kPsi] = bar.bending * y[kM] + bar.coupling * N + bar.load_curvature * q;
+  dy[kPsi] = bar.bending * y[kM] + bar.coupling * N;
   dy[kFx] = -horizontal;
   dy[kFy] = load;
   dy[kM] = sn * y[kFx] - c * y[kFy];

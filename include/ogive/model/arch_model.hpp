@@ -132,16 +132,10 @@ class ArchModel {
   // coupling' 1 + 6 nu / 5 as rho -> 0. And each slice of the arch, an annular sector, weighs at its
   // centroid, t^2 / (12 R) beyond the axis towards the extrados: the self-weight's load (b_self down,
   // a b_self to +x) brings the couple offset (b_self sn - a b_self c) into M~', offset = a_N k.
-  // In the struct coupling = a_N k coupling'. The self-weight is a body force: its own stress across the
-  // depth strains the section (CurvedSection's load terms), eps~ += load_strain q~ and psi~' +=
-  // load_curvature q~ with q~ = -b_self (c + a sn) its part along the extrados normal (-sn, c):
-  // load_strain = -sign(k) a_N t~ load_extension, load_curvature = -a_N load_curvature'.
-  // For the other models coupling 0, offset 0, the load terms 0, the factors 1.
+  // In the struct coupling = a_N k coupling'. For the other models coupling 0, offset 0, the factors 1.
   struct CurvedBar {
-    double coupling = 0, bending = 1, axial = 1, shear = 1, offset = 0, load_strain = 0, load_curvature = 0;
+    double coupling = 0, bending = 1, axial = 1, shear = 1, offset = 0;
   };
-  // The self-weight's part along the extrados normal (-sn, c) per scaled length (q~ above).
-  double weight_normal_load(double c, double sn) const { return -self_weight_ * (c + acceleration() * sn); }
   CurvedBar curved_bar(double k) const;
   double kappa(double s) const;  // the scaled curvature kappa L at scaled arc length s
   // dy of the curved bar: derivative()'s equations with the bar's section law and, on the load column
@@ -234,7 +228,7 @@ class ArchModel {
   // beyond it curved_bar computes them.
   static constexpr double kTabulatedRho = 0.5;
   static constexpr int kSectionDegree = 16;
-  std::array<std::array<double, kSectionDegree + 1>, 6> section_series_{};
+  std::array<std::array<double, kSectionDegree + 1>, 4> section_series_{};
   double section_poisson_ratio() const;
   void tabulate_section();
   // The constructor's steps, in order: where the loads act and where the system is not smooth (the

@@ -17,20 +17,8 @@
 
 namespace ogive {
 
-//
-// A body force across the section (the self-weight), whose part normal to the axis is q per length of
-// the axis (outward from the centre of curvature), is not carried by these stresses alone: the annulus
-// under a uniform radial body force, less the modes of its own (N, M), is the load's own stress across
-// the depth (its radial stress, and the hoop stress that balances it), zero on both faces and without
-// resultants. Its complementary energy against the modes of (N, M) adds the load terms
-//   N eps0 + M kappa0,  eps0 = load_extension q t / (E A),  kappa0 = load_curvature q / (E A)
-// to U: the section strains by eps0 and curves by kappa0 (M tension on the outer face positive) under
-// the load alone. As rho -> 0, load_curvature tends to -nu / 5 (the straight beam's transverse stress
-// through Poisson's ratio) and load_extension to 0 (odd in rho). The part of the body force along the
-// axis brings a shear strain of order rho^2 of the shear's (4e-4 at rho 0.2), which is not kept.
 struct CurvedSection {
   double axial = 1, coupling = 1, bending = 1, shear = 1;
-  double load_extension = 0, load_curvature = 0;
 };
 
 // rho = t / (2 R) in [0, 1), nu in (-1, 0.5]: the four factors above. Below rho = 1e-3 each is its
