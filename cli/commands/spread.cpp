@@ -193,6 +193,12 @@ double crown_drop(const Scene& scene, const Solution& sol) {
 // A solve's answer: success, or an arch that cannot stand as a no-tension arch.
 bool answered(const Solution& sol) { return sol.ok() || sol.status == Status::inadmissible; }
 
+// Whether a row gives the path's numbers: a success, or a path whose capacity is not within the
+// tolerance (the finest ring's, as limit gives its not_converged collapse), the status and message saying so.
+bool has_numbers(const SpreadResult& r) {
+  return r.status == SpreadStatus::success || r.status == SpreadStatus::not_converged;
+}
+
 std::string summary_row(const Columns& columns, const SceneParameters& p, const Scene& scene, const SpreadText& t,
                         const SpreadSetup& s, const Solution& elastic, const SpreadResult& r) {
   const double L = scene.span();
@@ -208,7 +214,7 @@ std::string summary_row(const Columns& columns, const SceneParameters& p, const 
   const SpreadStep& first = r.path.front();
   const SpreadStep& last = r.path.back();
   row.add(first.H).add(first.V_left).add(first.H / first.V_left);  // the plateau, whenever d = 0 stands
-  if (r.status != SpreadStatus::success) {
+  if (!has_numbers(r)) {
     for (int k = 0; k < 8; ++k) row.add(std::string_view{});
     row.add(r.message).add(std::string_view{});
     return row.take();
@@ -272,14 +278,16 @@ std::string path_rows(const Columns& columns, const SceneParameters& p, const Sc
     row.add(step.V_left).add(step.V_right).add(step.H / step.V_left).add(step.crown_drop / L);
     row.add(hinge_text(step.hinges, L));
     row.add(i + 1 == r.path.size() ? std::string_view(to_string(r.collapse)) : std::string_view{});
-    row.add(std::string_view{});
+    row.add(r.status == SpreadStatus::success ? std::string_view{} : std::string_view(r.message));
     text += row.take_to_mark();
   }
+  *ok = *ok && r.status == SpreadStatus::success;
   return text;
 }
 
 // Exit 0 when every scene has an answer (an arch too thin to stand at d = 0 is one: a row of status
-// inadmissible, without a curve), 3 when a program or a solve stopped without one.
+// inadmissible, without a curve), 3 when a program or a solve stopped without one or the capacity is
+// not_converged (its row gives the numbers and says by how much the capacity moved).
 int run_spread(SpreadCommandOptions& so, const CLI::App& cmd, std::ostream& out) {
   const SpreadText& text = so.text;
   check_threads(text.threads);
@@ -302,7 +310,7 @@ int run_spread(SpreadCommandOptions& so, const CLI::App& cmd, std::ostream& out)
           emit(summary_row(columns, p, scene, text, setup, elastic, r));
           return spread_answered && answered(elastic);
         }
-        if (r.status != SpreadStatus::success) {
+        if (!has_numbers(r)) {
           emit(sparse_row(columns, p, scene.curve.get(),
                           {{"moving", text.moving},
                            {"left_settlement_share", fmt::format("{}", setup.spread.left_settlement_share)},
@@ -310,6 +318,9 @@ int run_spread(SpreadCommandOptions& so, const CLI::App& cmd, std::ostream& out)
                            {"joints", to_string(setup.limit.joints)},
                            {"weight", to_string(setup.limit.weight)},
                            {"joints_count", std::to_string(setup.limit.joints_count)},
+                           {"compressive_strength", std::isfinite(setup.limit.compressive_strength)
+                                                        ? fmt::format("{}", setup.limit.compressive_strength)
+                                                        : ""},
                            {"path_steps", std::to_string(setup.spread.steps)},
                            {"friction", setup.limit.friction > 0 ? fmt::format("{}", setup.limit.friction) : ""},
                            {"status", to_string(r.status)},

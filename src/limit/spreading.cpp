@@ -11,6 +11,7 @@
 
 #include <Eigen/Geometry>
 #include <Eigen/SVD>
+#include <fmt/format.h>
 
 #include "limit/limit_internal.hpp"
 #include "limit/spreading_chain.hpp"
@@ -618,7 +619,7 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
   std::vector<double> fractions = r.ring.joint_fractions;
   int increments = r.increments, rolls = r.rolls;
   double change = 0;  // no refinement: nothing moved
-  bool stayed = false;  // a finer ring changed the state at d = 0: the last ring's path stands
+  bool other_start = false;  // the last refinement changed the state at d = 0
   for (int refinement = 0; r.status == SpreadStatus::success && refinement < kMostSpreadRefinements; ++refinement) {
     const std::vector<Hinge> rolling = rolling_hinges(r.ring, r.path.back().hinges);
     if (rolling.empty() || r.d_max == 0 || (refinement > 0 && coarsest_next_to(r.ring, rolling) <= kSpreadJointSpacing * r.ring.span &&
@@ -630,19 +631,19 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
     increments += finer.increments;
     rolls += finer.rolls;
     if (finer.status != SpreadStatus::success) return finer;
-    // A finer ring that resolves the state at d = 0 into other contacts (a pointed arch's thrust line
-    // grazing its extrados over several of the new joints) starts another path: the last ring's stands
-    // (docs/spreading.md measures how far it has converged).
-    if (!same_places(finer.path.front().hinges, r.path.front().hinges, r.ring.span)) {
-      stayed = true;
-      break;
-    }
     // Relative to the capacity, but not below kSpreadCapacityFloor of the span (an arch near t_min,
     // whose capacity is next to nothing).
     change = std::abs(finer.d_max - r.d_max) / std::max(finer.d_max, kSpreadCapacityFloor * r.ring.span / sides);
+    // A finer ring that resolves the state at d = 0 into other contacts (a pointed arch's thrust line
+    // grazing its extrados over several of the new joints, and a path from there no nearer the arch's)
+    // starts another path: the last ring's stands, its capacity checked against the finer one's.
+    if (!same_places(finer.path.front().hinges, r.path.front().hinges, r.ring.span)) {
+      other_start = true;
+      break;
+    }
     r = std::move(finer);
   }
-  const bool converged = r.status != SpreadStatus::success || stayed || change <= kSpreadCapacityTolerance;
+  const bool converged = r.status != SpreadStatus::success || change <= kSpreadCapacityTolerance;
   SpreadResult out = r;
   if (spread.whole_path || spread.stop_ratio < std::numeric_limits<double>::infinity()) {
     out = follow(r.ring, start, limit, spread);
@@ -654,7 +655,9 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
   }
   if (out.status == SpreadStatus::success && !converged) {
     out.status = SpreadStatus::not_converged;
-    out.message = "the capacity still moved by " + std::to_string(change) + " of itself at the last refinement of the joints";
+    out.message = fmt::format("the capacity moved by {:.2g} of itself at the last refinement of the joints{}{}", change,
+                              other_start ? " (whose ring changed the state at d = 0: the coarser ring's path is given)" : "",
+                              out.message.empty() ? "" : "; " + out.message);
   }
   return out;
 }

@@ -303,11 +303,13 @@ TEST_CASE("crushing: the assessment's factors and spreading capacity honour the 
   LimitOptions heyman = o.limit;
   heyman.compressive_strength = std::numeric_limits<double>::infinity();
   const SpreadResult uncrushable = analyse_spreading(scene, heyman, o.spread);
-  REQUIRE(crushing.status == SpreadStatus::success);
-  REQUIRE(uncrushable.status == SpreadStatus::success);
+  // Both paths' capacities move by 7e-3 of themselves where a finer ring changes the state at d = 0:
+  // the assessment does not judge a capacity not within its tolerance, and says why.
+  REQUIRE(crushing.status == SpreadStatus::not_converged);
+  REQUIRE(uncrushable.status == SpreadStatus::not_converged);
   const CriterionResult& spread = a.criteria[static_cast<int>(Criterion::spread_capacity_ratio)];
-  CHECK(spread.outcome != Outcome::not_assessed);
-  CHECK(spread.value == 2 * crushing.d_max / scene.span());
+  CHECK(spread.outcome == Outcome::not_assessed);
+  CHECK(spread.reason == "spreading not_converged: " + crushing.message);
   CHECK(crushing.d_max < uncrushable.d_max);
 }
 

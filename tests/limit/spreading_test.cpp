@@ -106,8 +106,9 @@ TEST_CASE("spreading: a settling springing - static work equals the mechanism's,
   left.right_share = 0;
   left.left_settlement_share = 0.5;
   const SpreadResult r = spread(0.075, right), m = spread(0.075, left);
-  REQUIRE(r.status == SpreadStatus::success);
-  REQUIRE(m.status == SpreadStatus::success);
+  // A finer ring changes the state at d = 0, and the capacity moves by 3.6e-3 of itself there.
+  REQUIRE(r.status == SpreadStatus::not_converged);
+  REQUIRE(m.status == SpreadStatus::not_converged);
   REQUIRE(r.path.size() > 10);
   for (std::size_t i = 0; i < r.path.size(); ++i) {
     const SpreadStep& s = r.path[i];
@@ -124,7 +125,7 @@ TEST_CASE("spreading: a settling springing - static work equals the mechanism's,
   SpreadOptions rising = right;
   rising.right_settlement_share = -0.5;
   const SpreadResult u = spread(0.075, rising);
-  REQUIRE(u.status == SpreadStatus::success);
+  REQUIRE(u.status == r.status);
   CHECK(close(u.d_max, r.d_max, kSpreadTolerance));
   REQUIRE(u.path.size() == r.path.size());
   for (std::size_t i = 0; i < r.path.size(); ++i) {
@@ -144,7 +145,8 @@ TEST_CASE("spreading: a settling springing - static work equals the mechanism's,
   SpreadOptions steep = right;
   steep.right_settlement_share = 4;
   const SpreadResult sinking = spread(0.1, steep), level_thick = spread(0.1, level);
-  REQUIRE(sinking.status == SpreadStatus::success);
+  // A finer ring changes the sinking arch's state at d = 0, and its capacity moves by more than 1e-3 there.
+  REQUIRE(sinking.status == SpreadStatus::not_converged);
   REQUIRE(level_thick.status == SpreadStatus::success);
   CHECK(close(level_thick.path.front().V_right, level_thick.path.front().V_left, kSameState));
   CHECK(sinking.path.front().V_right < level_thick.path.front().V_right);
@@ -198,7 +200,9 @@ TEST_CASE("spreading: a pointed arch turns about four hinges, symmetrically unde
   constexpr double kSymmetric = 1e-9;  // of the span: mirror images to round-off
   const Scene scene = paper_scene(0.5, 0.08);
   const SpreadResult r = analyse_spreading(scene, {}, {});
-  REQUIRE(r.status == SpreadStatus::success);
+  // A finer ring changes the state at d = 0 (the thrust line grazes the extrados over several of the new
+  // joints), and the capacity moves by 2.2e-3 of itself there.
+  REQUIRE(r.status == SpreadStatus::not_converged);
   CHECK(close(r.path.front().H, analyse_limit(scene, {}).H_min(), kSameState));
   const double L = r.ring.span;
   for (std::size_t i = 0; i < r.path.size(); ++i) {
@@ -386,7 +390,9 @@ TEST_CASE("spreading with friction: the semicircle slides on a springing's bed, 
       if (!(mu > start.H / start.V_left && mu < end.H / end.V_left)) continue;
       ++tested;
       const SpreadResult r = analyse_spreading(scene, with_friction(mu), {});
-      REQUIRE(r.status == SpreadStatus::success);
+      // At t = 0.075 L and mu = 0.4 a finer ring changes the state at d = 0 and the capacity moves by
+      // 1.3e-3 of itself there.
+      REQUIRE(r.status == (t == 0.075 && mu == 0.4 ? SpreadStatus::not_converged : SpreadStatus::success));
       REQUIRE(r.collapse == SpreadCollapse::sliding);
       const std::size_t last = r.ring.joints.size() - 1;
       CHECK((r.sliding_joint == 0 || r.sliding_joint == static_cast<int>(last)));
@@ -414,7 +420,9 @@ TEST_CASE("spreading with friction: the capacity grows with the coefficient up t
   for (const double mu : {0.36, 0.38, 0.4, 0.42, 0.44, 0.46, 0.48, 0.5}) {
     CAPTURE(mu);
     const SpreadResult r = analyse_spreading(scene, with_friction(mu), {});
-    REQUIRE(r.status == SpreadStatus::success);
+    // At mu = 0.38 and 0.4 a finer ring changes the state at d = 0 and the capacity moves by 1.3e-3 of
+    // itself there.
+    REQUIRE(r.status == (mu == 0.38 || mu == 0.4 ? SpreadStatus::not_converged : SpreadStatus::success));
     CHECK(r.d_max >= previous);
     CHECK(r.d_max <= free);
     if (r.collapse == SpreadCollapse::sliding) ++slid;
@@ -474,7 +482,9 @@ TEST_CASE("spreading: the loaded pointed arch snaps where a hinge forms at its c
     LimitOptions o;
     o.weight = weight;
     const SpreadResult r = analyse_spreading(engineers_arch(), o, {});
-    REQUIRE(r.status == SpreadStatus::success);
+    // A finer ring changes the state at d = 0 and the capacity moves by 3.2e-3 (voussoir) and 0.87
+    // (axis: the finer ring's path is another) of itself there.
+    REQUIRE(r.status == SpreadStatus::not_converged);
     CHECK(r.collapse == SpreadCollapse::snap_through);
     CHECK(r.message.find("x = 0.5 L") != std::string::npos);
     const double L = r.ring.span;
@@ -529,7 +539,9 @@ TEST_CASE("spreading: loaded arches whose contacts went back and forth now reach
     LimitOptions o;
     o.weight = WeightModel::axis;
     const SpreadResult r = analyse_spreading(s, o, {});
-    REQUIRE(r.status == SpreadStatus::success);
+    // But the semicircle's, a finer ring changes each one's state at d = 0 and its capacity moves by
+    // 1.7, 0.017 and 2.9e-3 of itself there.
+    REQUIRE(r.status == (eccentricity == 0.0 ? SpreadStatus::success : SpreadStatus::not_converged));
     CHECK(r.d_max > 0);
     for (std::size_t i = 0; i < r.path.size(); ++i) {
       CAPTURE(i);

@@ -141,7 +141,8 @@ struct SpreadStep {
 
 enum class SpreadStatus {
   success,       // a path to collapse: every state's H is the program's and equals its virtual work
-                 // (H_work)
+                 // (H_work), and the capacity moved by at most kSpreadCapacityTolerance of itself at the
+                 // last refinement of the joints
   inadmissible,  // no thrust line fits the arch at d = 0 (t < t_min): no path
   no_mechanism,  // the state at d = 0 has no mechanism that moves the springings apart;
                  // path holds that state
@@ -150,8 +151,10 @@ enum class SpreadStatus {
                  // and the last state
   unsettled,     // at some movement the hinges found no placement whose program's contacts are its
                  // hinges (they rolled back and forth): path holds d = 0 and the last settled state
-  not_converged, // the capacity still moved by more than kSpreadCapacityTolerance of itself at the last of
-                 // kMostSpreadRefinements refinements of the joints: the finest ring's path is given
+  not_converged, // the capacity moved by more than kSpreadCapacityTolerance of itself at the last refinement
+                 // of the joints (after kMostSpreadRefinements, or where the finer ring changed the state at
+                 // d = 0 and the coarser ring's path is given): the path and its numbers are given, the
+                 // message says by how much the capacity moved
 };
 const char* to_string(SpreadStatus s);
 
