@@ -278,6 +278,14 @@ void ScenePlan::plan_axes(SceneOptions& o, const CLI::App& cmd) {
   if (const CLI::Option* units = cmd.get_option_no_throw("--units"); units && units->count() > 0)
     force_unit_ = force_unit(units->as<std::string>());
   thickness_flag_ = given(cmd, "--thickness") ? "--thickness" : "--thickness-ratio";
+  const auto given_here = [&](const std::string& flag) {
+    const CLI::Option* o = cmd.get_option_no_throw(flag);
+    return o && o->count() > 0;
+  };
+  for (const char* what : {"height", "thickness", "density", "top-load", "top-load-at"})
+    for (const char* side : {"left", "right"})
+      if (given_here(fmt::format("--wall-{}", what)) && !given_here(fmt::format("--{}-wall-{}", side, what)))
+        walls_by_shared_flag_.push_back(fmt::format("--{}-wall-{}", side, what));
   const char* shape = given_of(cmd, {"--rise-ratio", "--rise", "--radius"});
   shape_flag_ = shape ? shape : "--eccentricity";
   live_from_flag_ = given(cmd, "--live-load-from-x") ? "--live-load-from-x" : "--live-load-from";
@@ -524,6 +532,13 @@ std::string ScenePlan::problem_words(const std::string& what) const {
     for (std::size_t at = problem.find("--thickness-ratio"); at != std::string::npos;
          at = problem.find("--thickness-ratio", at))
       problem.erase(at + std::string_view("--thickness").size(), std::string_view("-ratio").size());
+  // A wall's value as the user gave it: --wall-thickness for both walls, unless a side's own was given.
+  for (const std::string& flag : walls_by_shared_flag_)
+    for (std::size_t at = problem.find(flag); at != std::string::npos; at = problem.find(flag, at)) {
+      const bool whole = at + flag.size() == problem.size() || !(std::isalnum(static_cast<unsigned char>(problem[at + flag.size()])) || problem[at + flag.size()] == '-');
+      if (whole) problem.replace(at, flag.size(), "--wall-" + flag.substr(flag.find("-wall-") + 6));
+      else at += flag.size();
+    }
   if (shape_flag_ == "--rise" && problem.starts_with("--rise-ratio:"))
     problem = "--rise: rise / span" + problem.substr(std::string_view("--rise-ratio:").size());
   return problem;

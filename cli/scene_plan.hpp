@@ -67,6 +67,8 @@ class ScenePlan {
   double model_tolerance_ = 0;
   std::size_t size_ = 1;
   std::string thickness_flag_;   // --thickness-ratio or --thickness: the one the user's thickness came by
+  // The side's wall options (--left-wall-height, ...) whose value came by the shared one (--wall-height).
+  std::vector<std::string> walls_by_shared_flag_;
   std::string shape_flag_;       // what set the pointed arch's shape: --eccentricity, --rise-ratio, --rise, --radius
   std::string live_from_flag_, live_to_flag_;  // the live load's ends: --live-load-from or --live-load-from-x, ...
   bool fill_to_crown_ = false;   // --fill-height crown or crown+D

@@ -98,6 +98,20 @@ TEST_CASE("cli: bad wall input gets one line and exit 2") {
   check_refused({"draw", "--wall-height", "5", "--wall-thickness", "2", "--spread-stage", "0.5", "--output", "x.svg"});
 }
 
+TEST_CASE("cli: a wall's refusal names the option the value came by") {
+  // Both walls from --wall-thickness: the message names it, not a side's option the user did not give.
+  const Run shared = run_command({"limit", "--wall-height", "5", "--wall-thickness", "0.5"});
+  CHECK(shared.status == 2);
+  CHECK(shared.out.empty());
+  CHECK(shared.err.starts_with("ogive: --wall-thickness: must be at least"));
+  // A side's own option is named when it is the one given.
+  const Run side = run_command({"limit", "--wall-height", "5", "--wall-thickness", "2", "--left-wall-thickness", "0.5"});
+  CHECK(side.status == 2);
+  CHECK(side.err.starts_with("ogive: --left-wall-thickness: must be at least"));
+  const Run at = run_command({"limit", "--wall-height", "5", "--wall-thickness", "2", "--wall-top-load-at", "1.5"});
+  CHECK(at.err.starts_with("ogive: --wall-top-load-at: must lie in [0, 1]"));
+}
+
 TEST_CASE("cli: thrust on walls prints each wall's resultant, elastic and cracked alike") {
   for (const char* section : {"elastic", "no-tension"}) {
     CAPTURE(section);
