@@ -103,9 +103,11 @@ std::shared_ptr<const Curve> read_points(const SceneOptions& o) {
 // The commands whose analyses take walls (the limit analysis of the system): the others refuse them.
 void refuse_walls(const CLI::App& cmd) {
   const std::string name = cmd.get_name();
-  if (!walls_given(cmd) || name == "limit" || name == "draw" || name == "thrust") return;
+  if (!walls_given(cmd) || name == "limit" || name == "draw" || name == "thrust" || name == "report" ||
+      name == "assess")
+    return;
   const char* flag = given(cmd, "--wall-height") ? "--wall-height" : given(cmd, "--left-wall-height") ? "--left-wall-height" : "--right-wall-height";
-  throw UsageError(fmt::format("{}: does not apply to {} (walls are taken by ogive limit, thrust and draw)", flag,
+  throw UsageError(fmt::format("{}: does not apply to {} (walls are taken by ogive limit, thrust, draw, report and assess)", flag,
                                cmd.get_name()));
 }
 

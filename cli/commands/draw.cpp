@@ -31,7 +31,6 @@
 #include "criteria.hpp"
 #include "interrupt.hpp"
 #include "limit_text.hpp"
-#include "ogive/core/wall_resultant.hpp"
 #include "ogive/limit/limit.hpp"
 #include "ogive/limit/spreading.hpp"
 #include "ogive/output/html_report.hpp"
@@ -83,23 +82,6 @@ void add_limit_drawing(const Scene& scene, double compressive_strength, DrawingO
   options.horizontal_load_factor = scene.horizontal_acceleration != 0;
   const LimitResult r = analyse_limit(scene, options);
   add_limit_analysis(drawing, scene, r);
-}
-
-// The elastic (or cracked-section) arch's resultant carried down its rigid walls (wall_resultant.hpp),
-// from the springing joint's lower end to the base: the line of thrust continued through each wall.
-constexpr int kWallResultantBeds = 40;
-void add_wall_resultants(const Scene& scene, const Solution& sol, DrawingOptions& drawing) {
-  if (!sol.field) return;
-  for (bool right : {false, true}) {
-    if (!(right ? scene.right_wall : scene.left_wall)) continue;
-    ExtraThrustLine line;
-    line.id = right ? "wall-resultant-right" : "wall-resultant-left";
-    line.colour = "#c0392b";
-    line.label = fmt::format("{} wall: the line of thrust's resultant down the rigid wall", right ? "right" : "left");
-    for (const WallBedCrossing& b : wall_resultant(scene, sol.reactions, right, kWallResultantBeds).beds)
-      line.points.push_back({b.x, b.y});
-    drawing.extra_lines.push_back(std::move(line));
-  }
 }
 
 // The options a spreading stage does not take: it starts from the arch at d = 0, both springings moving
@@ -360,7 +342,7 @@ int run_draw(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
     DrawingOptions drawing;
     drawing.title = draw_title(p);
     if (to.limit) add_limit_drawing(scene, compressive_strength, drawing);
-    add_wall_resultants(scene, sol, drawing);
+    add_wall_resultants(drawing, scene, sol);
     if (to.spread_stage) add_spread_drawing(scene, *to.spread_stage, drawing);
     return arch_svg(scene, sol, drawing);
   };

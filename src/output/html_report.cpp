@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -169,6 +171,17 @@ std::string safety_section(const Scene& scene, const LimitResult& lim) {
   s += row("thickness t", cell(scene.thickness, 1, "m"));
   s += row("minimum thickness t<sub>min</sub>", cell(lim.thickness_min, 1, "m"));
   s += row("geometric safety factor t / t<sub>min</sub>", cell(scene.thickness / lim.thickness_min));
+  // On walls: the least wall thickness for the arch as it is, beside each wall's own.
+  for (const auto& [side, wall] : {std::pair{"left", &scene.left_wall}, std::pair{"right", &scene.right_wall}})
+    if (*wall) s += row(fmt::format("{} wall thickness b<sub>w</sub> (height {:.4g} m)", side, (*wall)->height),
+                        cell((*wall)->thickness, 1, "m"));
+  if (scene.has_walls()) {
+    s += row("least wall thickness b<sub>min</sub>", cell(lim.wall_thickness_min, 1, "m"));
+    s += row("wall factor b<sub>w</sub> / b<sub>min</sub> (the thinner wall)",
+             cell(std::min(scene.left_wall ? scene.left_wall->thickness : std::numeric_limits<double>::infinity(),
+                           scene.right_wall ? scene.right_wall->thickness : std::numeric_limits<double>::infinity()) /
+                  lim.wall_thickness_min));
+  }
   return s + "</table></section>\n";
 }
 
@@ -291,6 +304,7 @@ std::string html_report(const Scene& scene, const Solution& sol, const ReportOpt
   DrawingOptions drawing;
   drawing.title = options.title;
   add_limit_analysis(drawing, scene, lim);
+  add_wall_resultants(drawing, scene, sol);
   std::string svg = arch_svg(scene, sol, drawing);
   svg.erase(0, svg.find("<svg"));  // inline: no XML declaration
 

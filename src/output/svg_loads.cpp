@@ -1,5 +1,5 @@
 // What the drawing shows beyond the arch and its thrust lines: the fill, the loads, the cracked zones of a
-// no-tension section and the collapse mechanism (svg.hpp lists the elements).
+// no-tension section, the collapse mechanism and the resultant down the walls (svg.hpp lists the elements).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "ogive/core/wall_resultant.hpp"
 #include "svg_draw.hpp"
 
 namespace ogive::svg_draw {
@@ -353,6 +354,23 @@ std::optional<CollapseMechanism> collapse_mechanism(const Scene& scene, const Li
 void add_limit_analysis(DrawingOptions& drawing, const Scene& scene, const LimitResult& result) {
   drawing.extra_lines = limit_thrust_lines(result);
   if (std::optional<CollapseMechanism> m = collapse_mechanism(scene, result)) drawing.mechanisms.push_back(std::move(*m));
+}
+
+// The line drawn through 40 beds of each wall: smooth to the eye at any wall's height.
+constexpr int kWallResultantBeds = 40;
+
+void add_wall_resultants(DrawingOptions& drawing, const Scene& scene, const Solution& solution) {
+  if (!solution.field) return;
+  for (bool right : {false, true}) {
+    if (!(right ? scene.right_wall : scene.left_wall)) continue;
+    ExtraThrustLine line;
+    line.id = right ? "wall-resultant-right" : "wall-resultant-left";
+    line.colour = "#c0392b";
+    line.label = fmt::format("{} wall: the line of thrust's resultant down the rigid wall", right ? "right" : "left");
+    for (const WallBedCrossing& b : wall_resultant(scene, solution.reactions, right, kWallResultantBeds).beds)
+      line.points.push_back({b.x, b.y});
+    drawing.extra_lines.push_back(std::move(line));
+  }
 }
 
 }  // namespace ogive

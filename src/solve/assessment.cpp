@@ -1,7 +1,9 @@
 // The assessment (assessment.hpp): the analyses that exist, each compared with its required value.
 #include "ogive/solve/assessment.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -56,10 +58,23 @@ std::string limit_reason(const LimitResult& r) {
   return fmt::format("limit analysis {}: {}", to_string(r.status), r.message);
 }
 
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
 CriterionResult geometric_factor(const Scene& scene, const LimitResult& lr, double need) {
   const Criterion c = Criterion::geometric_safety_factor;
   if (!limit_answered(lr)) return unassessed(c, need, limit_reason(lr));
-  if (!(lr.thickness_min > 0)) return unassessed(c, need, "t_min not found: " + lr.message);
+  if (!(lr.thickness_min > 0)) {
+    // Walls thinner than the least that stands: no arch thickness makes the system stand (t_min's search
+    // stops at the thickest springing joint the walls carry), so its geometric factor is 0.
+    const double thinnest_wall = std::min(scene.left_wall ? scene.left_wall->thickness : kInfinity,
+                                          scene.right_wall ? scene.right_wall->thickness : kInfinity);
+    if (lr.status == LimitStatus::inadmissible && thinnest_wall < lr.wall_thickness_min) {
+      CriterionResult r = judged(c, 0, need);
+      r.reason = lr.message;
+      return r;
+    }
+    return unassessed(c, need, "t_min not found: " + lr.message);
+  }
   return judged(c, scene.thickness / lr.thickness_min, need);
 }
 
@@ -93,6 +108,11 @@ CriterionResult spreading(const Scene& scene, const SpreadOptions& o,
   if (scene.horizontal_acceleration != 0) {
     CriterionResult r = result(c, Outcome::not_applicable, need);
     r.reason = "the spreading mechanism carries vertical loads only: no horizontal acceleration";
+    return r;
+  }
+  if (scene.has_walls()) {
+    CriterionResult r = result(c, Outcome::not_assessed, need);
+    r.reason = "the spreading path does not take walls (the springings' movement would come from the walls' lean)";
     return r;
   }
   if (sr.status == SpreadStatus::inadmissible) return judged(c, 0, need);  // t < t_min: no path at all
@@ -237,7 +257,7 @@ Assessment assess(const Scene& scene, const AssessmentOptions& options) {
   LimitOptions limit = options.limit;
   limit.horizontal_load_factor = required(need.horizontal_load_factor);
   a.limit = analyse_limit(scene, limit);
-  if (required(need.spread_capacity_ratio) && scene.horizontal_acceleration == 0)
+  if (required(need.spread_capacity_ratio) && scene.horizontal_acceleration == 0 && !scene.has_walls())
     a.spreading = analyse_spreading(scene, options.limit, options.spread);
 
   a.criteria = {geometric_factor(scene, a.limit, need.geometric_safety_factor),

@@ -93,9 +93,36 @@ TEST_CASE("cli: bad wall input gets one line and exit 2") {
   check_refused({"thrust", "--wall-height", "5", "--wall-thickness", "1e300"});
   check_refused({"limit", "--wall-height", "5", "--wall-thickness", "2", "--wall-density", "1e12"});  // too heavy
   check_refused({"limit", "--curve", "segmental", "--wall-height", "0", "--wall-thickness", "3"});  // below the joint
-  for (const char* command : {"profile", "spread", "assess", "check", "curve", "bench", "report"})
+  for (const char* command : {"profile", "spread", "check", "curve", "bench"})
     check_refused({command, "--wall-height", "5", "--wall-thickness", "2"});
   check_refused({"draw", "--wall-height", "5", "--wall-thickness", "2", "--spread-stage", "0.5", "--output", "x.svg"});
+}
+
+TEST_CASE("cli: assess and report on walls") {
+  // Walls thinner than b_min: no arch thickness stands on them, a geometric factor of 0 that fails.
+  const Run thin = run_command({"assess", "--curve", "semicircular", "--thickness-ratio", "0.1", "--wall-height", "10",
+                                "--wall-thickness", "1.5", "--columns", "verdict,governing,geometric_safety_factor,message"});
+  CHECK(thin.status == 0);
+  CHECK(column(thin.out, "verdict") == "fail");
+  CHECK(column(thin.out, "geometric_safety_factor") == "0");
+  CHECK(column(thin.out, "message").find("thinner than b_min") != std::string::npos);
+  // Walls that stand: the arch's t / t_min on them, as limit gives it; the spreading path takes no walls.
+  const Run thick = run_command({"assess", "--curve", "semicircular", "--thickness-ratio", "0.1", "--wall-height", "10",
+                                 "--wall-thickness", "2", "--require-spread", "0.01", "--columns",
+                                 "geometric_safety_factor,thickness_min_ratio,spread_capacity_ratio_outcome,message"});
+  CHECK(thick.status == 0);  // a verdict: t / t_min = 1.86 fails the default 2, whatever the spreading
+  const Run lim = run_command({"limit", "--curve", "semicircular", "--thickness-ratio", "0.1", "--wall-height", "10",
+                               "--wall-thickness", "2", "--columns", "thickness_min_ratio"});
+  CHECK(column(thick.out, "thickness_min_ratio") == column(lim.out, "thickness_min_ratio"));
+  CHECK(column(thick.out, "spread_capacity_ratio_outcome") == "not_assessed");
+  CHECK(column(thick.out, "message").find("does not take walls") != std::string::npos);
+  // The report draws the walls, the elastic resultant down them, and gives b_min beside each wall.
+  const Run page = run_command({"report", "--curve", "semicircular", "--thickness-ratio", "0.1", "--wall-height", "10",
+                                "--wall-thickness", "2", "--output", "-"});
+  CHECK(page.status == 0);
+  for (const char* part : {"id=\"wall-left\"", "id=\"wall-right\"", "wall-resultant-left", "wall-resultant-right",
+                           "least wall thickness b<sub>min</sub>"})
+    CHECK(page.out.find(part) != std::string::npos);
 }
 
 TEST_CASE("cli: a wall's refusal names the option the value came by") {

@@ -133,6 +133,10 @@ std::optional<CollapseMechanism> collapse_mechanism(const Scene& scene, const Li
 // The limit analysis into a drawing: its thrust lines (limit_thrust_lines) and its collapse mechanism
 // (collapse_mechanism), where there is one. `scene` is the analysed one.
 void add_limit_analysis(DrawingOptions& drawing, const Scene& scene, const LimitResult& result);
+// The elastic (or cracked-section) arch's resultant carried down each of the scene's rigid walls
+// (ogive/core/wall_resultant.hpp), springing to base, as extra lines `wall-resultant-left/right`; none
+// without walls or without the solution's field.
+void add_wall_resultants(DrawingOptions& drawing, const Scene& scene, const Solution& solution);
 
 // The SVG document (UTF-8 text). The scene must be valid (Scene::validate); the solution is the
 // scene's, with or without a profile (without one, or unsolved, no thrust line is drawn and the title
