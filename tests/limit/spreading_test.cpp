@@ -529,7 +529,9 @@ TEST_CASE("spreading: loaded arches whose contacts went back and forth now reach
   // A point load near the crown with fill: the thrust line grazes the extrados at both edges of the
   // load's joints, or touches a face far from its hinges. Each path ends at a collapse, its thrust the
   // mechanism's virtual work at every state and the loads going down.
-  for (const auto& [eccentricity, thickness] : {std::pair{0.0, 0.1}, std::pair{0.2, 0.08}, std::pair{0.5, 0.1}, std::pair{1.0, 0.15}}) {
+  for (const auto& scene_at : {std::pair{0.0, 0.1}, std::pair{0.2, 0.08}, std::pair{0.5, 0.1}, std::pair{1.0, 0.15}}) {
+    // Named copies: clang cannot capture a structured binding in CAPTURE's lambda.
+    const double eccentricity = scene_at.first, thickness = scene_at.second;
     CAPTURE(eccentricity);
     CAPTURE(thickness);
     Scene s = paper_scene(eccentricity, thickness);
