@@ -107,15 +107,6 @@ LimitLp::Answer solve_warm(LimitLp& lp, std::vector<LimitLp::RowKey>& keys, Solv
   return a;
 }
 
-// The programs of `ring` in work's storage.
-LimitLp& programs_of(const Ring& ring, const LimitOptions& options, Work& work, std::unique_ptr<LimitLp>& lp) {
-  if (lp) lp->load(ring, options.friction, options.compressive_strength);
-  else
-    lp = std::make_unique<LimitLp>(ring, options.friction, &work.workspace, limit_detail::LpSolver::dense,
-                                   limit_detail::LiveKind::vertical, options.compressive_strength);
-  return *lp;
-}
-
 // The feasibility margin of the arch of the same axis and loads with thickness t (see analyse_limit).
 struct MarginFunction {
   Scene scene;  // a copy whose thickness changes
@@ -136,7 +127,7 @@ struct MarginFunction {
     Ring& ring = work.margin_ring;
     limit_detail::make_ring_at(scene, options, fractions_at(scene, t, options, refined, work.beside_loads), ring,
                                work.scratch);
-    LimitLp& lp = programs_of(ring, options, work, work.margin_lp);
+    LimitLp& lp = limit_detail::programs_of(ring, options, work.workspace, work.margin_lp);
     // A warm start needs the same joints (a load's joints can merge with others at some thickness).
     const bool warm = !basis.empty() && basis_joints == static_cast<int>(ring.joints.size());
     LimitLp::Answer a = lp.margin(load_factor, warm ? &basis : nullptr);
@@ -436,7 +427,7 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   const double load_factor = live ? 1.0 : 0.0;  // the H range and t_min: under the loads as given
 
   r.V = limit_detail::arch_half_load(ring);
-  LimitLp& lp = programs_of(ring, options, work, work.lp);
+  LimitLp& lp = limit_detail::programs_of(ring, options, work.workspace, work.lp);
   const int solves_before = lp.solves();
   auto fail = [&](const char* problem, const char* failure) {  // failure: LimitLp::Answer::failure
     r.status = LimitStatus::lp_failure;

@@ -221,6 +221,12 @@ class LimitLp {
   int solves_ = 0;
 };
 
+// The programs of `ring` under the options' friction and compressive strength (the vertical live load's),
+// in `lp`'s storage when it has some, else made anew in `workspace`: every analysis of rings one after
+// another (the rounds, t_min's and b_min's searches) reuses its programs through this.
+LimitLp& programs_of(const Ring& ring, const LimitOptions& options, LpWorkspace& workspace,
+                     std::unique_ptr<LimitLp>& lp);
+
 // The outcome of the non-associative iteration: the last answer, and why it did not converge (empty:
 // it did).
 struct SlidingIteration {

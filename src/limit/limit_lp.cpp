@@ -578,4 +578,13 @@ LimitLp::Answer LimitLp::least_work(double load_factor, double per_H, double per
   return impl_->optimise(objective, {nan, nan, nan, load_factor, 0.0}, warm);
 }
 
+LimitLp& programs_of(const Ring& ring, const LimitOptions& options, LpWorkspace& workspace,
+                     std::unique_ptr<LimitLp>& lp) {
+  if (lp) lp->load(ring, options.friction, options.compressive_strength);
+  else
+    lp = std::make_unique<LimitLp>(ring, options.friction, &workspace, LpSolver::dense, LiveKind::vertical,
+                                   options.compressive_strength);
+  return *lp;
+}
+
 }  // namespace ogive::limit_detail

@@ -234,12 +234,9 @@ struct WallMargin {
     if (scene.left_wall) scene.left_wall->thickness = b;
     if (scene.right_wall) scene.right_wall->thickness = b;
     make_ring_at(scene, options, fractions, work.ring, work.scratch);
-    if (work.lp) work.lp->load(work.ring, options.friction, options.compressive_strength);
-    else
-      work.lp = std::make_unique<LimitLp>(work.ring, options.friction, &work.workspace, limit_detail::LpSolver::dense,
-                                          limit_detail::LiveKind::vertical, options.compressive_strength);
+    LimitLp& lp = programs_of(work.ring, options, work.workspace, work.lp);
     const bool warm = !work.basis.empty() && work.basis_joints == work.ring.joints.size();
-    LimitLp::Answer a = work.lp->margin(load_factor, warm ? &work.basis : nullptr);
+    LimitLp::Answer a = lp.margin(load_factor, warm ? &work.basis : nullptr);
     ++solves;
     work.basis = a.basis;
     work.basis_joints = work.ring.joints.size();

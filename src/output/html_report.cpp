@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -178,9 +177,7 @@ std::string safety_section(const Scene& scene, const LimitResult& lim) {
   if (scene.has_walls()) {
     s += row("least wall thickness b<sub>min</sub>", cell(lim.wall_thickness_min, 1, "m"));
     s += row("wall factor b<sub>w</sub> / b<sub>min</sub> (the thinner wall)",
-             cell(std::min(scene.left_wall ? scene.left_wall->thickness : std::numeric_limits<double>::infinity(),
-                           scene.right_wall ? scene.right_wall->thickness : std::numeric_limits<double>::infinity()) /
-                  lim.wall_thickness_min));
+             cell(scene.thinnest_wall() / lim.wall_thickness_min));
   }
   return s + "</table></section>\n";
 }

@@ -1,7 +1,6 @@
 // The assessment (assessment.hpp): the analyses that exist, each compared with its required value.
 #include "ogive/solve/assessment.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -58,17 +57,13 @@ std::string limit_reason(const LimitResult& r) {
   return fmt::format("limit analysis {}: {}", to_string(r.status), r.message);
 }
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
 CriterionResult geometric_factor(const Scene& scene, const LimitResult& lr, double need) {
   const Criterion c = Criterion::geometric_safety_factor;
   if (!limit_answered(lr)) return unassessed(c, need, limit_reason(lr));
   if (!(lr.thickness_min > 0)) {
     // Walls thinner than the least that stands: no arch thickness makes the system stand (t_min's search
     // stops at the thickest springing joint the walls carry), so its geometric factor is 0.
-    const double thinnest_wall = std::min(scene.left_wall ? scene.left_wall->thickness : kInfinity,
-                                          scene.right_wall ? scene.right_wall->thickness : kInfinity);
-    if (lr.status == LimitStatus::inadmissible && thinnest_wall < lr.wall_thickness_min) {
+    if (lr.status == LimitStatus::inadmissible && scene.thinnest_wall() < lr.wall_thickness_min) {
       CriterionResult r = judged(c, 0, need);
       r.reason = lr.message;
       return r;

@@ -8,6 +8,8 @@
 // its rotation counter-clockwise positive; reactions are given in Solution::reactions.
 #pragma once
 
+#include <algorithm>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -155,6 +157,11 @@ struct Scene {
   // support then; only the limit analysis takes walls (analyse_limit), the elastic analyses do not.
   std::optional<Wall> left_wall, right_wall;
   bool has_walls() const { return left_wall.has_value() || right_wall.has_value(); }
+  // b_w of the thinner wall, m; infinity without walls.
+  double thinnest_wall() const {
+    const double none = std::numeric_limits<double>::infinity();
+    return std::min(left_wall ? left_wall->thickness : none, right_wall ? right_wall->thickness : none);
+  }
 
   // Sets both springings' outward spread to d (m): today's "support displacement" of the paper.
   void set_support_displacement(double d) { left.spread = right.spread = d; }
