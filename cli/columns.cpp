@@ -76,6 +76,15 @@ constexpr ColumnDoc kColumnDocs[] = {
     {"right_wall_density", "kg/m^3", "right wall's density"},
     {"right_wall_top_load", "N/m", "load on the right wall's top, downwards"},
     {"right_wall_top_load_at", "", "where it acts, a fraction of b_w from the inner face"},
+    {"wall_lean", "rad", "--wall-lean as given: both walls' lean, outwards positive (the rotation about the base's outer toe; for small rotations the top's outward displacement / h_w)"},
+    {"left_wall_lean", "rad", "left wall's lean, outwards positive (counter-clockwise), about its base's outer toe; empty: no wall"},
+    {"right_wall_lean", "rad", "right wall's lean, outwards positive (clockwise), about its base's outer toe; empty: no wall"},
+    {"left_lean_spread_ratio", "", "thrust: the left springing's horizontal movement that the left wall's lean causes, outwards positive / span (its top's outward displacement at the springing line, lean h_w, / span); added to left_spread_ratio's"},
+    {"left_lean_settlement_ratio", "", "thrust: the left springing's vertical movement that the wall's lean causes, downwards positive / span (an outward lean raises it); added to left_settlement_ratio's"},
+    {"left_lean_rotation", "rad", "thrust: the left springing's rotation that the wall's lean causes, counter-clockwise positive (the lean on a clamped springing, 0 on a pinned one, which turns freely); added to left_rotation"},
+    {"right_lean_spread_ratio", "", "thrust: as left_lean_spread_ratio, of the right springing and wall"},
+    {"right_lean_settlement_ratio", "", "thrust: as left_lean_settlement_ratio, of the right springing and wall"},
+    {"right_lean_rotation", "rad", "thrust: as left_lean_rotation, of the right springing (minus the lean on a clamped springing)"},
     {"left_wall_crossings", "", "thrust: where the resultant of the left springing's reaction, the wall's weight and its top load crosses the left wall's beds, y/L:x/L joined by ';', from the highest bed to the base in four equal parts (the wall rigid)"},
     {"left_wall_base_eccentricity", "m", "thrust: the resultant's distance from the centre of the left wall's base, outwards positive"},
     {"left_wall_stability_ratio", "", "thrust: the left wall base's half-width over the resultant's distance from its centre (> 1: the resultant inside the base)"},
@@ -266,7 +275,8 @@ const std::vector<std::string>& scene_columns() {
       "live_load_from_x", "live_load_to_x", "fill_height", "unit_weight", "wall_height", "wall_thickness",
       "wall_density", "wall_top_load", "wall_top_load_at", "left_wall_height", "left_wall_thickness",
       "left_wall_density", "left_wall_top_load", "left_wall_top_load_at", "right_wall_height",
-      "right_wall_thickness", "right_wall_density", "right_wall_top_load", "right_wall_top_load_at"};
+      "right_wall_thickness", "right_wall_density", "right_wall_top_load", "right_wall_top_load_at", "wall_lean",
+      "left_wall_lean", "right_wall_lean"};
   return columns;
 }
 
@@ -424,7 +434,7 @@ void add_scene_columns(CsvRow& row, const SceneParameters& p, const Curve* curve
   for (double v : {p.wall_height, p.wall_thickness, p.wall_density, p.wall_top_load, p.wall_top_load_at,
                    p.left_wall_height, p.left_wall_thickness, p.left_wall_density, p.left_wall_top_load,
                    p.left_wall_top_load_at, p.right_wall_height, p.right_wall_thickness, p.right_wall_density,
-                   p.right_wall_top_load, p.right_wall_top_load_at})
+                   p.right_wall_top_load, p.right_wall_top_load_at, p.wall_lean, p.left_wall_lean, p.right_wall_lean})
     add_parameter(row, v);
 }
 

@@ -63,16 +63,19 @@ struct Inapplicable {
 void hide_inapplicable(CLI::App& cmd, std::span<const Inapplicable> options);
 void refuse_inapplicable(const CLI::App& cmd, const char* command, std::span<const Inapplicable> options);
 
-// The scene options that move the springings, each with the same reason: for an analysis that moves them
-// itself (spread, and draw's spreading stage).
-constexpr std::array<Inapplicable, 7> springing_movements(const char* why) {
+// The scene options that move the springings (a leaning wall moves its springing too), each with the same
+// reason: for an analysis that moves them itself (spread, and draw's spreading stage) or takes them as built.
+constexpr std::array<Inapplicable, 10> springing_movements(const char* why) {
   return {{{"--support-displacement-ratio", why},
            {"--left-spread-ratio", why},
            {"--right-spread-ratio", why},
            {"--left-settlement-ratio", why},
            {"--right-settlement-ratio", why},
            {"--left-rotation", why},
-           {"--right-rotation", why}}};
+           {"--right-rotation", why},
+           {"--wall-lean", why},
+           {"--left-wall-lean", why},
+           {"--right-wall-lean", why}}};
 }
 
 // CLI11 would read "" as 0 and saturate huge integers: numeric options must be what parse_number

@@ -28,11 +28,12 @@ bool positive(double v) { return v > 0; }
 bool any_number(double) { return true; }
 bool within_span(double v) { return v >= 0 && v <= 1; }
 bool non_negative(double v) { return v >= 0; }
-bool small_movement(double v) { return std::abs(v) <= 0.01; }
+bool small_movement(double v) { return std::abs(v) <= kLargestMovement; }
 constexpr const char* kSpanRule = "must lie in [0, 1] (x / L within the span)";
 constexpr const char* kInSpanRule = "must lie in [0, L] (m from the left springing, within the span)";
 constexpr const char* kWallFractionRule = "must lie in [0, 1] (a fraction of the wall's thickness from its inner face)";
 constexpr const char* kMovementRule = "must lie in [-0.01, 0.01] (beyond, small-displacement theory does not hold)";
+constexpr const char* kLeanRule = "must lie in [-0.01, 0.01] (rad; beyond, small-displacement theory does not hold)";
 
 // What each scene option is, with its unit, for --help (the rules are scene_axes').
 const std::map<std::string, std::string>& axis_meanings() {
@@ -90,6 +91,10 @@ const std::map<std::string, std::string>& axis_meanings() {
         {"top-load", "vertical load on the wall's top (a wall above, a roof), downwards, N/m (kN/m with --units kN) "
                      "(default 0)"},
         {"top-load-at", "where the top load acts, a fraction of b_w from the inner face (default 0.5)"},
+        {"lean", "wall's lean, rad, outwards positive: its rotation about its base's outer toe, which for small "
+                 "rotations is its out-of-plumb, the top's outward displacement over h_w (also in mm/m or %); it moves "
+                 "the springing (out, up and, clamped, turning with the wall), adding to the springing's given "
+                 "movement (thrust, draw, report) (default 0)"},
     };
     for (const auto& [name, meaning] : wall)
       for (const char* side : {"", "left-", "right-"})
@@ -182,6 +187,9 @@ std::vector<Axis> scene_axes() {
       {"--wall-top-load-at", "", &P::wall_top_load_at, within_span, kWallFractionRule},
       {"--left-wall-top-load-at", "", &P::left_wall_top_load_at, within_span, kWallFractionRule},
       {"--right-wall-top-load-at", "", &P::right_wall_top_load_at, within_span, kWallFractionRule},
+      {"--wall-lean", "", &P::wall_lean, small_movement, kLeanRule},
+      {"--left-wall-lean", "", &P::left_wall_lean, small_movement, kLeanRule},
+      {"--right-wall-lean", "", &P::right_wall_lean, small_movement, kLeanRule},
   };
 }
 

@@ -21,6 +21,10 @@ class App;
 
 namespace ogive::cli {
 
+// The largest movement of a springing the scene options take: its spread and settlement over the span,
+// its rotation in rad (beyond, small-displacement theory does not hold).
+inline constexpr double kLargestMovement = 0.01;
+
 // One scene of a sweep, as its row prints it (NaN: not given, or not a parameter of the curve).
 struct SceneParameters {
   std::size_t scene = 0;  // 1-based number in the sweep
@@ -43,6 +47,9 @@ struct SceneParameters {
   double wall_height, wall_thickness, wall_density, wall_top_load, wall_top_load_at;
   double left_wall_height, left_wall_thickness, left_wall_density, left_wall_top_load, left_wall_top_load_at;
   double right_wall_height, right_wall_thickness, right_wall_density, right_wall_top_load, right_wall_top_load_at;
+  // The walls' lean (rad, outwards positive; wall_lean_movement): --wall-lean as given, and each wall's
+  // as built (0 unless given; NaN: no wall on that side).
+  double wall_lean, left_wall_lean, right_wall_lean;
   const char* left_support = "clamped";
   const char* right_support = "clamped";
   const char* section = "elastic";

@@ -115,7 +115,7 @@ void refuse_walls(const CLI::App& cmd) {
 // one of both walls.
 void check_wall_options(const CLI::App& cmd) {
   const bool any_height = given_of(cmd, {"--wall-height", "--left-wall-height", "--right-wall-height"}) != nullptr;
-  for (const char* name : {"thickness", "density", "top-load", "top-load-at"}) {
+  for (const char* name : {"thickness", "density", "top-load", "top-load-at", "lean"}) {
     const std::string both = fmt::format("--wall-{}", name);
     if (given(cmd, both) && !any_height)
       throw UsageError(fmt::format("{}: needs --wall-height (or --left-wall-height, --right-wall-height)", both));
@@ -123,7 +123,7 @@ void check_wall_options(const CLI::App& cmd) {
   for (const char* side : {"left", "right"}) {
     const std::string height = fmt::format("--{}-wall-height", side);
     const bool has_height = given(cmd, "--wall-height") || given(cmd, height);
-    for (const char* name : {"thickness", "density", "top-load", "top-load-at"}) {
+    for (const char* name : {"thickness", "density", "top-load", "top-load-at", "lean"}) {
       const std::string flag = fmt::format("--{}-wall-{}", side, name);
       if (given(cmd, flag) && !has_height)
         throw UsageError(fmt::format("{}: needs --wall-height or {}", flag, height));
@@ -280,11 +280,15 @@ void ScenePlan::plan_axes(SceneOptions& o, const CLI::App& cmd) {
   if (const CLI::Option* units = cmd.get_option_no_throw("--units"); units && units->count() > 0)
     force_unit_ = force_unit(units->as<std::string>());
   thickness_flag_ = given(cmd, "--thickness") ? "--thickness" : "--thickness-ratio";
+  for (const char* side : {"left", "right"}) {
+    const std::string own = fmt::format("--{}-spread-ratio", side);
+    spread_flags_[side[0] == 'r' ? 1 : 0] = given(cmd, own) ? own : "--support-displacement-ratio";
+  }
   const auto given_here = [&](const std::string& flag) {
     const CLI::Option* o = cmd.get_option_no_throw(flag);
     return o && o->count() > 0;
   };
-  for (const char* what : {"height", "thickness", "density", "top-load", "top-load-at"})
+  for (const char* what : {"height", "thickness", "density", "top-load", "top-load-at", "lean"})
     for (const char* side : {"left", "right"})
       if (given_here(fmt::format("--wall-{}", what)) && !given_here(fmt::format("--{}-wall-{}", side, what)))
         walls_by_shared_flag_.push_back(fmt::format("--{}-wall-{}", side, what));
@@ -379,16 +383,18 @@ SceneParameters ScenePlan::parameters(std::size_t index) const {
   if (std::isnan(p.right_spread_ratio)) p.right_spread_ratio = p.support_displacement_ratio;
   // Each wall's fields: its own option, else both walls', else the default (none without a height).
   const auto either = [](double own, double both) { return std::isnan(own) ? both : own; };
-  for (auto [h, b, rho, q, at] : {std::tuple{&p.left_wall_height, &p.left_wall_thickness, &p.left_wall_density,
-                                             &p.left_wall_top_load, &p.left_wall_top_load_at},
-                                  std::tuple{&p.right_wall_height, &p.right_wall_thickness, &p.right_wall_density,
-                                             &p.right_wall_top_load, &p.right_wall_top_load_at}}) {
+  for (auto [h, b, rho, q, at, lean] :
+       {std::tuple{&p.left_wall_height, &p.left_wall_thickness, &p.left_wall_density, &p.left_wall_top_load,
+                   &p.left_wall_top_load_at, &p.left_wall_lean},
+        std::tuple{&p.right_wall_height, &p.right_wall_thickness, &p.right_wall_density, &p.right_wall_top_load,
+                   &p.right_wall_top_load_at, &p.right_wall_lean}}) {
     *h = either(*h, p.wall_height);
     if (std::isnan(*h)) continue;
     *b = either(*b, p.wall_thickness);
     *rho = either(either(*rho, p.wall_density), p.density);
     *q = either(either(*q, p.wall_top_load), 0.0);
     *at = either(either(*at, p.wall_top_load_at), 0.5);
+    *lean = either(either(*lean, p.wall_lean), 0.0);
   }
   p.left_support = left_kind_ == SupportKind::clamped ? "clamped" : "pinned";
   p.right_support = right_kind_ == SupportKind::clamped ? "clamped" : "pinned";
@@ -503,12 +509,44 @@ ScenePlan::Built ScenePlan::build(const SceneParameters& p) const {
       scene.right_wall = Wall{p.right_wall_height, p.right_wall_thickness, p.right_wall_density,
                               p.right_wall_top_load * p.force_unit, p.right_wall_top_load_at};
     scene.validate();
+    lean_walls(p, scene);
     warn_of_small_loads(p, scene);
     out.scene = std::move(scene);
   } catch (const std::invalid_argument& e) {
     out.problem = problem_words(e.what());
   }
   return out;
+}
+
+// Each leaning wall moves its springing (wall_lean_movement), over the movement the options give it:
+// small movements add, and their sum keeps the options' rule of small displacements.
+void ScenePlan::lean_walls(const SceneParameters& p, Scene& scene) const {
+  for (const bool right : {false, true}) {
+    const std::optional<Wall>& wall = right ? scene.right_wall : scene.left_wall;
+    const double lean = right ? p.right_wall_lean : p.left_wall_lean;
+    if (!wall || lean == 0) continue;
+    Support& support = right ? scene.right : scene.left;
+    const Support m = wall_lean_movement(wall_outline(*scene.curve, scene.thickness, *wall, right), lean, support.kind);
+    const char* side = right ? "right" : "left";
+    const std::string& spread_flag = spread_flags_[right ? 1 : 0];
+    // Each component over the span (the rotation in rad): the options' movement, the lean's, their sum.
+    for (const auto& [what, flag, given, moved, scale] :
+         {std::tuple{"spread", spread_flag, support.spread, m.spread, p.span},
+          {"settlement", fmt::format("--{}-settlement-ratio", side), support.settlement, m.settlement, p.span},
+          {"rotation", fmt::format("--{}-rotation", side), support.rotation, m.rotation, 1.0}}) {
+      const double total = (given + moved) / scale;
+      if (std::abs(total) <= kLargestMovement) continue;
+      throw std::invalid_argument(fmt::format(
+          "--{}-wall-lean: the {} springing's {} {}, {}{} from the lean, must lie in [-{}, {}] (beyond, "
+          "small-displacement theory does not hold), got {}",
+          side, side, what, scale == 1.0 ? "(rad)" : "over the span",
+          given != 0 ? fmt::format("{} from {} plus ", given / scale, flag) : std::string(), moved / scale,
+          kLargestMovement, kLargestMovement, total));
+    }
+    support.spread += m.spread;
+    support.settlement += m.settlement;
+    support.rotation += m.rotation;
+  }
 }
 
 // A point or live load below 1 % of the arch's own weight, given as a bare number in N: most likely

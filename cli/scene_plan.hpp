@@ -53,6 +53,7 @@ class ScenePlan {
   void plan_axes(SceneOptions& o, const CLI::App& cmd);
   void require_some_scene() const;
   void warn_of_small_loads(const SceneParameters& p, const Scene& scene) const;
+  void lean_walls(const SceneParameters& p, Scene& scene) const;
   std::shared_ptr<const Curve> make_curve(const SceneParameters& p) const;
   void derive_metres(SceneParameters& p) const;
   void choose_dimensions(const SceneOptions& o, const CLI::App& cmd);
@@ -67,6 +68,8 @@ class ScenePlan {
   double model_tolerance_ = 0;
   std::size_t size_ = 1;
   std::string thickness_flag_;   // --thickness-ratio or --thickness: the one the user's thickness came by
+  std::string spread_flags_[2];  // each springing's spread came by: --left-spread-ratio (--right-...) or
+                                 // --support-displacement-ratio
   // The side's wall options (--left-wall-height, ...) whose value came by the shared one (--wall-height).
   std::vector<std::string> walls_by_shared_flag_;
   std::string shape_flag_;       // what set the pointed arch's shape: --eccentricity, --rise-ratio, --rise, --radius

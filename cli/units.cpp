@@ -40,6 +40,9 @@ const Dimension kStress{"a stress",
                          {"N/mm^2", 6}}};
 const Dimension kUnitWeight{"a unit weight", {{"N/m3", 0}, {"N/m^3", 0}, {"kN/m3", 3}, {"kN/m^3", 3}}};
 const Dimension kAcceleration{"an acceleration", {{"m/s2", 0}, {"m/s^2", 0}}};
+// A wall's lean: rad, or its out-of-plumb (the top's displacement over the height, the same number for
+// small rotations) in mm per m or per cent.
+const Dimension kLean{"a lean", {{"rad", 0}, {"mm/m", -3}, {"%", -2}}};
 
 const std::map<std::string_view, const Dimension*>& dimensions() {
   static const std::map<std::string_view, const Dimension*> of = {
@@ -53,6 +56,7 @@ const std::map<std::string_view, const Dimension*>& dimensions() {
       {"--wall-thickness", &kLength}, {"--left-wall-thickness", &kLength}, {"--right-wall-thickness", &kLength},
       {"--wall-density", &kDensity},  {"--left-wall-density", &kDensity}, {"--right-wall-density", &kDensity},
       {"--wall-top-load", &kLineForce}, {"--left-wall-top-load", &kLineForce}, {"--right-wall-top-load", &kLineForce},
+      {"--wall-lean", &kLean},        {"--left-wall-lean", &kLean},     {"--right-wall-lean", &kLean},
   };
   return of;
 }

@@ -147,9 +147,11 @@ std::string draw_title(const SceneParameters& p) {
   title += fmt::format(", span {:.6g} m, t/L {:.6g}", p.span, p.thickness_ratio);
   if (p.support_displacement_ratio != 0) title += fmt::format(", d/L {:.6g}", p.support_displacement_ratio);
   if (p.plane_strain) title += ", plane strain";
-  for (auto [side, h, b] : {std::tuple{"left", p.left_wall_height, p.left_wall_thickness},
-                            std::tuple{"right", p.right_wall_height, p.right_wall_thickness}})
+  for (auto [side, h, b, lean] : {std::tuple{"left", p.left_wall_height, p.left_wall_thickness, p.left_wall_lean},
+                                  std::tuple{"right", p.right_wall_height, p.right_wall_thickness, p.right_wall_lean}}) {
     if (!std::isnan(h)) title += fmt::format(", {} wall {:g} m high, {:g} m thick", side, h, b);
+    if (!std::isnan(h) && lean != 0) title += fmt::format(", leaning {:.6g} rad outwards", lean);
+  }
   if (std::string(p.section) != "elastic") title += fmt::format(", {} section", p.section);
   const double kilonewtons = p.force_unit / 1000;  // the force options' unit in kN
   if (!std::isnan(p.point_load))

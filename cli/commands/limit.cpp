@@ -87,6 +87,9 @@ void add_analysis_options(CLI::App& cmd, LimitText& t) {
 // given, and left out of `limit --help`.
 constexpr const char* kMovementWhy =
     "rigid voussoirs ignore the supports' movements: a spreading support brings the arch to H_min";
+constexpr const char* kLeanWhy =
+    "the limit analysis takes the walls rigid and plumb: a wall's lean moves its springing, which rigid voussoirs "
+    "ignore";
 constexpr const char* kElasticWhy =
     "rigid voussoirs have no stiffness: the material's elastic constants belong to thrust, profile and draw";
 constexpr Inapplicable kNotForLimit[] = {
@@ -97,6 +100,9 @@ constexpr Inapplicable kNotForLimit[] = {
     {"--right-settlement-ratio", kMovementWhy},
     {"--left-rotation", kMovementWhy},
     {"--right-rotation", kMovementWhy},
+    {"--wall-lean", kLeanWhy},
+    {"--left-wall-lean", kLeanWhy},
+    {"--right-wall-lean", kLeanWhy},
     {"--youngs-modulus", kElasticWhy},
     {"--poisson-ratio", kElasticWhy},
     {"--shear-coefficient", kElasticWhy},

@@ -1,6 +1,7 @@
 // ogive thrust: the reactions H, V and H/V, one row per scene and solver combination.
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -37,10 +38,19 @@ struct ThrustOptions {
 const std::vector<std::string> kWallColumns = {
     "left_wall_crossings",  "left_wall_base_eccentricity",  "left_wall_stability_ratio",  "left_wall_geometric_factor",
     "right_wall_crossings", "right_wall_base_eccentricity", "right_wall_stability_ratio", "right_wall_geometric_factor"};
+// The springing movements the walls' leans cause (wall_lean_movement): printed by default when a lean is
+// given.
+const std::vector<std::string> kLeanColumns = {"left_lean_spread_ratio",  "left_lean_settlement_ratio",
+                                               "left_lean_rotation",      "right_lean_spread_ratio",
+                                               "right_lean_settlement_ratio", "right_lean_rotation"};
 // The beds at which the crossings column gives the resultant: this many equal parts of the wall.
 constexpr int kWallCrossingParts = 4;
 
-Columns thrust_columns(bool walls) {
+bool leans_given(const CLI::App& cmd) {
+  return given(cmd, "--wall-lean") || given(cmd, "--left-wall-lean") || given(cmd, "--right-wall-lean");
+}
+
+Columns thrust_columns(bool walls, bool leans) {
   std::vector<std::string> all = {
       "method", "integrator", "rtol", "status", "domain", "H", "V", "H_over_V", "H_left", "V_left", "M_left",
       "H_right", "V_right", "M_right", "max_thrust_eccentricity", "max_thrust_eccentricity_at", "thrust_in_kern",
@@ -53,7 +63,25 @@ Columns thrust_columns(bool walls) {
                                        "H_right", "V_right", "M_right", "error_estimate", "message"};
   all.insert(all.end(), kWallColumns.begin(), kWallColumns.end());
   if (walls) defaults.insert(defaults.end(), kWallColumns.begin(), kWallColumns.end());
+  all.insert(all.end(), kLeanColumns.begin(), kLeanColumns.end());
+  if (leans) defaults.insert(defaults.end(), kLeanColumns.begin(), kLeanColumns.end());
   return Columns(all, defaults);
+}
+
+// One springing's movement that its wall's lean causes, over the span (the rotation in rad): empty
+// without a wall on that side.
+void add_lean_columns(CsvRow& row, const SceneParameters& p, const Scene& scene, bool right) {
+  const std::optional<Wall>& wall = right ? scene.right_wall : scene.left_wall;
+  const double lean = right ? p.right_wall_lean : p.left_wall_lean;
+  if (!wall || std::isnan(lean)) {
+    for (int k = 0; k < 3; ++k) row.add(std::string_view{});
+    return;
+  }
+  const Support& support = right ? scene.right : scene.left;
+  const Support m = lean == 0 ? Support{support.kind, 0.0, 0.0, 0.0}
+                              : wall_lean_movement(wall_outline(*scene.curve, scene.thickness, *wall, right), lean,
+                                                   support.kind);
+  row.add(m.spread / p.span).add(m.settlement / p.span).add(m.rotation);
 }
 
 // One wall's columns: its resultant's crossings as y/L:x/L at the beds, its base's eccentricity, its
@@ -103,12 +131,14 @@ std::string thrust_row(const Columns& columns, const SceneParameters& p, const S
   row.add(sol.model ? to_string(sol.model->beam_model()) : "").add(d.model_error_estimate);
   add_wall_columns(row, scene, sol, false);
   add_wall_columns(row, scene, sol, true);
+  add_lean_columns(row, p, scene, false);
+  add_lean_columns(row, p, scene, true);
   return row.take();
 }
 
 int run_thrust(ThrustOptions& to, const CLI::App& cmd, std::ostream& out) {
   check_threads(to.threads);
-  Columns columns = thrust_columns(walls_given(cmd));
+  Columns columns = thrust_columns(walls_given(cmd), leans_given(cmd));
   if (to.columns.columns == "help") {
     write_all(out, columns.help(to.columns));
     return kExitOk;

@@ -175,6 +175,20 @@ WallOutline wall_outline(const SpringingJoint& joint, const Wall& wall, bool rig
   return o;
 }
 
+Support wall_lean_movement(const WallOutline& wall, double lean, SupportKind kind) {
+  if (!std::isfinite(lean)) refuse("wall_lean", "must be finite (rad, outwards positive)", lean);
+  // Outwards is -x for the left wall: its outward lean turns it counter-clockwise.
+  const double phi = -wall.outward * lean;
+  const Eigen::Vector2d arm = wall.joint.axis - Eigen::Vector2d(wall.outer_x, wall.base_y);
+  const Eigen::Vector2d u(-phi * arm.y(), phi * arm.x());  // phi k x arm
+  Support m;
+  m.kind = kind;
+  m.spread = wall.outward * u.x();
+  m.settlement = -u.y();
+  m.rotation = kind == SupportKind::clamped ? phi : 0.0;
+  return m;
+}
+
 bool Scene::symmetric() const {
   if (!curve || curve->extent() != CurveExtent::half || horizontal_acceleration != 0) return false;
   if (!same_wall(left_wall, right_wall)) return false;

@@ -107,6 +107,7 @@ inline const std::vector<CliCase>& cli_cases() {
       {{"thrust", "--method", "closed-form", "--wall-thickness", "3"}, "--wall-height"},
       {{"thrust", "--method", "closed-form", "--wall-height", "5"}, "--wall-thickness"},
       {{"thrust", "--method", "closed-form", "--wall-height", "5", "--wall-thickness", "3"}, "--wall-top-load"},
+      {{"thrust", "--method", "closed-form", "--wall-height", "5", "--wall-thickness", "3"}, "--wall-lean"},
   };
   return cases;
 }

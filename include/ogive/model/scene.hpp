@@ -131,6 +131,19 @@ struct WallOutline {
 WallOutline wall_outline(const SpringingJoint& joint, const Wall& wall, bool right);
 WallOutline wall_outline(const Curve& curve, double thickness, const Wall& wall, bool right);
 
+// The springing's movement when its wall leans: the wall's rigid rotation by `lean` rad about its base's
+// outer toe T = (outer_x, base_y), outwards positive (the left wall turning counter-clockwise, the right
+// one clockwise). For small rotations the lean is the wall's out-of-plumb, its top's outward displacement
+// over its height. The rotation phi (counter-clockwise: lean on the left, -lean on the right) moves the
+// springing's axis point p (joint.axis, where the arch's boundary conditions hold) by
+// phi k x (p - T) = phi (-(p_y - T_y), p_x - T_x): outwards by lean h_w and upwards by lean times p's
+// horizontal distance from the toe. A clamped springing also turns with the wall by phi; a pinned one
+// only translates (its section turns freely). Returned as a Support of `kind` (spread outwards and
+// settlement downwards, m; rotation counter-clockwise, rad): the movement alone, which adds to the
+// springing's given movement (small displacements superpose). Throws std::invalid_argument for a lean
+// that is not finite.
+Support wall_lean_movement(const WallOutline& wall, double lean, SupportKind kind);
+
 struct Scene {
   // The axis: a half arch (symmetric) or a whole one, springing to springing (curve.hpp); required.
   std::shared_ptr<const Curve> curve;
@@ -154,7 +167,8 @@ struct Scene {
   // fraction of g, finite. A scene with a != 0 is not symmetric: it is solved over the whole arch.
   double horizontal_acceleration = 0;
   // The walls under the springings (none: the springing rests on the ground). A wall's base is the
-  // support then; only the limit analysis takes walls (analyse_limit), the elastic analyses do not.
+  // support then; only the limit analysis takes walls (analyse_limit), the elastic analyses do not (a
+  // wall's lean reaches them as its springing's movement: wall_lean_movement).
   std::optional<Wall> left_wall, right_wall;
   bool has_walls() const { return left_wall.has_value() || right_wall.has_value(); }
   // b_w of the thinner wall, m; infinity without walls.
