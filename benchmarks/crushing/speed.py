@@ -2,11 +2,14 @@
 """The cost of crushing: each scene's median time with and without --compressive-strength, in one run.
 
     python3 benchmarks/crushing/speed.py [--ogive build/ogive] [--repeats 21] [--strength 3.924MPa]
+                                         [--baseline OTHER_OGIVE]
 
 Every scene (L = 10 m, rho = 2000 kg/m^3) is solved --repeats times in one process (`ogive limit
 --repeats`, which times the analysis alone, on one core) without the option and with it, one scene
 after the other; the script prints both medians, their ratio and the linear programs each solved
-(`lp_solves`). Timings are noisy: compare ratios of one run.
+(`lp_solves`: the questions asked; with crushing each may take several programs or none). Timings
+are noisy: compare ratios of one run. --baseline times the scenes with crushing by another build too
+(each scene's four runs one after the other) and adds its median and ratio: before and after a change.
 """
 import argparse
 import csv
@@ -49,17 +52,29 @@ def run(ogive, args, repeats):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--ogive", default=os.path.join(ROOT, "build", "ogive"))
+    parser.add_argument("--baseline", help="another ogive to time with crushing too (before a change)")
     parser.add_argument("--repeats", type=int, default=21)
     parser.add_argument("--strength", default="3.924MPa")
     args = parser.parse_args()
-    print("| scene | without (ms) | with (ms) | ratio | programs without | programs with | status with |")
-    print("|---|---|---|---|---|---|---|")
+    fc = ["--compressive-strength", args.strength]
+    if args.baseline:
+        print("| scene | without (ms) | with, baseline (ms) | ratio | with (ms) | ratio |")
+        print("|---|---|---|---|---|---|")
+    else:
+        print("| scene | without (ms) | with (ms) | ratio | questions without | questions with | status with |")
+        print("|---|---|---|---|---|---|---|")
     for name, scene in SCENES.items():
         plain = run(args.ogive, scene, args.repeats)
-        crushed = run(args.ogive, scene + ["--compressive-strength", args.strength], args.repeats)
-        a, b = 1e3 * float(plain["median_seconds"]), 1e3 * float(crushed["median_seconds"])
-        print(f"| {name} | {a:.2f} | {b:.2f} | {b / a:.1f} | {plain['lp_solves']} | {crushed['lp_solves']} | "
-              f"{crushed['status']} |", flush=True)
+        a = 1e3 * float(plain["median_seconds"])
+        if args.baseline:
+            before = 1e3 * float(run(args.baseline, scene + fc, args.repeats)["median_seconds"])
+        crushed = run(args.ogive, scene + fc, args.repeats)
+        b = 1e3 * float(crushed["median_seconds"])
+        if args.baseline:
+            print(f"| {name} | {a:.2f} | {before:.2f} | {before / a:.1f} | {b:.2f} | {b / a:.1f} |", flush=True)
+        else:
+            print(f"| {name} | {a:.2f} | {b:.2f} | {b / a:.1f} | {plain['lp_solves']} | {crushed['lp_solves']} | "
+                  f"{crushed['status']} |", flush=True)
 
 
 if __name__ == "__main__":

@@ -215,6 +215,9 @@ class LimitLp {
   int solves() const { return solves_; }
   // The linear programs solved for the crushing cuts beyond the first of each program (0 with infinite f_c).
   int cut_rounds() const;
+  // The linear programs solved in all (with crushing: none for a question whose warm start certified
+  // itself, several for one that took rounds of cuts).
+  int programs() const;
   // Programs the dense method handed to Clp (a basis it found singular, or its step limit).
   int clp_fallbacks() const;
 

@@ -587,6 +587,8 @@ std::vector<int> LimitLp::faces(const std::vector<int>& basis) const {
 
 int LimitLp::cut_rounds() const { return impl_->cut_rounds; }
 
+int LimitLp::programs() const { return impl_->programs; }
+
 LimitLp::Answer LimitLp::extreme_thrust(double load_factor, bool largest, const std::vector<int>* warm) {
   ++solves_;
   const double nan = std::numeric_limits<double>::quiet_NaN();

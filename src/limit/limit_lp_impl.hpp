@@ -113,8 +113,10 @@ struct LimitLp::Impl {
     std::array<double, kUnknowns> z{};
     std::vector<int> basis;
   };
+  mutable int programs = 0;  // the linear programs solve() solved
   Solved solve(const Held& h, const std::array<double, kUnknowns>& fixed, const Objective& objective,
                const std::vector<int>* warm) const {
+    ++programs;
     return solver == LpSolver::dense ? dense(h, fixed, objective, warm) : clp(h, fixed, objective, warm);
   }
   Solved dense(const Held& h, const std::array<double, kUnknowns>& fixed, const Objective& objective,
