@@ -23,6 +23,7 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 
 BASE = ["--span", "10", "--density", "2000"]
 POINT = ["--point-load", "2e4", "--point-load-at", "0.3"]
+ACCELERATION = "a_c"  # a scene with it prints horizontal_load_factor too (a_c is solved for it)
 WALLS = ["--thickness-ratio", "0.1", "--wall-height", "10", "--wall-thickness", "2"]
 SCENES = {
     "semicircle, t/L 0.08": ["--curve", "semicircular"],
@@ -37,12 +38,18 @@ SCENES = {
     "semicircle, t/L 0.08, friction 0.6 (non-associative)": ["--curve", "semicircular", "--friction", "0.6"],
     "segmental rise 0.25, 20 kN/m at 0.3 L, friction 0.6 (non-associative)":
         ["--curve", "segmental", "--rise-ratio", "0.25", "--friction", "0.6"] + POINT,
+    "pointed eps 0.2, t/L 0.08, live load 10 kN/m^2 on the left half": ["--curve", "pointed", "--eccentricity", "0.2",
+                                                                    "--live-load", "1e4", "--live-load-from", "0",
+                                                                    "--live-load-to", "0.5"],
+    "semicircle, t/L 0.08, and a_c": ["--curve", "semicircular", ACCELERATION],
 }
 
 
 def run(ogive, args, repeats):
-    out = subprocess.run([ogive, "limit", *BASE, *args, "--repeats", str(repeats), "--columns",
-                          "status,lp_solves,median_seconds"], check=False, capture_output=True, text=True)
+    columns = "status,lp_solves,median_seconds" + (",horizontal_load_factor" if ACCELERATION in args else "")
+    args = [a for a in args if a != ACCELERATION]
+    out = subprocess.run([ogive, "limit", *BASE, *args, "--repeats", str(repeats), "--columns", columns],
+                         check=False, capture_output=True, text=True)
     rows = list(csv.DictReader(io.StringIO(out.stdout)))
     if not rows:
         sys.exit(f"ogive limit {' '.join(args)}: {out.stderr.strip()}")
