@@ -123,6 +123,20 @@ bool dual_feasible(const std::vector<DenseRow>& rows, const Basis& basis, int k,
 
 }  // namespace
 
+bool dense_vertex(const std::vector<DenseRow>& rows, const std::vector<double>& b, const std::vector<int>& free,
+                  const std::vector<int>& basis, std::array<double, K>& z) {
+  const int k = static_cast<int>(free.size()), n = static_cast<int>(rows.size());
+  if (static_cast<int>(basis.size()) != k || k == 0) return false;
+  Basis vertex;
+  for (int i = 0; i < k; ++i) {
+    if (basis[i] < 0 || basis[i] >= n) return false;
+    vertex.rows[i] = basis[i];
+  }
+  if (!evaluate(rows, b, free, std::array<double, K>{}, vertex)) return false;
+  for (int c = 0; c < k; ++c) z[free[c]] = vertex.z[c];
+  return true;
+}
+
 DenseLpAnswer solve_dense_lp(const std::vector<DenseRow>& rows, const std::vector<double>& b,
                              const std::vector<int>& free, const std::array<double, K>& objective,
                              const std::vector<int>& start, const std::vector<int>* warm, double tolerance) {

@@ -41,4 +41,10 @@ DenseLpAnswer solve_dense_lp(const std::vector<DenseRow>& rows, const std::vecto
                              const std::vector<int>& free, const std::array<double, kDenseUnknowns>& objective,
                              const std::vector<int>& start, const std::vector<int>* warm, double tolerance);
 
+// The vertex of the k rows `basis` (right-hand sides `b`) into z's free unknowns (the others left as
+// they are), by the same arithmetic as solve_dense_lp's: the optimum it returns on that basis. False when
+// the rows are singular or an index is out of range.
+bool dense_vertex(const std::vector<DenseRow>& rows, const std::vector<double>& b, const std::vector<int>& free,
+                  const std::vector<int>& basis, std::array<double, kDenseUnknowns>& z);
+
 }  // namespace ogive::limit_detail

@@ -479,7 +479,7 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   r.lp_solves += lp.solves() - solves_before;
 
   // t_min: bracket the root of the margin, then Illinois.
-  MarginFunction f{scene,        options, refined, load_factor, work, 0, false, margin.basis,
+  MarginFunction f{scene,        options, refined, load_factor, work, 0, false, lp.faces(margin.basis),
                    std::numeric_limits<double>::infinity(), {}, static_cast<int>(ring.joints.size())};
   const double t = scene.thickness;
   const double t_cap = std::min(0.99 * max_thickness(curve), limit_detail::thickest_on_walls(scene));

@@ -197,6 +197,10 @@ class LimitLp {
   // The rows with those keys here (a cut's made anew when this ring has its joint); empty when one of
   // them has none (its joint is not in this ring).
   std::vector<int> rows(const std::vector<RowKey>& keys);
+  // The basis with each crushing cut replaced by its face's own row: indices that name the same rows in
+  // any program of a ring with as many joints (another LimitLp's, which makes the cuts anew from the
+  // faces when warm-started with them). Without crushing the basis itself.
+  std::vector<int> faces(const std::vector<int>& basis) const;
   // Non-associative friction (Gilbert, Casapulla & Ahmed 2006): with `normal_forces` (N/m, one per
   // joint, clamped at 0) each joint's two friction rows become |T_j| <= friction N_j with N_j those fixed
   // numbers (a Tresca-like row: its normality has no dilatancy), linear in the unknowns like every row;
@@ -211,6 +215,9 @@ class LimitLp {
   int solves() const { return solves_; }
   // The linear programs solved for the crushing cuts beyond the first of each program (0 with infinite f_c).
   int cut_rounds() const;
+  // The linear programs solved in all (with crushing: none for a question whose warm start certified
+  // itself, several for one that took rounds of cuts).
+  int programs() const;
   // Programs the dense method handed to Clp (a basis it found singular, or its step limit).
   int clp_fallbacks() const;
 

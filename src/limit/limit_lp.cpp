@@ -38,14 +38,17 @@ Objective pushing(Column c, bool maximise) {
   return o;
 }
 
-// Into `h`, whose storage is reused.
-void hold(const std::vector<Inequality>& rows, const std::array<double, kUnknowns>& fixed, Held& h) {
-  h.free.clear();
-  h.infeasible = false;
-  for (int c = 0; c < kUnknowns; ++c)
-    if (std::isnan(fixed[c])) h.free.push_back(c);
+// Into `h`, whose storage is reused; from row `from` on (the rows before it held already, as they are).
+void hold(const std::vector<Inequality>& rows, const std::array<double, kUnknowns>& fixed, Held& h,
+          std::size_t from = 0) {
+  if (from == 0) {
+    h.free.clear();
+    h.infeasible = false;
+    for (int c = 0; c < kUnknowns; ++c)
+      if (std::isnan(fixed[c])) h.free.push_back(c);
+  }
   h.b.resize(rows.size());
-  for (std::size_t r = 0; r < rows.size(); ++r) {
+  for (std::size_t r = from; r < rows.size(); ++r) {
     const Inequality& row = rows[r];
     double b = row.b;
     bool any = false;
@@ -151,11 +154,10 @@ void LimitLp::load(const Ring& ring, double friction, double compressive_strengt
     if (crushing) {
       // N = n . F, n the normal towards the right-hand part, F = (H + aG, V - D - lambda P).
       const Eigen::Vector2d d = (E - I) / h, n(d.y(), -d.x());
-      Impl::Normal normal;
+      Impl::Normal& normal = p.normals.emplace_back();  // in place: a copy of it stalled on its stores
       normal.a = {n.x(), n.y(), 0.0, horizontal ? n.x() * G : -n.y() * P, 0.0};
       normal.c = a == 0 ? -n.y() * D : -n.y() * D + n.x() * aG;
       normal.face_row = static_cast<int>(first);
-      p.normals.push_back(normal);
     }
     if (pin < ring.pins.size() && ring.pins[pin] == static_cast<int>(j)) {
       const Eigen::Vector2d A = ring.joints[j].axis / L;
@@ -283,18 +285,18 @@ std::vector<int> LimitLp::Impl::carried(const std::vector<int>& warm) {
   return out;
 }
 
-bool LimitLp::Impl::newton(const Solved& s, const std::vector<int>& free) {
+std::vector<int> LimitLp::Impl::newton(const std::vector<int>& basis, std::array<double, kUnknowns>& z,
+                                       const std::vector<int>& free) {
   const int k = static_cast<int>(free.size());
-  if (static_cast<int>(s.basis.size()) != k || k == 0) return false;
+  if (static_cast<int>(basis.size()) != k || k == 0) return {};
   using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kUnknowns, kUnknowns>;
   using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kUnknowns, 1>;
-  std::array<double, kUnknowns> z = s.z;
   Matrix J(k, k);
   Vector g(k);
   double residual = std::numeric_limits<double>::infinity();
   for (int step = 0; step <= kMaxNewtonSteps; ++step) {
     for (int i = 0; i < k; ++i) {
-      const int r = s.basis[static_cast<std::size_t>(i)], f = face_of(r);
+      const int r = basis[static_cast<std::size_t>(i)], f = face_of(r);
       if (f < 0) {  // a row of no face: linear, tight
         const Inequality& row = rows[static_cast<std::size_t>(r)];
         double v = -row.b;
@@ -314,21 +316,75 @@ bool LimitLp::Impl::newton(const Solved& s, const std::vector<int>& free) {
       }
     }
     residual = g.cwiseAbs().maxCoeff();
-    if (!std::isfinite(residual)) return false;
+    if (!std::isfinite(residual)) return {};
+    if (residual <= kNewtonResidual && step == 0) return basis;  // its rows hold their conditions already
     if (residual <= kNewtonResidual || step == kMaxNewtonSteps) break;
     Eigen::FullPivLU<Matrix> lu(J);
     lu.setThreshold(1e-12);
-    if (!lu.isInvertible()) return false;  // two rows of one face, say
+    if (!lu.isInvertible()) return {};  // two rows of one face, say
     const Vector dz = lu.solve(-g);
     for (int c = 0; c < k; ++c) z[free[static_cast<std::size_t>(c)]] += dz(c);
   }
-  if (!(residual <= kNewtonResidual)) return false;
+  if (!(residual <= kNewtonResidual)) return {};
+  // The basis with each face's row replaced by its cut at the solution (the face's own row at N = 0).
+  std::vector<int> out = basis;
   for (int i = 0; i < k; ++i) {
-    const int f = face_of(s.basis[static_cast<std::size_t>(i)]);
-    if (f >= 0) {
-      const double N = normal_force(f / 2, z);
-      if (N != 0) add_cut(f / 2, f % 2, N);
-    }
+    const int f = face_of(basis[static_cast<std::size_t>(i)]);
+    if (f < 0) continue;
+    const double N = normal_force(f / 2, z);
+    out[static_cast<std::size_t>(i)] =
+        N != 0 ? add_cut(f / 2, f % 2, N) : normals[static_cast<std::size_t>(f / 2)].face_row + f % 2;
+  }
+  return out;
+}
+
+LimitLp::Impl::Solved LimitLp::Impl::refined(const std::vector<int>& basis, const std::array<double, kUnknowns>& z,
+                                             const std::array<double, kUnknowns>& fixed) {
+  Solved out{Outcome::optimal, z, {}};
+  out.basis = newton(basis, out.z, held.free);
+  if (out.basis.empty()) return out;
+  // Its vertex as the dense method computes it (the answer one more program would return on it).
+  hold(rows, fixed, held, held.b.size());  // the cuts just added
+  out.z = fixed;
+  if (!dense_vertex(rows, held.b, held.free, out.basis, out.z)) out.basis.clear();
+  return out;
+}
+
+bool LimitLp::Impl::optimal(const Solved& s, const Objective& objective, const std::vector<int>& free) const {
+  // The Karush-Kuhn-Tucker conditions of the convex program: s.z satisfies every row and every face's
+  // exact condition to the LP's own tolerances, and the objective is a combination of the gradients of
+  // its basis' conditions (tight there) with multipliers >= 0 (an equality's of either sign). Then no
+  // feasible point is better: the optimum, as the program on the cuts at s.z would find it.
+  const int k = static_cast<int>(free.size());
+  if (static_cast<int>(s.basis.size()) != k || k == 0) return false;
+  using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kUnknowns, kUnknowns>;
+  using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kUnknowns, 1>;
+  Matrix Jt(k, k);
+  Vector pushed(k);
+  for (int i = 0; i < k; ++i) {
+    // Row i's gradient: a cut's row at s.z is the tangent of its face's condition there.
+    const Inequality& row = rows[static_cast<std::size_t>(s.basis[static_cast<std::size_t>(i)])];
+    for (int u = 0; u < k; ++u) Jt(u, i) = row.a[free[static_cast<std::size_t>(u)]];
+  }
+  for (int u = 0; u < k; ++u) pushed(u) = objective[free[static_cast<std::size_t>(u)]];
+  Eigen::FullPivLU<Matrix> lu(Jt);
+  lu.setThreshold(1e-12);
+  if (!lu.isInvertible()) return false;
+  const Vector y = lu.solve(pushed);
+  for (int i = 0; i < k; ++i)
+    if (!(y(i) >= -kFeasibility) && !rows[static_cast<std::size_t>(s.basis[static_cast<std::size_t>(i)])].equality)
+      return false;
+  for (int r = 0; r < cuts_begin; ++r) {
+    if (face_of(r) >= 0) continue;  // a face: its exact condition below
+    const Inequality& row = rows[static_cast<std::size_t>(r)];
+    double g = -row.b;
+    for (int c = 0; c < kUnknowns; ++c) g += row.a[c] * s.z[c];
+    if (g > kFeasibility || (row.equality && g < -kFeasibility)) return false;
+  }
+  for (std::size_t j = 0; j < normals.size(); ++j) {
+    const double N = normal_force(static_cast<int>(j), s.z);
+    for (int face = 0; face < 2; ++face)
+      if (crushing(static_cast<int>(j), face, s.z, N) > kCrushingTolerance) return false;
   }
   return true;
 }
@@ -345,25 +401,45 @@ LimitLp::Answer LimitLp::Impl::crushed(const Objective& objective, const std::ar
   if (warm) basis = carried(*warm);
   const std::vector<int>* start = warm ? &basis : nullptr;
   Held& h = held;
+  hold(rows, fixed, h);
+  if (h.infeasible) return finish(Solved{Outcome::infeasible, {}, {}}, objective);
+  std::array<double, kUnknowns> vertex = fixed;
+  if (warm && dense_vertex(rows, h.b, h.free, basis, vertex)) {
+    // The warm basis names the faces the previous program's optimum had active; when this optimum has
+    // the same, Newton's solution of their exact conditions from the basis' vertex is it and certifies
+    // itself (no program at all). Otherwise the first program starts from its cuts.
+    Solved guess = refined(basis, vertex, fixed);
+    if (!guess.basis.empty()) {
+      if (optimal(guess, objective, h.free)) return finish(guess, objective);
+      basis = std::move(guess.basis);
+    }
+  }
   for (int round = 0; round < kMaxCutRounds; ++round) {
     if (round > 0) ++cut_rounds;
-    hold(rows, fixed, h);
+    hold(rows, fixed, h, h.b.size());  // the cuts added since
     if (h.infeasible) return finish(Solved{Outcome::infeasible, {}, {}}, objective);
     const Solved s = solve(h, fixed, objective, start);
     if (s.outcome != Outcome::optimal) return finish(s, objective);
     const std::size_t before = cuts.size();
     bool broken = false;
-    for (std::size_t j = 0; j < normals.size(); ++j)
+    for (std::size_t j = 0; j < normals.size(); ++j) {
+      const double N = normal_force(static_cast<int>(j), s.z);
       for (int face = 0; face < 2; ++face)
-        if (crushing(static_cast<int>(j), face, s.z) > kCrushingTolerance) {
+        if (crushing(static_cast<int>(j), face, s.z, N) > kCrushingTolerance) {
           broken = true;
-          const double N = normal_force(static_cast<int>(j), s.z);
           if (N != 0) add_cut(static_cast<int>(j), face, N);
         }
+    }
     // A face broken by no more than the LP leaves a row (its cut at this very N is there already): done.
     if (!broken || cuts.size() == before) return finish(s, objective);
-    newton(s, h.free);
-    basis = s.basis;
+    // Newton's solution on the optimal basis' faces: the optimum when it certifies itself (a round
+    // without a program); else the next program starts from the basis with its faces' cuts there.
+    Solved next = refined(s.basis, s.z, fixed);
+    if (!next.basis.empty() && optimal(next, objective, h.free)) {
+      ++cut_rounds;
+      return finish(next, objective);
+    }
+    basis = next.basis.empty() ? s.basis : std::move(next.basis);
     start = &basis;
   }
   Answer a;
@@ -498,7 +574,20 @@ std::vector<int> LimitLp::rows(const std::vector<RowKey>& keys) {
   return out;
 }
 
+std::vector<int> LimitLp::faces(const std::vector<int>& basis) const {
+  const Impl& p = *impl_;
+  std::vector<int> out = basis;
+  for (int& r : out)
+    if (r >= p.cuts_begin) {
+      const Impl::Cut& c = p.cuts[static_cast<std::size_t>(r - p.cuts_begin)];
+      r = p.normals[static_cast<std::size_t>(c.joint)].face_row + c.face;
+    }
+  return out;
+}
+
 int LimitLp::cut_rounds() const { return impl_->cut_rounds; }
+
+int LimitLp::programs() const { return impl_->programs; }
 
 LimitLp::Answer LimitLp::extreme_thrust(double load_factor, bool largest, const std::vector<int>* warm) {
   ++solves_;

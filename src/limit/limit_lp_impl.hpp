@@ -113,8 +113,10 @@ struct LimitLp::Impl {
     std::array<double, kUnknowns> z{};
     std::vector<int> basis;
   };
+  mutable int programs = 0;  // the linear programs solve() solved
   Solved solve(const Held& h, const std::array<double, kUnknowns>& fixed, const Objective& objective,
                const std::vector<int>* warm) const {
+    ++programs;
     return solver == LpSolver::dense ? dense(h, fixed, objective, warm) : clp(h, fixed, objective, warm);
   }
   Solved dense(const Held& h, const std::array<double, kUnknowns>& fixed, const Objective& objective,
@@ -142,10 +144,13 @@ struct LimitLp::Impl {
   }
   // How far z breaks the crushing condition of the joint's face (> 0: broken), in the rows' units.
   double crushing(int joint, int face, const std::array<double, kUnknowns>& z) const {
+    return crushing(joint, face, z, normal_force(joint, z));
+  }
+  // The same with the joint's normal force N at z given (both faces share it).
+  double crushing(int joint, int face, const std::array<double, kUnknowns>& z, double N) const {
     const Inequality& row = rows[static_cast<std::size_t>(normals[static_cast<std::size_t>(joint)].face_row + face)];
     double g = -row.b;
     for (int c = 0; c < kUnknowns; ++c) g += row.a[c] * z[c];
-    const double N = normal_force(joint, z);
     return g + N * N / (2 * strength);
   }
   // The tangent cut of the face's condition at normal force N0 (program units; N^2 >= 2 N0 N - N0^2).
@@ -160,9 +165,19 @@ struct LimitLp::Impl {
     }
     return r < joint_rows ? row_face[static_cast<std::size_t>(r)] : -1;
   }
-  // Newton's method on the basis' rows, each face's as its exact condition: the tangent cuts at its
-  // solution (the optimum when the basis' rows are the optimum's active ones); false when it fails.
-  bool newton(const Solved& s, const std::vector<int>& free);
+  // Newton's method from z on the basis' rows, each face's as its exact condition: the tangent cuts at
+  // its solution (the optimum when the basis' rows are the optimum's active ones), and the basis with
+  // those cuts for its faces' rows (the basis itself when its rows hold their conditions at z already);
+  // empty when it fails.
+  std::vector<int> newton(const std::vector<int>& basis, std::array<double, kUnknowns>& z,
+                          const std::vector<int>& free);
+  // newton() on the basis from z, and the vertex of the basis it returns (held's right-hand sides
+  // extended to its cuts); an empty basis when it fails.
+  Solved refined(const std::vector<int>& basis, const std::array<double, kUnknowns>& z,
+                 const std::array<double, kUnknowns>& fixed);
+  // Whether s (z and a basis of cuts tight there) is the crushing program's optimum (the KKT conditions,
+  // to the LP's tolerances), so that no program need confirm it.
+  bool optimal(const Solved& s, const Objective& objective, const std::vector<int>& free) const;
   // A warm basis with the last ring's cuts made anew here (when the joints are as many).
   std::vector<int> carried(const std::vector<int>& warm);
 };

@@ -340,3 +340,73 @@ TEST_CASE("crushing: the cuts' programs solved by Clp give the dense method's op
     CHECK(dense.cut_rounds() > 0);
   }
 }
+
+TEST_CASE("crushing: a program warm-started from another thickness's optimum has the cold program's optimum") {
+  // The search for t_min solves the margin of thickness after thickness, each from the previous optimal
+  // basis: Newton's method on its faces' exact conditions, which certifies itself as the optimum (the
+  // KKT conditions) without a linear program when the active faces stay, and the rounds of cuts from
+  // there when they do not. Either way the optimum must be the one the program finds from nothing.
+  constexpr double kWarmCold = 1e-9;  // both hold the crushing rows to 1e-11 of W L
+  constexpr double kFc = 3e6;
+  using limit_detail::LimitLp;
+  using Question = LimitLp::Answer (*)(LimitLp&, const std::vector<int>*);
+  const Question questions[] = {
+      [](LimitLp& lp, const std::vector<int>* w) { return lp.margin(1.0, w); },
+      [](LimitLp& lp, const std::vector<int>* w) { return lp.extreme_thrust(1.0, false, w); },
+      [](LimitLp& lp, const std::vector<int>* w) { return lp.extreme_thrust(1.0, true, w); },
+      [](LimitLp& lp, const std::vector<int>* w) { return lp.collapse(w); },
+  };
+  int certified = 0, with_rounds = 0;
+  for (const Scene& scene : {loaded_semicircle(), loaded_segmental()}) {
+    LimitOptions o;
+    o.compressive_strength = kFc;
+    const Ring first = make_ring(scene, o);
+    for (double factor : {1.0001, 1.01, 1.1, 0.9}) {
+      Scene other = scene;
+      other.thickness *= factor;
+      const Ring ring = make_ring(other, o);
+      REQUIRE(ring.joints.size() == first.joints.size());  // the warm start needs as many joints
+      for (const Question& ask : questions) {
+        LimitLp warm(first, 0.0, nullptr, limit_detail::LpSolver::dense, limit_detail::LiveKind::vertical, kFc);
+        const LimitLp::Answer from = ask(warm, nullptr);
+        REQUIRE(from.outcome == LimitLp::Outcome::optimal);
+        warm.load(ring, 0.0, kFc);
+        const int programs = warm.programs();
+        const LimitLp::Answer a = ask(warm, &from.basis);
+        LimitLp cold(ring, 0.0, nullptr, limit_detail::LpSolver::dense, limit_detail::LiveKind::vertical, kFc);
+        const LimitLp::Answer b = ask(cold, nullptr);
+        INFO("thickness x " << factor);
+        REQUIRE(a.outcome == b.outcome);
+        if (b.outcome != LimitLp::Outcome::optimal) continue;
+        (warm.programs() == programs ? certified : with_rounds) += 1;
+        CHECK(std::abs(a.margin - b.margin) <= kWarmCold);
+        CHECK(close(a.H, b.H, kWarmCold));
+        CHECK(close(a.load_factor, b.load_factor, kWarmCold));
+        // The warm optimum keeps every joint's thrust N / (2 f_c) clear of the faces (its own statics).
+        if (a.margin >= 0.0) {
+          const ThrustState st = thrust_state(ring, a.H, a.V, a.M, a.load_factor, 1e-9, kFc);
+          CHECK(offsets(ring, st, kFc).worst_inside <= kHingeOffset);
+        }
+      }
+    }
+  }
+  // Both paths were taken: a warm start that certified itself, and one that needed its programs.
+  CHECK(certified > 0);
+  CHECK(with_rounds > 0);
+  // A basis feasible but not optimal for the question (the least thrust's, for the greatest): the
+  // certificate's multipliers refuse it, and the programs go on to the greatest thrust.
+  for (const Scene& scene : {loaded_semicircle(), loaded_segmental()}) {
+    LimitOptions o;
+    o.compressive_strength = kFc;
+    const Ring ring = make_ring(scene, o);
+    LimitLp lp(ring, 0.0, nullptr, limit_detail::LpSolver::dense, limit_detail::LiveKind::vertical, kFc);
+    const LimitLp::Answer lo = lp.extreme_thrust(1.0, false);
+    const LimitLp::Answer hi = lp.extreme_thrust(1.0, true, &lo.basis);
+    LimitLp cold(ring, 0.0, nullptr, limit_detail::LpSolver::dense, limit_detail::LiveKind::vertical, kFc);
+    const LimitLp::Answer b = cold.extreme_thrust(1.0, true);
+    REQUIRE(hi.outcome == LimitLp::Outcome::optimal);
+    REQUIRE(b.outcome == LimitLp::Outcome::optimal);
+    CHECK(close(hi.H, b.H, kWarmCold));
+    CHECK(hi.H > lo.H);
+  }
+}
