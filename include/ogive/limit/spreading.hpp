@@ -123,12 +123,15 @@ struct SpreadOptions {
   bool is_valid(std::string* why) const;
 };
 
-enum class SpreadCollapse { thrust_leaves_arch, snap_through, sliding };
+enum class SpreadCollapse { thrust_leaves_arch, snap_through, sliding, wall_tips };
 const char* to_string(SpreadCollapse c);
 
 // One state of the mechanism.
 struct SpreadStep {
-  double d = 0;  // m, the movement parameter: the span grew by (left_share + right_share) d
+  double d = 0;  // m, the movement parameter: the span grew by (left_share + right_share) d; on walls rad
+  // m, the span's increase: the springings' intrados points' horizontal distance less L ((left_share +
+  // right_share) d without walls)
+  double span_increase = 0;
   double H = std::numeric_limits<double>::quiet_NaN();       // N/m, the program's (static) thrust
   // N/m, the mechanism's thrust by virtual work: the loads' work on its velocities, with the vertical
   // reactions' own work on the settlements (V_left and V_right the program's), over the span's growth
@@ -176,6 +179,17 @@ struct SpreadResult {
   // -1 and NaN otherwise.
   int sliding_joint = -1;
   Eigen::Vector2d sliding_point = Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
+  // collapse == wall_tips: the wall (0 left, 1 right) whose resultant leaves a bed, and the bed's height
+  // (m, y as the ring's at d = 0; the base at the springing's axis height less h_w); -1 and NaN otherwise.
+  int tipping_wall = -1;
+  double tipping_bed_y = std::numeric_limits<double>::quiet_NaN();
+  // On walls, each wall's lean at collapse (at d_max): its rotation outwards (rad; the left wall's
+  // counter-clockwise, the right one's clockwise) and the outward horizontal displacement of its top's
+  // outer corner (m); NaN for a side without a wall, and without walls.
+  double left_wall_rotation = std::numeric_limits<double>::quiet_NaN();
+  double right_wall_rotation = std::numeric_limits<double>::quiet_NaN();
+  double left_wall_top_displacement = std::numeric_limits<double>::quiet_NaN();
+  double right_wall_top_displacement = std::numeric_limits<double>::quiet_NaN();
   int increments = 0;             // increments taken (each one or more programs, plus the bisection's)
   int rolls = 0;                  // times the hinges rolled to other joints (each one program more)
   // d = 0, about `steps` states between, and the last admissible one (SpreadOptions::whole_path false:
@@ -186,7 +200,8 @@ struct SpreadResult {
 };
 
 // The mechanism path of `scene` (as analyse_limit takes it) under the movement of `spread`. Throws
-// std::invalid_argument for invalid options or scene, or a scene on walls (Scene::left_wall, right_wall).
+// std::invalid_argument for invalid options or scene, and on walls for settlement shares, friction, a
+// finite compressive strength, or a moving springing without a wall of some height.
 SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread);
 
 }  // namespace ogive
