@@ -28,7 +28,7 @@ t = 0.1 * L
 R = L / 2  # the axis' radius
 ri, re = R - t / 2, R + t / 2
 hw, bw = L, 0.25 * L
-n = int(sys.argv[1]) if len(sys.argv) > 1 else 2000  # voussoirs per half
+n = int(sys.argv[1]) if len(sys.argv) > 1 else 8000  # voussoirs per half
 
 # The left half: joints at angles from pi (springing) to pi/2 (crown); centre at the origin.
 phis = [math.pi - (math.pi / 2) * k / n for k in range(n + 1)]
