@@ -55,8 +55,7 @@ constexpr int kMostRolls = 20;
 
 class Path {
  public:
-  // `walls`: the arch's walls, which move the springings (nullptr: the springings translate as `spread`
-  // says); ring0 is then walls->arch().
+  // `walls`: the walls that move the springings, ring0 their arch (nullptr: as `spread` says).
   Path(const Ring& ring0, const LimitOptions& limit, const SpreadOptions& spread, SpreadWalls* walls = nullptr)
       : ring0_(ring0),
         friction_(limit.friction),
@@ -76,7 +75,7 @@ class Path {
     const Outcome o = evaluate(std::move(at), 0, nullptr, s);
     if (o != Outcome::admissible) return o;
     if (s.sliding >= 0) return Outcome::sliding;
-    if (s.tipping.tips()) return Outcome::wall_tips;
+    if (s.tipping.tips()) return tips(s.tipping);
     s.hinges = on_ring0(s.mechanism.hinges);
     s.phi = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(s.hinges.size()));
     s.rates = Eigen::Map<const Eigen::VectorXd>(s.mechanism.rates.data(), static_cast<Eigen::Index>(s.mechanism.rates.size()));
@@ -128,7 +127,7 @@ class Path {
       if (own || (hinges.size() == 4 && same_hinges(on_ring0(to.contacts), hinges))) {
         // A settled state (not a placement on the way to it) that a joint would slide out of.
         if (to.sliding >= 0) return Outcome::sliding;
-        if (to.tipping.tips()) return Outcome::wall_tips;  // a state of the arch that a wall does not carry
+        if (to.tipping.tips()) return tips(to.tipping);  // a state of the arch that a wall does not carry
         if (own)
           to.rates = Eigen::Map<const Eigen::VectorXd>(to.mechanism.rates.data(), static_cast<Eigen::Index>(hinges.size()));
         else
@@ -169,6 +168,8 @@ class Path {
   }
 
   int rolls() const { return rolls_; }
+  // On walls, where the last state a wall does not carry leaves it (after the bisection: the collapse's).
+  const Tipping& tipping() const { return tipping_; }
 
   // New hinges that no balance holds: the loads move the blocks on at fixed springings. If the chain
   // with `contacts` as its hinges (where the blocks would come to rest) has no thrust line inside it
@@ -243,8 +244,7 @@ class Path {
     place_ring(ring0_, at, moved_);
     lp_.load(moved_, 0.0, compressive_strength_);  // the program without friction: the cone is checked on its state
     // The least work on the movement: H (vR - vL).x - V_left vL.y - V_right vR.y, V_right = total - V_left.
-    // On walls: the work of the arch's reactions on the springings' rigid motions, per_M the rotation rates'
-    // difference (the moment of each reaction about its wall's toe: spreading.hpp).
+    // On walls, per_M the rotation rates' difference: the reactions' moments about the toes (spreading.hpp).
     const Vec dv = vR_.twist.velocity - vL_.twist.velocity;
     const LimitLp::Answer a = lp_.least_work(live_factor_, dv.x(), dv.y(), vR_.twist.rate - vL_.twist.rate, warm);
     if (a.outcome == LimitLp::Outcome::infeasible) return Outcome::inadmissible;
@@ -334,6 +334,12 @@ class Path {
   const SpringingMotion vL_, vR_;
   const double live_factor_;
   SpreadWalls* walls_;
+  Tipping tipping_;
+
+  Outcome tips(const Tipping& t) {
+    tipping_ = t;
+    return Outcome::wall_tips;
+  }
   int rolls_ = 0;
   Vec snap_point_ = Vec::Constant(std::numeric_limits<double>::quiet_NaN());
 };
@@ -461,42 +467,10 @@ SpreadResult slides_at_once(SpreadResult r, const LimitResult& base, int joint) 
   return r;
 }
 
-// Collapse wall_tips: which wall, at which bed, and the message.
-void tipped(SpreadResult& r, const Tipping& t) {
-  r.tipping_wall = t.right ? 1 : 0;
-  r.tipping_bed_y = t.y;
-  r.message = fmt::format("the {} wall tips at its bed at y = {:.6g} L: the resultant down it leaves the bed",
-                          t.right ? "right" : "left", t.y / r.ring.span);
-}
-
-// On walls: each wall's lean at collapse (NaN without that wall, or without a collapse).
-void lean_at_collapse(SpreadResult& r, const SpreadWalls& walls) {
-  const double d = r.d_max;
-  r.left_wall_rotation = walls.rotation(false, d);
-  r.right_wall_rotation = walls.rotation(true, d);
-  r.left_wall_top_displacement = walls.top_displacement(false, d);
-  r.right_wall_top_displacement = walls.top_displacement(true, d);
-}
-
-// The least-work state at d = 0 leaves a wall (the walls stand under another state of the arch, not the
-// one the movement starts from): the path is that state, and the wall tips at once.
-SpreadResult tips_at_once(SpreadResult r, const State& s, const SpreadWalls& walls) {
-  r.path.push_back(s.step);
-  r.path.back().hinges = s.mechanism.hinges;
-  r.status = SpreadStatus::success;
-  r.collapse = SpreadCollapse::wall_tips;
-  r.d_max = 0;
-  tipped(r, s.tipping);
-  lean_at_collapse(r, walls);
-  return r;
-}
-
 // The path on the ring `ring` (the limit analysis' `base` gives the state at d = 0 where it has none).
 SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOptions& limit, const SpreadOptions& spread) {
   SpreadResult r;
-  // On walls the path is the arch's, its springings carried by the walls (spreading_walls.hpp).
-  std::optional<SpreadWalls> walls;
-  if (ring.left_wall_joints > 0 || ring.right_wall_joints > 0) walls.emplace(ring, spread);
+  std::optional<SpreadWalls> walls = SpreadWalls::of(ring, spread);  // on walls the path is the arch's
   r.ring = walls ? walls->arch() : ring;
   const Ring& ring0 = r.ring;
   const double L = ring0.span;
@@ -506,7 +480,7 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
   State current;
   const Outcome first = path.start(current);
   if (first == Outcome::sliding) return slides_at_once(std::move(r), base, current.sliding);
-  if (first == Outcome::wall_tips) return tips_at_once(std::move(r), current, *walls);
+  if (first == Outcome::wall_tips) return walls->tips_at_once(std::move(r), current.step, path.tipping());
   if (first != Outcome::admissible) {
     if (first == Outcome::snap_through) {  // admissible, but nothing moves the springings apart
       r.status = SpreadStatus::no_mechanism;
@@ -516,10 +490,7 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
       s.V_left = base.min_state.V_left;
       s.V_right = base.min_state.V_right;
       s.hinges = base.min_state.hinges;
-      if (walls) {  // the system's hinges on the arch's ring
-        std::erase_if(s.hinges, [&](const Hinge& h) { return h.joint < ring.left_springing() || h.joint > ring.right_springing(); });
-        for (Hinge& h : s.hinges) h.joint -= ring.left_springing();
-      }
+      if (walls) s.hinges = walls->arch_hinges(s.hinges);
       r.path.push_back(s);
       return r;
     }
@@ -572,7 +543,6 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
     double lo = 0, hi = stops ? to_stop : increment;
     Outcome last_bad = o;
     int sliding = next.sliding;
-    Tipping tipping = next.tipping;
     Vec snap = path.snap_point();
     bool moved_on = false;
     State best;
@@ -589,7 +559,6 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
         hi = mid;
         last_bad = om;
         sliding = next.sliding;
-        tipping = next.tipping;
         snap = path.snap_point();
       }
     }
@@ -602,7 +571,6 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
                  : last_bad == Outcome::wall_tips  ? SpreadCollapse::wall_tips
                                                    : SpreadCollapse::snap_through;
     if (r.collapse == SpreadCollapse::sliding) r.sliding_joint = sliding;
-    if (r.collapse == SpreadCollapse::wall_tips) tipped(r, tipping);
     if (r.collapse == SpreadCollapse::snap_through && std::isfinite(snap.x())) r.message = snap_message(snap, L);
     break;
   }
@@ -615,22 +583,8 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
   }
   r.path = all.rows(spread.steps);
   r.status = SpreadStatus::success;
-  if (walls) lean_at_collapse(r, *walls);
+  if (walls) walls->at_collapse(r, path.tipping());
   return r;
-}
-
-// The movement on walls: the walls turn, so no springing settles, and only a springing on a wall moves;
-// the walls' beds neither slide nor crush in the path (which has no friction nor finite strength then).
-void check_walls(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread) {
-  if (limit.friction > 0 || std::isfinite(limit.compressive_strength))
-    throw std::invalid_argument(
-        "friction, compressive_strength: the spreading analysis on walls takes neither (the walls' beds would slide or "
-        "crush too)");
-  if (spread.left_settlement_share != 0 || spread.right_settlement_share != 0)
-    throw std::invalid_argument(
-        "left_settlement_share, right_settlement_share: on walls the springings move by the walls' rotation alone");
-  if ((spread.left_share > 0 && !scene.left_wall) || (spread.right_share > 0 && !scene.right_wall))
-    throw std::invalid_argument("left_share, right_share: on walls only a springing on a wall moves (its wall turns)");
 }
 
 // Whether two rings' hinges are at the same places (joints of one ring need not have the other's numbers).
@@ -667,7 +621,7 @@ double coarsest_next_to(const Ring& ring, const std::vector<Hinge>& hinges) {
 SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread) {
   std::string why;
   if (!spread.is_valid(&why)) throw std::invalid_argument("SpreadOptions: " + why);
-  if (scene.has_walls()) check_walls(scene, limit, spread);
+  if (scene.has_walls()) check_spread_on_walls(scene, limit, spread);
   // The ring and the path are those without friction (the cone is checked on each state); the state at
   // d = 0 with friction, and whether there is one, is limit's with it.
   LimitOptions frictionless = limit;

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "limit/limit_internal.hpp"
 
 namespace ogive::spreading_detail {
@@ -99,6 +101,52 @@ double SpreadWalls::top_displacement(bool right, double d) const {
   const Vec& toe = right ? right_.pivot : left_.pivot;
   const Vec& top = right ? right_top_ : left_top_;
   return (top.y() - toe.y()) * std::sin(theta);  // the corner above the toe, turned outwards by theta
+}
+
+void check_spread_on_walls(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread) {
+  if (limit.friction > 0 || std::isfinite(limit.compressive_strength))
+    throw std::invalid_argument(
+        "friction, compressive_strength: the spreading analysis on walls takes neither (the walls' beds would slide or "
+        "crush too)");
+  if (spread.left_settlement_share != 0 || spread.right_settlement_share != 0)
+    throw std::invalid_argument(
+        "left_settlement_share, right_settlement_share: on walls the springings move by the walls' rotation alone");
+  if ((spread.left_share > 0 && !scene.left_wall) || (spread.right_share > 0 && !scene.right_wall))
+    throw std::invalid_argument("left_share, right_share: on walls only a springing on a wall moves (its wall turns)");
+}
+
+std::optional<SpreadWalls> SpreadWalls::of(const Ring& ring, const SpreadOptions& spread) {
+  if (ring.left_wall_joints == 0 && ring.right_wall_joints == 0) return std::nullopt;
+  return SpreadWalls(ring, spread);
+}
+
+std::vector<Hinge> SpreadWalls::arch_hinges(std::vector<Hinge> hinges) const {
+  const int first = system_.left_springing(), last = system_.right_springing();
+  std::erase_if(hinges, [&](const Hinge& h) { return h.joint < first || h.joint > last; });
+  for (Hinge& h : hinges) h.joint -= first;
+  return hinges;
+}
+
+void SpreadWalls::at_collapse(SpreadResult& r, const Tipping& t) const {
+  if (r.collapse == SpreadCollapse::wall_tips) {
+    r.tipping_wall = t.right ? 1 : 0;
+    r.tipping_bed_y = t.y;
+    r.message = fmt::format("the {} wall tips at its bed at y = {:.6g} L: the resultant down it leaves the bed",
+                            t.right ? "right" : "left", t.y / arch_.span);
+  }
+  r.left_wall_rotation = rotation(false, r.d_max);
+  r.right_wall_rotation = rotation(true, r.d_max);
+  r.left_wall_top_displacement = top_displacement(false, r.d_max);
+  r.right_wall_top_displacement = top_displacement(true, r.d_max);
+}
+
+SpreadResult SpreadWalls::tips_at_once(SpreadResult r, const SpreadStep& step, const Tipping& t) const {
+  r.path.push_back(step);
+  r.status = SpreadStatus::success;
+  r.collapse = SpreadCollapse::wall_tips;
+  r.d_max = 0;
+  at_collapse(r, t);
+  return r;
 }
 
 }  // namespace ogive::spreading_detail

@@ -5,6 +5,8 @@
 #pragma once
 
 #include <limits>
+#include <optional>
+#include <vector>
 
 #include "limit/spreading_chain.hpp"
 #include "ogive/limit/spreading.hpp"
@@ -20,8 +22,16 @@ struct Tipping {
   bool tips() const { return bed >= 0; }
 };
 
+// The checks of analyse_spreading on walls: no settlement share, a wall under each moving springing, no
+// friction nor finite compressive strength (the walls' beds would slide or crush too, which the path
+// does not follow). Throws std::invalid_argument naming the field.
+void check_spread_on_walls(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread);
+
 class SpreadWalls {
  public:
+  // The walls of `ring` when it has some (else none).
+  static std::optional<SpreadWalls> of(const Ring& ring, const SpreadOptions& spread);
+
   // `system`: the ring of the arch on its walls at d = 0 (Ring::left_wall_joints, right_wall_joints;
   // a wall on one side or on both). The wall of a side turns outwards by its share (SpreadOptions::
   // left_share, right_share) times d: the left one counter-clockwise about its base's outer toe, the
@@ -48,6 +58,16 @@ class SpreadWalls {
   // outer corner (m); NaN for a side without a wall.
   double rotation(bool right, double d) const;
   double top_displacement(bool right, double d) const;
+
+  // The system's hinges (on the ring with the walls) on the arch's ring: those in the walls left out.
+  std::vector<Hinge> arch_hinges(std::vector<Hinge> hinges) const;
+  // Into r at collapse (r.d_max, r.collapse set): each wall's lean, and with collapse wall_tips (where
+  // `t` says) which wall and bed, and the message.
+  void at_collapse(SpreadResult& r, const Tipping& t) const;
+  // The path when the least-work state at d = 0 (`step`) already leaves a wall at `t` (the walls stand
+  // under another state of the arch, not the one the movement starts from): that state, and the wall
+  // tips at once.
+  SpreadResult tips_at_once(SpreadResult r, const SpreadStep& step, const Tipping& t) const;
 
  private:
   Ring system_, arch_, moved_;
