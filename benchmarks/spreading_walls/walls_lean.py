@@ -18,7 +18,8 @@ No linear program and none of ogive's code: the symmetric three-hinge mechanism 
   (wall and arch, where they have moved) turns outwards: M = H (y_C - y_T) - sum W (x - x_T) >= 0.
   theta at collapse: the root of M (bisection).
 Prints the rotation at collapse, the wall top's horizontal displacement, the span's increase, H/V at
-d = 0 and at collapse, and the hinge.
+d = 0 and at collapse, and the hinge. With --compare OGIVE (run from the repository's top): also
+ogive spread's numbers for the same system and their relative differences.
 """
 import math
 import sys
@@ -28,7 +29,8 @@ t = 0.1 * L
 R = L / 2  # the axis' radius
 ri, re = R - t / 2, R + t / 2
 hw, bw = L, 0.25 * L
-n = int(sys.argv[1]) if len(sys.argv) > 1 else 8000  # voussoirs per half
+args = [a for k, a in enumerate(sys.argv[1:]) if not a.startswith("--") and sys.argv[k] != "--compare"]
+n = int(args[0]) if args else 8000  # voussoirs per half
 
 # The left half: joints at angles from pi (springing) to pi/2 (crown); centre at the origin.
 phis = [math.pi - (math.pi / 2) * k / n for k in range(n + 1)]
@@ -147,3 +149,20 @@ print("voussoirs_per_half,theta_collapse,top_displacement,spread_capacity_ratio,
       "hinge0_x_over_L,hinge_collapse_x_over_L")
 print(f"{n},{theta_c:.7g},{top[0] - top_moved[0]:.7g},{span_increase / L:.7g},{H0 / V:.7g},{Hc / V:.7g},"
       f"{(intrados(hinge0)[0] + R) / L:.6g},{x_hinge / L:.6g}")
+
+if "--compare" in sys.argv:
+    import subprocess
+    ogive = sys.argv[sys.argv.index("--compare") + 1]
+    out = subprocess.run([ogive, "spread", "--curve", "semicircular", "--thickness-ratio", "0.1", "--weight", "voussoir",
+                          "--wall-height", str(hw), "--wall-thickness", str(bw), "--columns",
+                          "left_wall_rotation_collapse,left_wall_top_displacement_collapse,spread_capacity_ratio,"
+                          "H_over_V_plateau,H_over_V_collapse,collapse"], capture_output=True, text=True, check=True).stdout
+    names, values = [line.split(",") for line in out.strip().splitlines()]
+    row = dict(zip(names, values))
+    print("quantity,script,ogive,relative_difference")
+    for name, mine in [("left_wall_rotation_collapse", theta_c), ("left_wall_top_displacement_collapse", top[0] - top_moved[0]),
+                       ("spread_capacity_ratio", span_increase / L), ("H_over_V_plateau", H0 / V),
+                       ("H_over_V_collapse", Hc / V)]:
+        theirs = float(row[name])
+        print(f"{name},{mine:.7g},{theirs:.7g},{abs(theirs - mine) / abs(mine):.1e}")
+    print(f"collapse,wall_tips,{row['collapse']},")
