@@ -44,6 +44,13 @@ TEST_CASE("cli: spread on walls gives each wall's lean at collapse, the library'
   CHECK(column(path.out, "part", rows) == "mechanism");
   CHECK(column(path.out, "collapse", rows) == "wall_tips");
   CHECK(close(std::stod(column(path.out, "wall_rotation", rows)), lib.left_wall_rotation, kExact));
+  // The cracking rows: small rotations, no springing moving more than 1e-2 of the span.
+  for (std::size_t row = 2; row <= 11; ++row) {
+    CHECK(column(path.out, "part", row) == "cracking");
+    const double theta = std::stod(column(path.out, "wall_rotation", row));
+    CHECK(theta >= 0);
+    CHECK(theta * 10.0 <= 1e-2 * 10.0 + 1e-12);  // h_w = L: the springing's outward movement
+  }
 }
 
 TEST_CASE("cli: spread without walls prints no wall column unless asked") {

@@ -28,6 +28,8 @@ constexpr double kSamePoint = 1e-12;
 // The collapse is located to kSpreadTolerance of the span in the movement: the tipping wall's moment
 // about its toe vanishes there to about that much of the moments in it.
 constexpr double kLocatedCollapse = 1e-4;
+// The path's first state and limit's minimum-thrust state: one LP optimum found twice.
+constexpr double kSameState = 1e-9;
 // walls_lean.py's numbers, printed to seven significant digits (8000 voussoirs per half, where its
 // hinge's joint coincides with ogive's refined one).
 constexpr double kReference = 1e-5;
@@ -79,10 +81,13 @@ TEST_CASE("spreading walls: as the walls grow tall the path tends to the ordinar
 TEST_CASE("spreading walls: the semicircle on walls h_w = L, b_w = 0.25 L against an independent script") {
   // benchmarks/spreading_walls/walls_lean.csv: the symmetric three-hinge mechanism in closed form, the
   // wall tipping where the moment about its toe turns outwards.
-  const SpreadResult r = spread_on(on_walls(0.1, 1.0, 0.25));
+  const Scene scene = on_walls(0.1, 1.0, 0.25);
+  const SpreadResult r = spread_on(scene);
   REQUIRE(r.status == SpreadStatus::success);
   CHECK(r.collapse == SpreadCollapse::wall_tips);
   CHECK(r.tipping_wall == 0);
+  // At rest: the system's minimum-thrust state (limit on the walls), the least moment about the toes.
+  CHECK(close(r.path.front().H, analyse_limit(scene, {}).H_min(), kSameState));
   const double L = r.ring.span;
   CHECK(close(r.tipping_bed_y, r.ring.joints.front().axis.y() - L, kExact));  // at the base
   CHECK(close(r.left_wall_rotation, 0.03874469, kReference));

@@ -142,8 +142,11 @@ inline constexpr double kSpreadCapacityFloor = 1e-2;
 struct SpreadOptions {
   double left_share = 1;   // the left springing moves by -left_share * d (m per m of d), >= 0
   double right_share = 1;  // the right springing moves by +right_share * d, >= 0; one of them > 0
+  // On walls each share is its wall's rotation outwards per unit of d (rad per rad), and a moving side
+  // needs its wall.
   // Each springing's settlement per unit of d (m per m, downwards positive; finite, either sign): with
-  // a horizontal share, a springing moving along a sloping line; without one, a pure settlement.
+  // a horizontal share, a springing moving along a sloping line; without one, a pure settlement. 0 on
+  // walls.
   double left_settlement_share = 0, right_settlement_share = 0;
   // The increment of the span's increase (left_share + right_share) * d over L between two
   // re-solutions of the minimum-thrust state (where the hinges may move), in [kLeastIncrementRatio, 0.1].
