@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -179,6 +180,30 @@ TEST_CASE("spreading walls: a symmetric system gives mirrored hinges along the p
     CHECK(std::abs((a.point.x() - mid) + (b.point.x() - mid)) <= 1e-9 * L);
     CHECK(std::abs(a.point.y() - b.point.y()) <= 1e-9 * L);
     CHECK(std::abs(s->hinges[1].point.x() - mid) <= 1e-9 * L);
+  }
+}
+
+TEST_CASE("spreading walls: one wall leaning, then the other: mirror images") {
+  const Scene scene = on_walls(0.1, 1.0, 0.25);
+  SpreadOptions left, right;
+  left.right_share = 0;
+  right.left_share = 0;
+  const SpreadResult a = spread_on(scene, left), b = spread_on(scene, right);
+  REQUIRE(a.status == SpreadStatus::success);
+  REQUIRE(b.status == SpreadStatus::success);
+  CHECK(a.tipping_wall == 0);
+  CHECK(b.tipping_wall == 1);
+  CHECK(close(a.left_wall_rotation, b.right_wall_rotation, kSpreadTolerance));
+  CHECK(close(a.path.back().span_increase, b.path.back().span_increase, kSpreadTolerance));
+  const double L = a.ring.span;
+  const double mid = a.ring.joints[static_cast<std::size_t>(a.ring.crown_joint())].axis.x();
+  const std::vector<Hinge>&ha = a.path.back().hinges, &hb = b.path.back().hinges;
+  REQUIRE(ha.size() == hb.size());
+  for (std::size_t i = 0; i < ha.size(); ++i) {
+    const Hinge &x = ha[i], &y = hb[hb.size() - 1 - i];
+    CHECK(x.face == y.face);
+    CHECK(std::abs((x.point.x() - mid) + (y.point.x() - mid)) <= kSpreadTolerance * L);  // each collapse located to that
+    CHECK(std::abs(x.point.y() - y.point.y()) <= kSpreadTolerance * L);  // each collapse located to that
   }
 }
 
