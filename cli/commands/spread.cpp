@@ -293,7 +293,7 @@ Eigen::Vector2d wall_arm(const Scene& scene, bool right) {
 // the toe turned a quarter (outwards by theta h_w, up by theta times the arm's width) and the springing
 // turns with its wall (a pinned springing turns freely). Returns theta: the largest arm moves by `move`
 // of the span.
-double lean_walls(Scene& cracking, const SpreadSetup& s, double move) {
+double cracking_lean(Scene& cracking, const SpreadSetup& s, double move) {
   double arm = 0;
   for (const bool right : {false, true})
     if (right ? s.right_moves : s.left_moves) arm = std::max(arm, wall_arm(cracking, right).norm());
@@ -329,7 +329,7 @@ std::string path_rows(const Columns& columns, const SceneParameters& p, const Sc
     cracking.model_tolerance = 0;
     double theta = std::numeric_limits<double>::quiet_NaN(), spread_ratio = sides * move;
     if (s.walls) {
-      theta = lean_walls(cracking, s, move);
+      theta = cracking_lean(cracking, s, move);
       spread_ratio = (cracking.left.spread + cracking.right.spread) / p.span;
     } else {
       cracking.left.spread = s.left_moves ? move * p.span : 0;
