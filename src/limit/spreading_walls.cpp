@@ -43,8 +43,12 @@ Vec top_corner(const Vec& toe, const Joint& springing) {
 SpreadWalls::SpreadWalls(const Ring& system, const SpreadOptions& spread) : system_(system), arch_(without_walls(system)) {
   const bool has_left = system.left_wall_joints > 0, has_right = system.right_wall_joints > 0;
   // A wall of no height under a horizontal springing joint has no blocks: nothing turns.
-  if ((spread.left_share > 0 && !has_left) || (spread.right_share > 0 && !has_right))
-    throw std::invalid_argument("left_share, right_share: a moving springing's wall has no height to turn about its toe");
+  if (spread.left_share > 0 && !has_left)
+    throw std::invalid_argument("left_wall_height: a leaning wall of no height (under a horizontal springing joint) "
+                                "has nothing to turn about its toe");
+  if (spread.right_share > 0 && !has_right)
+    throw std::invalid_argument("right_wall_height: a leaning wall of no height (under a horizontal springing joint) "
+                                "has nothing to turn about its toe");
   const Vec left_toe = system.joints.front().extrados, right_toe = system.joints.back().extrados;
   // Outwards: the left wall counter-clockwise, the right one clockwise.
   left_ = has_left ? SpringingMotion::turning(left_toe, spread.left_share) : SpringingMotion::sliding(Vec::Zero());

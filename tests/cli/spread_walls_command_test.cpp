@@ -68,6 +68,12 @@ TEST_CASE("cli: spread on walls refuses what has no meaning there, one line and 
     args.insert(args.end(), extra.begin(), extra.end());
     check_refused(args);
   }
+  // A wall of no height under a horizontal springing joint has nothing to turn: that scene's row says so.
+  const Run flat = run_command({"spread", "--wall-height", "0,10", "--wall-thickness", "2", "--columns", "status,message"});
+  CHECK(flat.status == 3);
+  CHECK(column(flat.out, "status", 1) == "invalid_scene");
+  CHECK(column(flat.out, "message", 1).find("--wall-height") == 0);
+  CHECK(column(flat.out, "status", 2) != "invalid_scene");
   // A moving springing without a wall under it.
   check_refused({"spread", "--left-wall-height", "10", "--left-wall-thickness", "2.5"});
   check_refused({"spread", "--left-wall-height", "10", "--left-wall-thickness", "2.5", "--moving", "right"});
