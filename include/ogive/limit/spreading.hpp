@@ -98,7 +98,8 @@
 // (the least H through the crown's highest point makes the least moment about each toe). Neither
 // friction nor a finite compressive strength is taken on walls (the beds would slide or crush too).
 // The span's increase (SpreadStep::span_increase) is the springings' intrados points' horizontal
-// distance less L; increment_ratio and stop_ratio measure it by its rate at d = 0.
+// distance less L; increment_ratio, stop_ratio and the bisection of the collapse (kSpreadTolerance)
+// measure it by its rate at d = 0.
 //
 // Collapse, at the first of (the last increment bisected to kSpreadTolerance of the span):
 //   thrust_leaves_arch - no thrust line fits inside the moved voussoirs (the program is infeasible): the
@@ -211,7 +212,7 @@ struct SpreadResult {
   SpreadStatus status = SpreadStatus::lp_failure;
   std::string message;
   SpreadCollapse collapse = SpreadCollapse::thrust_leaves_arch;
-  double d_max = std::numeric_limits<double>::quiet_NaN();  // m, the movement parameter at collapse
+  double d_max = std::numeric_limits<double>::quiet_NaN();  // m (rad on walls), the movement parameter at collapse
   bool stopped = false;  // the path stopped at SpreadOptions::stop_ratio before collapse (d_max is NaN)
   // collapse == sliding: the joint of `ring` that slides, and where its axis point is at collapse (m);
   // -1 and NaN otherwise.
