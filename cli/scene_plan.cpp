@@ -104,10 +104,10 @@ std::shared_ptr<const Curve> read_points(const SceneOptions& o) {
 void refuse_walls(const CLI::App& cmd) {
   const std::string name = cmd.get_name();
   if (!walls_given(cmd) || name == "limit" || name == "draw" || name == "thrust" || name == "report" ||
-      name == "assess")
+      name == "assess" || name == "spread")
     return;
   const char* flag = given(cmd, "--wall-height") ? "--wall-height" : given(cmd, "--left-wall-height") ? "--left-wall-height" : "--right-wall-height";
-  throw UsageError(fmt::format("{}: does not apply to {} (walls are taken by ogive limit, thrust, draw, report and assess)", flag,
+  throw UsageError(fmt::format("{}: does not apply to {} (walls are taken by ogive limit, thrust, draw, report, assess and spread)", flag,
                                cmd.get_name()));
 }
 

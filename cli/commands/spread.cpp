@@ -73,7 +73,10 @@ constexpr Inapplicable kNotForSpread[] = {
 };
 
 void add_spread_analysis_options(CLI::App& cmd, SpreadText& t) {
-  cmd.add_option("--moving", t.moving, "the springings that move outwards: left, right or both")->capture_default_str();
+  cmd.add_option("--moving", t.moving,
+                 "the springings that move outwards: left, right or both (on walls: the walls that lean outwards, "
+                 "turning about their bases' outer toes, both by the same rotation)")
+      ->capture_default_str();
   cmd.add_option("--left-settlement-share", t.left_settlement_share,
                  "the left springing's settlement (downwards positive) per unit of d, the outward movement of each "
                  "springing --moving moves: it moves along a sloping line (or settles only, without --moving left or "
@@ -118,7 +121,23 @@ struct SpreadSetup {
   LimitOptions limit;
   SpreadOptions spread;
   bool left_moves = true, right_moves = true;
+  bool walls = false;  // the springings stand on walls, which lean (the movement d is their rotation, rad)
 };
+
+// On walls the walls' rotation moves the springings: no settlement share, and a moving side needs its
+// wall; the walls' beds would slide or crush too, which the path does not follow.
+void check_on_walls(const CLI::App& cmd, const SpreadSetup& s) {
+  for (const char* flag : {"--left-settlement-share", "--right-settlement-share", "--friction", "--compressive-strength"})
+    if (given(cmd, flag))
+      throw UsageError(fmt::format("{}: does not apply to spread on walls (the walls' rotation about their toes moves "
+                                   "the springings; their beds neither slide nor crush in the path)",
+                                   flag));
+  const bool both = given(cmd, "--wall-height");
+  if (s.left_moves && !both && !given(cmd, "--left-wall-height"))
+    throw UsageError("--moving: the left springing moves, but it stands on no wall (give --left-wall-height or --moving right)");
+  if (s.right_moves && !both && !given(cmd, "--right-wall-height"))
+    throw UsageError("--moving: the right springing moves, but it stands on no wall (give --right-wall-height or --moving left)");
+}
 
 SpreadSetup spread_setup(const SpreadText& t, const CLI::App& cmd) {
   refuse_inapplicable(cmd, "spread", kSpreadMoves);
@@ -154,23 +173,32 @@ SpreadSetup spread_setup(const SpreadText& t, const CLI::App& cmd) {
                                  "without moving the capacity: docs/spreading.md), got {}",
                                  t.increment_ratio));
   if (!s.limit.is_valid(&why)) throw UsageError(as_option_message(why));
+  s.walls = walls_given(cmd);
+  if (s.walls) check_on_walls(cmd, s);
   return s;
 }
 
-Columns spread_columns(bool path) {
+Columns spread_columns(bool path, bool walls) {
   std::vector<std::string> results = {"moving", "left_settlement_share", "right_settlement_share", "joints", "weight",
                                       "joints_count", "compressive_strength", "path_steps", "friction"};
   // The summary: the elastic arch at d = 0, the plateau, the capacity and the state at collapse.
-  const std::vector<std::string> summary = {
+  std::vector<std::string> summary = {
       "status", "H_elastic", "V_elastic", "H_over_V_elastic", "H_plateau", "V_plateau", "H_over_V_plateau",
       "spread_capacity_ratio", "collapse", "H_collapse", "V_collapse", "H_over_V_collapse", "crown_drop_ratio",
       "hinges", "hinges_at_collapse", "message"};
   // --path: one row per point of the curve.
-  const std::vector<std::string> points = {"part", "spread_ratio", "status", "H", "V", "V_right", "H_over_V",
-                                           "crown_drop_ratio", "hinges", "collapse", "message"};
-  const std::vector<std::string>& own = path ? points : summary;
+  std::vector<std::string> points = {"part", "spread_ratio", "status", "H", "V", "V_right", "H_over_V",
+                                     "crown_drop_ratio", "hinges", "collapse", "message"};
+  // On walls: their lean (shown by default only there).
+  const std::vector<std::string> lean = {"left_wall_rotation_collapse", "right_wall_rotation_collapse",
+                                         "left_wall_top_displacement_collapse", "right_wall_top_displacement_collapse"};
+  std::vector<std::string> own = path ? points : summary;
   results.insert(results.end(), own.begin(), own.end());
   if (!path) results.push_back("sliding_joint");
+  if (path) results.push_back("wall_rotation");
+  else results.insert(results.end(), lean.begin(), lean.end());
+  if (walls && path) own.push_back("wall_rotation");
+  if (walls && !path) own.insert(own.end(), lean.begin(), lean.end());
   return Columns(results, own);
 }
 
@@ -206,9 +234,13 @@ std::string summary_row(const Columns& columns, const SceneParameters& p, const 
   add_scene_columns(row, p, scene.curve.get());
   add_setup(row, t, s);
   row.add(to_string(r.status)).add(elastic.H).add(elastic.V).add(elastic.H_over_V);
+  const auto no_lean = [&row] {
+    for (int k = 0; k < 4; ++k) row.add(std::string_view{});
+  };
   if (r.path.empty()) {
     for (int k = 0; k < 11; ++k) row.add(std::string_view{});
     row.add(r.message).add(std::string_view{});
+    no_lean();
     return row.take();
   }
   const SpreadStep& first = r.path.front();
@@ -217,27 +249,64 @@ std::string summary_row(const Columns& columns, const SceneParameters& p, const 
   if (!has_numbers(r)) {
     for (int k = 0; k < 8; ++k) row.add(std::string_view{});
     row.add(r.message).add(std::string_view{});
+    no_lean();
     return row.take();
   }
-  row.add((s.spread.left_share + s.spread.right_share) * r.d_max / L).add(to_string(r.collapse));
+  // On walls the span grows by the walls' rotation, not in proportion to d: the springings' own distance.
+  row.add(s.walls ? last.span_increase / L : (s.spread.left_share + s.spread.right_share) * r.d_max / L);
+  row.add(to_string(r.collapse));
   row.add(last.H).add(last.V_left).add(last.H / last.V_left).add(last.crown_drop / L);
   row.add(hinge_text(first.hinges, L)).add(hinge_text(last.hinges, L));
   row.add(r.message);
   if (r.sliding_joint >= 0) row.add(r.sliding_point.x() / L);
   else row.add(std::string_view{});
+  for (const double lean : {r.left_wall_rotation, r.right_wall_rotation, r.left_wall_top_displacement,
+                            r.right_wall_top_displacement})
+    if (std::isfinite(lean)) row.add(lean);
+    else row.add(std::string_view{});
   return row.take();
 }
 
 // One row of the elastic or cracking part: a solve of the continuous arch.
 std::string solve_row(const Columns& columns, const SceneParameters& p, const Scene& scene, const SpreadText& t,
-                      const SpreadSetup& s, std::string_view part, double spread_ratio, const Solution& sol) {
+                      const SpreadSetup& s, std::string_view part, double spread_ratio, const Solution& sol,
+                      double wall_rotation = std::numeric_limits<double>::quiet_NaN()) {
   CsvRow row(columns.keep());
   add_scene_columns(row, p, scene.curve.get());
   add_setup(row, t, s);
   row.add(part).add(spread_ratio).add(to_string(sol.status)).add(sol.H).add(sol.V);
   row.add(sol.field ? sol.reactions.V_right : std::numeric_limits<double>::quiet_NaN()).add(sol.H_over_V);
   row.add(crown_drop(scene, sol) / scene.span()).add(std::string_view{}).add(std::string_view{}).add(sol.message);
+  if (std::isfinite(wall_rotation)) row.add(wall_rotation);
+  else row.add(std::string_view{});
   return row.take();
+}
+
+// A moving wall's arm: its springing's axis point less its base's outer toe (m).
+Eigen::Vector2d wall_arm(const Scene& scene, bool right) {
+  const WallOutline o = wall_outline(*scene.curve, scene.thickness, right ? *scene.right_wall : *scene.left_wall, right);
+  return o.joint.axis - Eigen::Vector2d(o.outer_x, o.base_y);
+}
+
+// On walls, a cracking row: the moving walls turned outwards by theta (rad), to first order (the
+// elastic arch's small displacements): each springing's axis point moves by theta times its arm from
+// the toe turned a quarter (outwards by theta h_w, up by theta times the arm's width) and the springing
+// turns with its wall (a pinned springing turns freely). Returns theta: the largest arm moves by `move`
+// of the span.
+double cracking_lean(Scene& cracking, const SpreadSetup& s, double move) {
+  double arm = 0;
+  for (const bool right : {false, true})
+    if (right ? s.right_moves : s.left_moves) arm = std::max(arm, wall_arm(cracking, right).norm());
+  const double theta = move * cracking.span() / arm;
+  for (const bool right : {false, true}) {
+    if (!(right ? s.right_moves : s.left_moves)) continue;
+    const Eigen::Vector2d r = wall_arm(cracking, right);
+    Support& support = right ? cracking.right : cracking.left;
+    support.spread = theta * r.y();
+    support.settlement = right ? theta * r.x() : -theta * r.x();
+    if (support.kind == SupportKind::clamped) support.rotation = right ? -theta : theta;
+  }
+  return theta;
 }
 
 // The whole curve of one scene: the elastic arch at d = 0, the cracking arch (each solve continuing
@@ -248,7 +317,7 @@ std::string path_rows(const Columns& columns, const SceneParameters& p, const Sc
   const double sides = (s.left_moves ? 1 : 0) + (s.right_moves ? 1 : 0);
   const SpreadOptions& o = s.spread;
   const double most = std::max({1.0, std::abs(o.left_settlement_share), std::abs(o.right_settlement_share)});
-  std::string text = solve_row(columns, p, scene, t, s, "elastic", 0, elastic);
+  std::string text = solve_row(columns, p, scene, t, s, "elastic", 0, elastic, s.walls ? 0.0 : std::numeric_limits<double>::quiet_NaN());
   *ok = answered(elastic);
   Solution previous;
   for (const double each : kCrackingMoves) {
@@ -258,13 +327,19 @@ std::string path_rows(const Columns& columns, const SceneParameters& p, const Sc
     // The no-tension section is a straight beam's (the curved bar takes the elastic section only).
     if (cracking.beam_model != BeamModel::euler_bernoulli) cracking.beam_model = BeamModel::timoshenko;
     cracking.model_tolerance = 0;
-    cracking.left.spread = s.left_moves ? move * p.span : 0;
-    cracking.right.spread = s.right_moves ? move * p.span : 0;
-    cracking.left.settlement = o.left_settlement_share * move * p.span;
-    cracking.right.settlement = o.right_settlement_share * move * p.span;
+    double theta = std::numeric_limits<double>::quiet_NaN(), spread_ratio = sides * move;
+    if (s.walls) {
+      theta = cracking_lean(cracking, s, move);
+      spread_ratio = (cracking.left.spread + cracking.right.spread) / p.span;
+    } else {
+      cracking.left.spread = s.left_moves ? move * p.span : 0;
+      cracking.right.spread = s.right_moves ? move * p.span : 0;
+      cracking.left.settlement = o.left_settlement_share * move * p.span;
+      cracking.right.settlement = o.right_settlement_share * move * p.span;
+    }
     const Solution sol = solve(cracking, Options{}, &previous);
     if (sol.field) previous = sol;
-    text += solve_row(columns, p, scene, t, s, "cracking", sides * move, sol);
+    text += solve_row(columns, p, scene, t, s, "cracking", spread_ratio, sol, theta);
     *ok = *ok && answered(sol);
   }
   CsvRow row(columns.keep());
@@ -274,11 +349,14 @@ std::string path_rows(const Columns& columns, const SceneParameters& p, const Sc
   row.mark();
   for (std::size_t i = 0; i < r.path.size(); ++i) {
     const SpreadStep& step = r.path[i];
-    row.add((s.spread.left_share + s.spread.right_share) * step.d / L).add(to_string(r.status)).add(step.H);
+    row.add(s.walls ? step.span_increase / L : (s.spread.left_share + s.spread.right_share) * step.d / L);
+    row.add(to_string(r.status)).add(step.H);
     row.add(step.V_left).add(step.V_right).add(step.H / step.V_left).add(step.crown_drop / L);
     row.add(hinge_text(step.hinges, L));
     row.add(i + 1 == r.path.size() ? std::string_view(to_string(r.collapse)) : std::string_view{});
     row.add(r.status == SpreadStatus::success ? std::string_view{} : std::string_view(r.message));
+    if (s.walls) row.add(step.d);  // each moving wall's rotation: d itself (their shares are 1)
+    else row.add(std::string_view{});
     text += row.take_to_mark();
   }
   *ok = *ok && r.status == SpreadStatus::success;
@@ -291,7 +369,7 @@ std::string path_rows(const Columns& columns, const SceneParameters& p, const Sc
 int run_spread(SpreadCommandOptions& so, const CLI::App& cmd, std::ostream& out) {
   const SpreadText& text = so.text;
   check_threads(text.threads);
-  Columns columns = spread_columns(text.path);
+  Columns columns = spread_columns(text.path, walls_given(cmd));
   if (so.columns.columns == "help") {
     write_all(out, columns.help(so.columns));
     return kExitOk;

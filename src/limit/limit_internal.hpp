@@ -177,6 +177,11 @@ class LimitLp {
   // springings (per_H the span's increase, per_V the right springing's rise over the left's, per unit
   // movement). With per_V = 0 and per_H > 0, extreme_thrust's smallest H.
   Answer least_work(double load_factor, double per_H, double per_V, const std::vector<int>* warm = nullptr);
+  // The smallest per_H H + per_V V + per_M M (M the left support's moment about the origin, as in
+  // Answer): the work on rigid motions of the springings (walls turning about their toes), per_M the
+  // right springing's rotation rate less the left one's (counter-clockwise, rad per unit movement), per_H
+  // and per_V the difference of the two springings' velocities at the origin. per_M = 0: least_work's.
+  Answer least_work(double load_factor, double per_H, double per_V, double per_M, const std::vector<int>* warm = nullptr);
   // The largest margin mu under dead + load_factor * live: >= 0 iff the arch is admissible.
   // `warm`: the basis of the margin of a ring with the same joints count (another thickness), to start
   // from.

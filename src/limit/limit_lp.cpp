@@ -667,6 +667,22 @@ LimitLp::Answer LimitLp::least_work(double load_factor, double per_H, double per
   return impl_->optimise(objective, {nan, nan, nan, load_factor, 0.0}, warm);
 }
 
+LimitLp::Answer LimitLp::least_work(double load_factor, double per_H, double per_V, double per_M,
+                                    const std::vector<int>* warm) {
+  if (per_M == 0) return least_work(load_factor, per_H, per_V, warm);
+  ++solves_;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // M's scale is W L (H's and V's W): its coefficient in the scaled program is per_M L.
+  const double per_m = per_M * impl_->span;
+  const double norm = std::max({std::abs(per_H), std::abs(per_V), std::abs(per_m)});
+  if (!(norm > 0) || !std::isfinite(norm)) return Answer{};
+  Objective objective{};
+  objective[kH] = -per_H / norm;
+  objective[kV] = -per_V / norm;
+  objective[kM] = -per_m / norm;
+  return impl_->optimise(objective, {nan, nan, nan, load_factor, 0.0}, warm);
+}
+
 LimitLp& programs_of(const Ring& ring, const LimitOptions& options, LpWorkspace& workspace,
                      std::unique_ptr<LimitLp>& lp) {
   if (lp) lp->load(ring, options.friction, options.compressive_strength);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 
 #include <Eigen/Geometry>
@@ -15,6 +16,7 @@
 
 #include "limit/limit_internal.hpp"
 #include "limit/spreading_chain.hpp"
+#include "limit/spreading_walls.hpp"
 
 namespace ogive {
 namespace {
@@ -32,13 +34,14 @@ struct State {
   Mechanism mechanism;
   SpreadStep step;
   int sliding = -1;  // the joint whose resultant leaves the friction cone (sliding_joint), or -1
+  Tipping tipping;   // on walls: the bed whose resultant leaves its wall (none: the walls carry the state)
   std::vector<Hinge> contacts;  // every joint where the program's thrust line touches a face (or a pin)
   // Each hinge's relative rotation rate per unit rate of d, to start the next increment from: the
   // mechanism's (none where it left a hinge out: the next placement is found from phi alone).
   Eigen::VectorXd rates;
 };
 
-enum class Outcome { admissible, inadmissible, snap_through, lp_failure, unsettled, sliding };
+enum class Outcome { admissible, inadmissible, snap_through, lp_failure, unsettled, sliding, wall_tips };
 
 // A contact further than this along its face (arc length over the span) from every hinge on that face
 // has not rolled there: the thrust line has come to touch the face at a second place, a new hinge.
@@ -52,15 +55,17 @@ constexpr int kMostRolls = 20;
 
 class Path {
  public:
-  Path(const Ring& ring0, const LimitOptions& limit, const SpreadOptions& spread)
+  // `walls`: the walls that move the springings, ring0 their arch (nullptr: as `spread` says).
+  Path(const Ring& ring0, const LimitOptions& limit, const SpreadOptions& spread, SpreadWalls* walls = nullptr)
       : ring0_(ring0),
         friction_(limit.friction),
         compressive_strength_(limit.compressive_strength),
         lp_(ring0, 0.0, nullptr, limit_detail::LpSolver::dense, limit_detail::LiveKind::vertical,
             limit.compressive_strength),
-        vL_(-spread.left_share, -spread.left_settlement_share),
-        vR_(spread.right_share, -spread.right_settlement_share),
-        live_factor_(ring0.has_live_load() ? 1.0 : 0.0) {}
+        vL_(walls ? walls->left() : SpringingMotion::sliding(Vec(-spread.left_share, -spread.left_settlement_share))),
+        vR_(walls ? walls->right() : SpringingMotion::sliding(Vec(spread.right_share, -spread.right_settlement_share))),
+        live_factor_(ring0.has_live_load() ? 1.0 : 0.0),
+        walls_(walls) {}
 
   // The state at d = 0: the unmoved ring, its hinges those of the program's minimum-thrust (least-work)
   // state, none turned yet.
@@ -70,6 +75,7 @@ class Path {
     const Outcome o = evaluate(std::move(at), 0, nullptr, s);
     if (o != Outcome::admissible) return o;
     if (s.sliding >= 0) return Outcome::sliding;
+    if (s.tipping.tips()) return tips(s.tipping);
     s.hinges = on_ring0(s.mechanism.hinges);
     s.phi = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(s.hinges.size()));
     s.rates = Eigen::Map<const Eigen::VectorXd>(s.mechanism.rates.data(), static_cast<Eigen::Index>(s.mechanism.rates.size()));
@@ -89,13 +95,13 @@ class Path {
     std::vector<std::vector<Hinge>> seen;
     for (int roll = 0; roll <= kMostRolls; ++roll) {
       std::vector<Rigid> bodies;
-      if (!close_chain(hinges, vL_ * d, vR_ * d, ring0_.span, phi, bodies)) return Outcome::snap_through;
+      if (!close_chain(hinges, vL_.at(d), vR_.at(d), ring0_.span, phi, bodies)) return Outcome::snap_through;
       if (hinges.size() == 4) {
         const Eigen::VectorXd unbalanced = phi;
-        if (!balance(ring0_, hinges, vL_ * d, vR_ * d, phi, bodies)) {
+        if (!balance(ring0_, hinges, vL_.at(d), vR_.at(d), phi, bodies)) {
           // The loads drive the free mode on: where would the blocks come to rest? The program on the
           // chain closed without balance says which joints the thrust line would touch.
-          if (!close_chain(hinges, vL_ * d, vR_ * d, ring0_.span, phi = unbalanced, bodies)) return Outcome::snap_through;
+          if (!close_chain(hinges, vL_.at(d), vR_.at(d), ring0_.span, phi = unbalanced, bodies)) return Outcome::snap_through;
           if (evaluate(placement(hinges, bodies), d, warm, to) != Outcome::admissible) return Outcome::snap_through;
           return snapped(hinges, phi, on_ring0(to.mechanism.hinges), d, warm);
         }
@@ -121,6 +127,7 @@ class Path {
       if (own || (hinges.size() == 4 && same_hinges(on_ring0(to.contacts), hinges))) {
         // A settled state (not a placement on the way to it) that a joint would slide out of.
         if (to.sliding >= 0) return Outcome::sliding;
+        if (to.tipping.tips()) return tips(to.tipping);  // a state of the arch that a wall does not carry
         if (own)
           to.rates = Eigen::Map<const Eigen::VectorXd>(to.mechanism.rates.data(), static_cast<Eigen::Index>(hinges.size()));
         else
@@ -161,6 +168,8 @@ class Path {
   }
 
   int rolls() const { return rolls_; }
+  // On walls, where the last state a wall does not carry leaves it (after the bisection: the collapse's).
+  const Tipping& tipping() const { return tipping_; }
 
   // New hinges that no balance holds: the loads move the blocks on at fixed springings. If the chain
   // with `contacts` as its hinges (where the blocks would come to rest) has no thrust line inside it
@@ -171,7 +180,7 @@ class Path {
     Eigen::VectorXd rest = carried_rotations(hinges, phi, contacts);
     std::vector<Rigid> bodies;
     State there;
-    if (close_chain(contacts, vL_ * d, vR_ * d, ring0_.span, rest, bodies) && all_open(ring0_, contacts, rest) &&
+    if (close_chain(contacts, vL_.at(d), vR_.at(d), ring0_.span, rest, bodies) && all_open(ring0_, contacts, rest) &&
         evaluate(placement(contacts, bodies), d, warm, there) == Outcome::inadmissible)
       return Outcome::inadmissible;
     for (const Hinge& c : contacts)
@@ -235,13 +244,16 @@ class Path {
     place_ring(ring0_, at, moved_);
     lp_.load(moved_, 0.0, compressive_strength_);  // the program without friction: the cone is checked on its state
     // The least work on the movement: H (vR - vL).x - V_left vL.y - V_right vR.y, V_right = total - V_left.
-    const LimitLp::Answer a = lp_.least_work(live_factor_, vR_.x() - vL_.x(), vR_.y() - vL_.y(), warm);
+    // On walls, per_M the rotation rates' difference: the reactions' moments about the toes (spreading.hpp).
+    const Vec dv = vR_.twist.velocity - vL_.twist.velocity;
+    const LimitLp::Answer a = lp_.least_work(live_factor_, dv.x(), dv.y(), vR_.twist.rate - vL_.twist.rate, warm);
     if (a.outcome == LimitLp::Outcome::infeasible) return Outcome::inadmissible;
     if (a.outcome != LimitLp::Outcome::optimal) return Outcome::lp_failure;
     const ThrustState st = thrust_state(moved_, a.H, a.V, a.M, live_factor_, 1e-9, compressive_strength_);
-    Mechanism mech = choose_mechanism(moved_, st.hinges, vL_, vR_);
+    Mechanism mech = choose_mechanism(moved_, st.hinges, vL_.twist, vR_.twist);
     if (!mech.found()) return Outcome::snap_through;
     s.sliding = sliding_joint(moved_, st, friction_);
+    s.tipping = walls_ ? walls_->tipping(at, a.H, a.V, a.M, live_factor_) : Tipping{};
     s.contacts = st.hinges;
     s.at = std::move(at);
     s.answer = a;
@@ -251,7 +263,9 @@ class Path {
     step.H = a.H;
     step.V_left = st.V_left;
     step.V_right = st.V_right;
-    step.H_work = thrust_by_work(s.mechanism, st.V_left, st.V_right);
+    step.H_work = thrust_by_work(s.mechanism, st.V_left, st.V_right, st.crossing.front(), st.crossing.back());
+    step.span_increase = (moved_.joints.back().intrados.x() - moved_.joints.front().intrados.x()) -
+                         (ring0_.joints.back().intrados.x() - ring0_.joints.front().intrados.x());
     const std::size_t cj = static_cast<std::size_t>(ring0_.crown_joint());
     step.crown_drop = ring0_.joints[cj].extrados.y() - moved_.joints[cj].extrados.y();
     step.potential = 0;
@@ -296,18 +310,20 @@ class Path {
 
   // The thrust by virtual work of the mechanism at the moved ring: each body's velocity per unit rate
   // of d, the loads' work -sum F v_y and the vertical reactions' V_left vL.y + V_right vR.y balanced by
-  // the supports' H (vR - vL).x.
-  double thrust_by_work(const Mechanism& mech, double V_left, double V_right) const {
+  // the supports' H (vR - vL).x, each springing's velocity at the point its reaction crosses the
+  // springing joint (pL, pR: the program's; the same everywhere on a translating springing).
+  double thrust_by_work(const Mechanism& mech, double V_left, double V_right, const Vec& pL, const Vec& pR) const {
     const std::vector<Hinge>& h = mech.hinges;
     double work = 0;
     std::size_t body = 0;
     for_each_load(moved_, [&](std::size_t k, double f, const Vec& p) {
       while (body < h.size() && static_cast<std::size_t>(h[body].joint) <= k) ++body;
-      Vec v = vL_;
+      Vec v = vL_.twist.at(p);
       for (std::size_t i = 0; i < body; ++i) v += mech.rates[i] * perp(p - h[i].point);
       work -= f * v.y();
     });
-    return (work + V_left * vL_.y() + V_right * vR_.y()) / (vR_.x() - vL_.x());
+    const Vec vl = vL_.twist.at(pL), vr = vR_.twist.at(pR);
+    return (work + V_left * vl.y() + V_right * vr.y()) / (vr.x() - vl.x());
   }
 
   const Ring& ring0_;
@@ -315,8 +331,15 @@ class Path {
   const double compressive_strength_;  // f_c, Pa (infinity: none)
   LimitLp lp_;
   Ring moved_;
-  const Vec vL_, vR_;
+  const SpringingMotion vL_, vR_;
   const double live_factor_;
+  SpreadWalls* walls_;
+  Tipping tipping_;
+
+  Outcome tips(const Tipping& t) {
+    tipping_ = t;
+    return Outcome::wall_tips;
+  }
   int rolls_ = 0;
   Vec snap_point_ = Vec::Constant(std::numeric_limits<double>::quiet_NaN());
 };
@@ -328,6 +351,7 @@ const char* to_string(SpreadCollapse c) {
     case SpreadCollapse::thrust_leaves_arch: return "thrust_leaves_arch";
     case SpreadCollapse::snap_through: return "snap_through";
     case SpreadCollapse::sliding: return "sliding";
+    case SpreadCollapse::wall_tips: return "wall_tips";
   }
   return "?";
 }
@@ -446,15 +470,17 @@ SpreadResult slides_at_once(SpreadResult r, const LimitResult& base, int joint) 
 // The path on the ring `ring` (the limit analysis' `base` gives the state at d = 0 where it has none).
 SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOptions& limit, const SpreadOptions& spread) {
   SpreadResult r;
-  r.ring = ring;
+  std::optional<SpreadWalls> walls = SpreadWalls::of(ring, spread);  // on walls the path is the arch's
+  r.ring = walls ? walls->arch() : ring;
   const Ring& ring0 = r.ring;
   const double L = ring0.span;
-  const double sides = spread.left_share + spread.right_share;
-  Path path(ring0, limit, spread);
+  const double sides = walls ? walls->span_rate() : spread.left_share + spread.right_share;
+  Path path(ring0, limit, spread, walls ? &*walls : nullptr);
 
   State current;
   const Outcome first = path.start(current);
   if (first == Outcome::sliding) return slides_at_once(std::move(r), base, current.sliding);
+  if (first == Outcome::wall_tips) return walls->tips_at_once(std::move(r), current.step, path.tipping());
   if (first != Outcome::admissible) {
     if (first == Outcome::snap_through) {  // admissible, but nothing moves the springings apart
       r.status = SpreadStatus::no_mechanism;
@@ -464,6 +490,7 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
       s.V_left = base.min_state.V_left;
       s.V_right = base.min_state.V_right;
       s.hinges = base.min_state.hinges;
+      if (walls) s.hinges = walls->arch_hinges(s.hinges);
       r.path.push_back(s);
       return r;
     }
@@ -541,6 +568,7 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
     }
     r.collapse = last_bad == Outcome::inadmissible ? SpreadCollapse::thrust_leaves_arch
                  : last_bad == Outcome::sliding    ? SpreadCollapse::sliding
+                 : last_bad == Outcome::wall_tips  ? SpreadCollapse::wall_tips
                                                    : SpreadCollapse::snap_through;
     if (r.collapse == SpreadCollapse::sliding) r.sliding_joint = sliding;
     if (r.collapse == SpreadCollapse::snap_through && std::isfinite(snap.x())) r.message = snap_message(snap, L);
@@ -555,6 +583,7 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
   }
   r.path = all.rows(spread.steps);
   r.status = SpreadStatus::success;
+  if (walls) walls->at_collapse(r, path.tipping());
   return r;
 }
 
@@ -592,7 +621,7 @@ double coarsest_next_to(const Ring& ring, const std::vector<Hinge>& hinges) {
 SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread) {
   std::string why;
   if (!spread.is_valid(&why)) throw std::invalid_argument("SpreadOptions: " + why);
-  if (scene.has_walls()) throw std::invalid_argument("left_wall, right_wall: the spreading analysis takes no walls");
+  if (scene.has_walls()) check_spread_on_walls(scene, limit, spread);
   // The ring and the path are those without friction (the cone is checked on each state); the state at
   // d = 0 with friction, and whether there is one, is limit's with it.
   LimitOptions frictionless = limit;
@@ -611,11 +640,13 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
       return r;
     }
   }
-  const double sides = spread.left_share + spread.right_share;
+  const double sides = scene.has_walls() ? SpreadWalls(base.ring, spread).span_rate() : spread.left_share + spread.right_share;
   SpreadOptions round = spread;  // the rounds to collapse, keeping the first and last states only
   round.whole_path = false;
   round.stop_ratio = std::numeric_limits<double>::infinity();
   SpreadResult r = follow(base.ring, start, limit, round);
+  Ring system;  // on walls, the ring with the walls of r (r.ring is the arch's alone)
+  if (scene.has_walls()) system = base.ring;
   std::vector<double> fractions = r.ring.joint_fractions;
   int increments = r.increments, rolls = r.rolls;
   double change = 0;  // no refinement: nothing moved
@@ -627,7 +658,8 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
       break;
     limit_detail::add_refinement(r.ring, rolling, fractions);
     fractions = limit_detail::merged_fractions(std::move(fractions));
-    SpreadResult finer = follow(limit_detail::make_ring_at(scene, frictionless, fractions), start, limit, round);
+    Ring finer_ring = limit_detail::make_ring_at(scene, frictionless, fractions);
+    SpreadResult finer = follow(finer_ring, start, limit, round);
     increments += finer.increments;
     rolls += finer.rolls;
     if (finer.status != SpreadStatus::success) return finer;
@@ -642,11 +674,12 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
       break;
     }
     r = std::move(finer);
+    if (scene.has_walls()) system = std::move(finer_ring);
   }
   const bool converged = r.status != SpreadStatus::success || change <= kSpreadCapacityTolerance;
   SpreadResult out = r;
   if (spread.whole_path || spread.stop_ratio < std::numeric_limits<double>::infinity()) {
-    out = follow(r.ring, start, limit, spread);
+    out = follow(scene.has_walls() ? system : r.ring, start, limit, spread);
     out.increments += increments;
     out.rolls += rolls;
   } else {

@@ -64,7 +64,7 @@ Eigen::Vector3d closure_column(const Vec& at, const Vec& q) {
   return {1.0, v.x(), v.y()};
 }
 
-Mechanism choose_mechanism(const Ring& ring, std::vector<Hinge> hinges, const Vec& vL, const Vec& vR) {
+Mechanism choose_mechanism(const Ring& ring, std::vector<Hinge> hinges, const Twist& vL, const Twist& vR) {
   std::vector<double> sign(hinges.size());
   for (std::size_t i = 0; i < hinges.size(); ++i) sign[i] = opening_sign(ring, hinges[i]);
   for (;;) {
@@ -75,8 +75,8 @@ Mechanism choose_mechanism(const Ring& ring, std::vector<Hinge> hinges, const Ve
     const Vec at = m > 0 ? hinges.front().point : Vec::Zero();
     for (std::size_t i = 0; i < m; ++i) J.col(static_cast<Eigen::Index>(i)) = closure_column(at, hinges[i].point);
     Eigen::VectorXd x;
-    const Vec dv = vR - vL;
-    if (!min_norm_solve(J, Eigen::Vector3d(0, dv.x(), dv.y()), x)) return {};
+    const Vec dv = vR.at(at) - vL.at(at);
+    if (!min_norm_solve(J, Eigen::Vector3d(vR.rate - vL.rate, dv.x(), dv.y()), x)) return {};
     const double scale = x.cwiseAbs().maxCoeff();
     std::size_t worst = m;
     double worst_value = -1e-9 * scale;
@@ -93,9 +93,9 @@ Mechanism choose_mechanism(const Ring& ring, std::vector<Hinge> hinges, const Ve
   }
 }
 
-void chain_bodies(const std::vector<Hinge>& hinges, const Eigen::VectorXd& phi, const Vec& uL,
+void chain_bodies(const std::vector<Hinge>& hinges, const Eigen::VectorXd& phi, const Rigid& uL,
                   std::vector<Rigid>& bodies) {
-  Rigid chain = translation(uL);
+  Rigid chain = uL;
   bodies.assign(hinges.size() + 1, chain);
   for (std::size_t i = 0; i < hinges.size(); ++i) {
     chain = chain.after(rotation_about(hinges[i].point, phi(static_cast<Eigen::Index>(i))));
@@ -103,15 +103,15 @@ void chain_bodies(const std::vector<Hinge>& hinges, const Eigen::VectorXd& phi, 
   }
 }
 
-bool close_chain(const std::vector<Hinge>& hinges, const Vec& uL, const Vec& uR, double L, Eigen::VectorXd& phi,
+bool close_chain(const std::vector<Hinge>& hinges, const Rigid& uL, const Rigid& uR, double L, Eigen::VectorXd& phi,
                  std::vector<Rigid>& bodies) {
   const std::size_t m = hinges.size();
   for (int iteration = 0; iteration < 30; ++iteration) {
     chain_bodies(hinges, phi, uL, bodies);
     const Rigid& chain = bodies.back();
-    const Eigen::Vector3d residual(chain.angle, chain.shift.x() - uR.x(), chain.shift.y() - uR.y());
+    const Eigen::Vector3d residual(chain.angle - uR.angle, chain.shift.x() - uR.shift.x(), chain.shift.y() - uR.shift.y());
     if (std::abs(residual(0)) <= 1e-15 && residual.tail<2>().norm() <= 1e-15 * L) {
-      bodies.back() = translation(uR);  // equal to round-off: the springing's own motion
+      bodies.back() = uR;  // equal to round-off: the springing's own motion
       return true;
     }
     Eigen::MatrixXd J(3, static_cast<Eigen::Index>(m));
@@ -251,7 +251,7 @@ double free_work(const Ring& ring0, const std::vector<Hinge>& hinges, const std:
   return work;
 }
 
-bool balance(const Ring& ring0, const std::vector<Hinge>& hinges, const Vec& uL, const Vec& uR,
+bool balance(const Ring& ring0, const std::vector<Hinge>& hinges, const Rigid& uL, const Rigid& uR,
              Eigen::VectorXd& phi, std::vector<Rigid>& bodies) {
   double scale = 0;
   for_each_load(ring0, [&](std::size_t, double f, const Vec&) { scale += std::abs(f); });

@@ -29,6 +29,30 @@ struct Rigid {
 inline Rigid translation(const Vec& u) { return {0, u}; }
 inline Rigid rotation_about(const Vec& p, double phi) { return {phi, p - Eigen::Rotation2Dd(phi) * p}; }
 
+// A rigid body's velocity field per unit rate of the movement: its rotation rate (rad, counter-clockwise)
+// and the velocity of the point at the origin. Made from a velocity alone: a translation's.
+struct Twist {
+  double rate = 0;
+  Vec velocity = Vec::Zero();
+  Twist() = default;
+  Twist(const Vec& v) : velocity(v) {}  // NOLINT: a translation's field, where a velocity was
+  Twist(double w, const Vec& v) : rate(w), velocity(v) {}
+  // The velocity of the body's point at x (a translation's: its velocity, to the bit).
+  Vec at(const Vec& x) const { return rate == 0 ? velocity : Vec(velocity + rate * perp(x)); }
+};
+
+// How each springing moves with the movement d: a translation by velocity * d, or (a wall turning about
+// its toe) a rotation by rate * d about a fixed pivot, exact for every d; its Twist the same for every d.
+struct SpringingMotion {
+  Twist twist;
+  Vec pivot = Vec::Zero();  // where a rotating springing turns about (m)
+  Rigid at(double d) const {
+    return twist.rate == 0 ? translation(twist.velocity * d) : rotation_about(pivot, twist.rate * d);
+  }
+  static SpringingMotion sliding(const Vec& v) { return {Twist(v), Vec::Zero()}; }
+  static SpringingMotion turning(const Vec& about, double rate) { return {Twist(rate, -rate * perp(about)), about}; }
+};
+
 // Where the pieces are: each voussoir's motion from its place at d = 0, and each springing's.
 struct Placement {
   std::vector<Rigid> voussoir;
@@ -75,22 +99,24 @@ bool min_norm_solve(const Eigen::MatrixXd& J, const Eigen::Vector3d& r, Eigen::V
 // point `at` of the right springing (rotation rate times the arm from the hinge's point `q`).
 Eigen::Vector3d closure_column(const Vec& at, const Vec& q);
 
-// The mechanism of `hinges` under the springings' velocities vL, vR: relative rotation rates with sum 0
-// (neither springing turns) that carry the right springing at vR - vL relative to the left one, the
-// least squared; hinges that this would close are left out one by one (the worst first).
-Mechanism choose_mechanism(const Ring& ring, std::vector<Hinge> hinges, const Vec& vL, const Vec& vR);
+// The mechanism of `hinges` under the springings' velocity fields vL, vR: relative rotation rates whose
+// sum is the right springing's rotation rate less the left one's (0 when neither turns) and that carry
+// the right springing at vR - vL relative to the left one, the least squared; hinges that this would
+// close are left out one by one (the worst first).
+Mechanism choose_mechanism(const Ring& ring, std::vector<Hinge> hinges, const Twist& vL, const Twist& vR);
 
 // The bodies of a chain cut at `hinges` (their points on the ring at d = 0, ascending) and turned there by
 // the relative rotations phi (rad, of the part after a hinge against the part before it, counter-
 // clockwise positive): the left springing's part moved by uL, each next one turned about its hinge.
-void chain_bodies(const std::vector<Hinge>& hinges, const Eigen::VectorXd& phi, const Vec& uL,
+void chain_bodies(const std::vector<Hinge>& hinges, const Eigen::VectorXd& phi, const Rigid& uL,
                   std::vector<Rigid>& bodies);
 
 // The relative rotations phi at `hinges` (points on the ring at d = 0) that close the chain on the right
-// springing moved by uR when the left one has moved by uL: Newton's method from the given phi, each step
-// the least-squares one (with three hinges the rotations are unique; with more, the closing rotations
-// nearest the start). False when the iteration does not close the chain.
-bool close_chain(const std::vector<Hinge>& hinges, const Vec& uL, const Vec& uR, double L, Eigen::VectorXd& phi,
+// springing moved by uR when the left one has moved by uL (rigid motions: translations, or a wall's
+// rotation about its toe): Newton's method from the given phi, each step the least-squares one (with
+// three hinges the rotations are unique; with more, the closing rotations nearest the start). False
+// when the iteration does not close the chain.
+bool close_chain(const std::vector<Hinge>& hinges, const Rigid& uL, const Rigid& uR, double L, Eigen::VectorXd& phi,
                  std::vector<Rigid>& bodies);
 
 // Whether each relative rotation opens its joint (a face hinge turns one way only), to round-off.
@@ -141,7 +167,7 @@ double free_work(const Ring& ring0, const std::vector<Hinge>& hinges, const std:
 // closed chain phi. False when that balance is not found within kMostBalanceTurn rad, or is unstable
 // (the loads' work on the mode grows as it moves: they drive it on, the blocks snap). A chain already
 // in balance to round-off (a symmetric one) is left as it is.
-bool balance(const Ring& ring0, const std::vector<Hinge>& hinges, const Vec& uL, const Vec& uR,
+bool balance(const Ring& ring0, const std::vector<Hinge>& hinges, const Rigid& uL, const Rigid& uR,
              Eigen::VectorXd& phi, std::vector<Rigid>& bodies);
 
 }  // namespace ogive::spreading_detail

@@ -93,7 +93,7 @@ TEST_CASE("cli: bad wall input gets one line and exit 2") {
   check_refused({"thrust", "--wall-height", "5", "--wall-thickness", "1e300"});
   check_refused({"limit", "--wall-height", "5", "--wall-thickness", "2", "--wall-density", "1e12"});  // too heavy
   check_refused({"limit", "--curve", "segmental", "--wall-height", "0", "--wall-thickness", "3"});  // below the joint
-  for (const char* command : {"profile", "spread", "check", "curve", "bench"})
+  for (const char* command : {"profile", "check", "curve", "bench"})
     check_refused({command, "--wall-height", "5", "--wall-thickness", "2"});
   check_refused({"draw", "--wall-height", "5", "--wall-thickness", "2", "--spread-stage", "0.5", "--output", "x.svg"});
 }

@@ -67,6 +67,40 @@
 // with the friction); when the frictionless minimum-thrust state already leaves the cone, the path is
 // that one state, collapse `sliding` at d = 0.
 //
+// Walls (Scene::left_wall, right_wall): the springings stand on walls that lean outwards, each turning
+// as a rigid body about its base's outer toe T (the left wall counter-clockwise, the right one
+// clockwise), by left_share d and right_share d: d is then the walls' rotation (rad), and no springing
+// settles. A wall's rotation carries the springing joint on its top by an exact rigid motion x -> T +
+// R(theta) (x - T) (large displacements: a point h above the toe and b inside it moves out by
+// h sin theta + b (1 - cos theta) and up by b sin theta - h (1 - cos theta), and the joint turns by
+// theta); the voussoirs before the first hinge turn with the left wall, those after the last with the
+// right one, and the chain closes on the two springings' rigid motions. The least-work state: the
+// arch's reactions do work on the springings' rigid motions, the left one's (H, V_left, through the
+// point p where the thrust line crosses the springing joint) at the rate (H, V_left) . w(p) with
+// w(x) = omega perp(x - T) the wall's velocity field, omega its rotation rate (counter-clockwise). That
+// rate is -omega times the moment of the arch's thrust on the wall about the toe, M_T = (p - T) x
+// (-H, -V_left) (for the left wall the moment that overturns it), so the work the arch does on the
+// walls is left_share M_T,left + right_share M_T,right per unit of d, each moment taken outwards
+// positive: linear in the program's unknowns H, V_left and M_left (the reaction's moment about the
+// origin; M_T,left = -M_left + T x (H, V_left)). Its least is the state
+// that overturns the walls least (LimitLp::least_work with per_M); with translations alone it is the
+// work above, to the bit. The virtual-work check (SpreadStep::H_work) balances the loads' work on the
+// mechanism's velocities against the springing reactions' on the walls' velocities at p:
+// H (w_R(p_R) - w_L(p_L)).x = loads' work + V_left w_L(p_L).y + V_right w_R(p_R).y.
+// The walls carry each state or tip: the resultant down each wall (the arch's reaction with the weights
+// of the wall's blocks and the top load above each bed, where the wall has carried them) must cross
+// every bed between its faces in compression (to 1e-9 of the bed); the first state where it leaves one
+// is the wall's collapse about that bed's edge (wall_tips, the lowest such bed). The path is the arch's
+// (SpreadResult::ring is the arch's ring, without the walls): a program on the walls too would move the
+// arch's thrust line to keep a wall's resultant inside, a state the arch's hinges do not make. At d = 0
+// the walls must stand (walls thinner than b_min: inadmissible, as analyse_limit says); for two walls
+// leaning alike under a symmetric arch the least-work state there is the system's minimum-thrust one
+// (the least H through the crown's highest point makes the least moment about each toe). Neither
+// friction nor a finite compressive strength is taken on walls (the beds would slide or crush too).
+// The span's increase (SpreadStep::span_increase) is the springings' intrados points' horizontal
+// distance less L; increment_ratio, stop_ratio and the bisection of the collapse (kSpreadTolerance)
+// measure it by its rate at d = 0.
+//
 // Collapse, at the first of (the last increment bisected to kSpreadTolerance of the span):
 //   thrust_leaves_arch - no thrust line fits inside the moved voussoirs (the program is infeasible): the
 //                  line of thrust would have to leave the arch;
@@ -74,7 +108,9 @@
 //                  line, or fewer than three remain that open, or their rotations would close one; or a
 //                  new hinge snaps (above; SpreadResult::message says where);
 //   sliding      - (with friction) a joint's resultant leaves the friction cone
-//                  (SpreadResult::sliding_joint).
+//                  (SpreadResult::sliding_joint);
+//   wall_tips    - (on walls) the resultant down a wall leaves one of its beds: the wall tips about that
+//                  bed's edge (SpreadResult::tipping_wall, tipping_bed_y).
 //
 // Units: SI (m, N per metre of width). Positions as in limit.hpp: x from the left springing's intrados
 // at d = 0, y up.
@@ -107,8 +143,11 @@ inline constexpr double kSpreadCapacityFloor = 1e-2;
 struct SpreadOptions {
   double left_share = 1;   // the left springing moves by -left_share * d (m per m of d), >= 0
   double right_share = 1;  // the right springing moves by +right_share * d, >= 0; one of them > 0
+  // On walls each share is its wall's rotation outwards per unit of d (rad per rad), and a moving side
+  // needs its wall.
   // Each springing's settlement per unit of d (m per m, downwards positive; finite, either sign): with
-  // a horizontal share, a springing moving along a sloping line; without one, a pure settlement.
+  // a horizontal share, a springing moving along a sloping line; without one, a pure settlement. 0 on
+  // walls.
   double left_settlement_share = 0, right_settlement_share = 0;
   // The increment of the span's increase (left_share + right_share) * d over L between two
   // re-solutions of the minimum-thrust state (where the hinges may move), in [kLeastIncrementRatio, 0.1].
@@ -123,12 +162,15 @@ struct SpreadOptions {
   bool is_valid(std::string* why) const;
 };
 
-enum class SpreadCollapse { thrust_leaves_arch, snap_through, sliding };
+enum class SpreadCollapse { thrust_leaves_arch, snap_through, sliding, wall_tips };
 const char* to_string(SpreadCollapse c);
 
 // One state of the mechanism.
 struct SpreadStep {
-  double d = 0;  // m, the movement parameter: the span grew by (left_share + right_share) d
+  double d = 0;  // m, the movement parameter: the span grew by (left_share + right_share) d; on walls rad
+  // m, the span's increase: the springings' intrados points' horizontal distance less L ((left_share +
+  // right_share) d without walls)
+  double span_increase = 0;
   double H = std::numeric_limits<double>::quiet_NaN();       // N/m, the program's (static) thrust
   // N/m, the mechanism's thrust by virtual work: the loads' work on its velocities, with the vertical
   // reactions' own work on the settlements (V_left and V_right the program's), over the span's growth
@@ -170,12 +212,23 @@ struct SpreadResult {
   SpreadStatus status = SpreadStatus::lp_failure;
   std::string message;
   SpreadCollapse collapse = SpreadCollapse::thrust_leaves_arch;
-  double d_max = std::numeric_limits<double>::quiet_NaN();  // m, the movement parameter at collapse
+  double d_max = std::numeric_limits<double>::quiet_NaN();  // m (rad on walls), the movement parameter at collapse
   bool stopped = false;  // the path stopped at SpreadOptions::stop_ratio before collapse (d_max is NaN)
   // collapse == sliding: the joint of `ring` that slides, and where its axis point is at collapse (m);
   // -1 and NaN otherwise.
   int sliding_joint = -1;
   Eigen::Vector2d sliding_point = Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
+  // collapse == wall_tips: the wall (0 left, 1 right) whose resultant leaves a bed, and the bed's height
+  // (m, y as the ring's at d = 0; the base at the springing's axis height less h_w); -1 and NaN otherwise.
+  int tipping_wall = -1;
+  double tipping_bed_y = std::numeric_limits<double>::quiet_NaN();
+  // On walls, each wall's lean at collapse (at d_max): its rotation outwards (rad; the left wall's
+  // counter-clockwise, the right one's clockwise) and the outward horizontal displacement of its top's
+  // outer corner (m); NaN for a side without a wall, and without walls.
+  double left_wall_rotation = std::numeric_limits<double>::quiet_NaN();
+  double right_wall_rotation = std::numeric_limits<double>::quiet_NaN();
+  double left_wall_top_displacement = std::numeric_limits<double>::quiet_NaN();
+  double right_wall_top_displacement = std::numeric_limits<double>::quiet_NaN();
   int increments = 0;             // increments taken (each one or more programs, plus the bisection's)
   int rolls = 0;                  // times the hinges rolled to other joints (each one program more)
   // d = 0, about `steps` states between, and the last admissible one (SpreadOptions::whole_path false:
@@ -186,7 +239,8 @@ struct SpreadResult {
 };
 
 // The mechanism path of `scene` (as analyse_limit takes it) under the movement of `spread`. Throws
-// std::invalid_argument for invalid options or scene, or a scene on walls (Scene::left_wall, right_wall).
+// std::invalid_argument for invalid options or scene, and on walls for settlement shares, friction, a
+// finite compressive strength, or a moving springing without a wall of some height.
 SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread);
 
 }  // namespace ogive

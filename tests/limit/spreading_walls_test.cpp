@@ -1,0 +1,226 @@
+// The spreading path on walls (include/ogive/limit/spreading.hpp): the walls turn about their bases'
+// outer toes and carry the springings. Checked against the ordinary spread as the walls grow tall,
+// against a hand computation of the rigid rotation (the placed voussoirs, the hinges, the wall's balance
+// about its toe at collapse), against the independent script benchmarks/spreading_walls/walls_lean.py,
+// for convergence in the joints, mirror symmetry, and misuse.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "ogive/limit/limit.hpp"
+#include "ogive/limit/spreading.hpp"
+#include "support/scenes.hpp"
+#include "support/tolerances.hpp"
+
+using namespace ogive;
+
+namespace {
+
+// The program's thrust and the mechanism's virtual work: one statically determinate equilibrium
+// computed twice, to round-off.
+constexpr double kStaticKinematic = 1e-9;
+// Positions computed by two exact routes (the chain's composed rigid motions, a rotation by hand), of
+// the span.
+constexpr double kSamePoint = 1e-12;
+// The collapse is located to kSpreadTolerance of the span in the movement: the tipping wall's moment
+// about its toe vanishes there to about that much of the moments in it.
+constexpr double kLocatedCollapse = 1e-4;
+// The path's first state and limit's minimum-thrust state: one LP optimum found twice.
+constexpr double kSameState = 1e-9;
+// walls_lean.py's numbers, printed to seven significant digits (8000 voussoirs per half, where its
+// hinge's joint coincides with ogive's refined one).
+constexpr double kReference = 1e-5;
+
+// The semicircle of span 10 m at t/L (the true weight of its voussoirs) on walls of height h_w and
+// thickness b_w (in spans), of the arch's density.
+Scene on_walls(double t_over_L, double height, double thickness) {
+  Scene s = paper_scene(0.0, t_over_L);
+  const double L = s.span();
+  s.left_wall = s.right_wall = Wall{height * L, thickness * L, s.material.density, 0.0, 0.5};
+  return s;
+}
+
+SpreadResult spread_on(const Scene& scene, SpreadOptions o = {}, int joints = kDefaultJointsCount) {
+  LimitOptions limit;
+  limit.joints_count = joints;
+  return analyse_spreading(scene, limit, o);
+}
+
+Eigen::Vector2d turned(const Eigen::Vector2d& p, const Eigen::Vector2d& about, double theta) {
+  return about + Eigen::Rotation2Dd(theta) * (p - about);
+}
+
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+}  // namespace
+
+TEST_CASE("spreading walls: as the walls grow tall the path tends to the ordinary spread's, as 1 / h_w") {
+  // A wall's rotation theta moves its springing out by h_w theta, up by b_w theta and turns it by theta:
+  // at a given span increase the last two fall as 1 / h_w. Walls 5 m thick stand whatever their height.
+  const SpreadResult ground = analyse_spreading(paper_scene(0.0, 0.1), {}, {});
+  REQUIRE(ground.status == SpreadStatus::success);
+  const double capacity = 2 * ground.d_max / ground.ring.span;
+  double c[2];
+  const double heights[2] = {30.0, 100.0};
+  for (int k = 0; k < 2; ++k) {
+    const SpreadResult r = spread_on(on_walls(0.1, heights[k], 0.5));
+    REQUIRE(r.status == SpreadStatus::success);
+    CHECK(r.collapse == ground.collapse);
+    c[k] = r.path.back().span_increase / r.ring.span;
+    CHECK(c[k] < capacity);  // the turning springings take some of it
+  }
+  // The two heights' capacities extrapolated to h_w -> infinity (c = c_inf - k / h_w).
+  const double extrapolated = (heights[1] * c[1] - heights[0] * c[0]) / (heights[1] - heights[0]);
+  CHECK(close(extrapolated, capacity, kSpreadCapacityTolerance));
+  CHECK(!close(c[1], capacity, 1e-4));  // not the ordinary path itself: the walls do turn it
+}
+
+TEST_CASE("spreading walls: the semicircle on walls h_w = L, b_w = 0.25 L against an independent script") {
+  // benchmarks/spreading_walls/walls_lean.csv: the symmetric three-hinge mechanism in closed form, the
+  // wall tipping where the moment about its toe turns outwards.
+  const Scene scene = on_walls(0.1, 1.0, 0.25);
+  const SpreadResult r = spread_on(scene);
+  REQUIRE(r.status == SpreadStatus::success);
+  CHECK(r.collapse == SpreadCollapse::wall_tips);
+  CHECK(r.tipping_wall == 0);
+  // At rest: the system's minimum-thrust state (limit on the walls), the least moment about the toes.
+  CHECK(close(r.path.front().H, analyse_limit(scene, {}).H_min(), kSameState));
+  const double L = r.ring.span;
+  CHECK(close(r.tipping_bed_y, r.ring.joints.front().axis.y() - L, kExact));  // at the base
+  CHECK(close(r.left_wall_rotation, 0.03874469, kReference));
+  CHECK(close(r.right_wall_rotation, r.left_wall_rotation, kExact));
+  CHECK(close(r.left_wall_top_displacement, 0.3873499, kReference));
+  CHECK(close(r.path.back().span_increase / L, 0.07784523, kReference));
+  CHECK(close(r.path.front().H / r.path.front().V_left, 0.3080841, kReference));
+  CHECK(close(r.path.back().H / r.path.back().V_left, 0.4615859, kReference));
+}
+
+TEST_CASE("spreading walls: the springing turns with its wall about the toe, the thrust through the hinges") {
+  const Scene scene = on_walls(0.1, 1.0, 0.25);
+  const SpreadResult r = spread_on(scene);
+  REQUIRE(r.status == SpreadStatus::success);
+  const Ring& ring = r.ring;
+  const double L = ring.span, theta = r.left_wall_rotation;
+  REQUIRE(theta > 0);
+  // By hand: the toe below the outer face, h_w under the springing's axis point.
+  const Joint& springing = ring.joints.front();
+  const Eigen::Vector2d toe(springing.intrados.x() - scene.left_wall->thickness,
+                            springing.axis.y() - scene.left_wall->height);
+  // The voussoirs before the first hinge move with the wall: every corner turned by theta about the toe.
+  const SpreadStep& last = r.path.back();
+  REQUIRE(last.hinges.size() == 3);
+  const int first_hinge = last.hinges.front().joint;
+  REQUIRE(first_hinge > 0);
+  for (int k = 0; k < first_hinge; ++k) {
+    const Joint &a = ring.joints[static_cast<std::size_t>(k)], &b = ring.joints[static_cast<std::size_t>(k + 1)];
+    const Eigen::Vector2d corners[4] = {a.intrados, a.extrados, b.extrados, b.intrados};
+    for (int c = 0; c < 4; ++c)
+      CHECK((r.shape.voussoirs[static_cast<std::size_t>(k)][static_cast<std::size_t>(c)] - turned(corners[c], toe, theta))
+                .norm() <= kSamePoint * L);
+  }
+  // The span's increase: the springings' intrados points turned about their toes (mirror images).
+  const Eigen::Vector2d moved = turned(springing.intrados, toe, theta);
+  CHECK(close(last.span_increase, 2 * (springing.intrados.x() - moved.x()), kTwoExactMethods));
+  // The wall top's outer corner, straight above the toe at the springing line: out by h_w sin(theta).
+  CHECK(close(r.left_wall_top_displacement, scene.left_wall->height * std::sin(theta), kExact));
+  // The thrust line passes through each hinge of the collapse state where the hinge has moved: the
+  // first one turned with the wall.
+  for (const Hinge& h : last.hinges)
+    CHECK((r.shape.thrust_line[static_cast<std::size_t>(h.joint)] - h.point).norm() <= 1e-9 * L);
+  CHECK((last.hinges.front().point - turned(ring.joints[static_cast<std::size_t>(first_hinge)].intrados, toe, theta))
+            .norm() <= kSamePoint * L);
+  // The wall tips at collapse: the arch's reaction on it (-H, -V_left through the thrust line's point on
+  // the springing joint) and the wall's weight (at its turned centroid) balance about the toe.
+  const Wall& w = *scene.left_wall;
+  const double weight = w.density * scene.material.gravity * w.thickness * w.height;
+  const Eigen::Vector2d centroid = turned(toe + Eigen::Vector2d(0.5 * w.thickness, 0.5 * w.height), toe, theta);
+  const Eigen::Vector2d p = r.shape.thrust_line.front();
+  const double overturning = cross(p - toe, Eigen::Vector2d(-last.H, -last.V_left));
+  const double restoring = cross(centroid - toe, Eigen::Vector2d(0, -weight));
+  CHECK(std::abs(overturning + restoring) <= kLocatedCollapse * std::abs(restoring));
+}
+
+TEST_CASE("spreading walls: the program's thrust equals the mechanism's virtual work on the turning springings") {
+  // Both walls, and the left one alone (an unsymmetric movement whose hinges are not mirrored).
+  for (const double right_share : {1.0, 0.0}) {
+    SpreadOptions o;
+    o.right_share = right_share;
+    const SpreadResult r = spread_on(on_walls(0.1, 1.0, 0.25), o);
+    CAPTURE(right_share);
+    REQUIRE(r.status == SpreadStatus::success);
+    REQUIRE(r.path.size() > 10);
+    for (const SpreadStep& s : r.path) CHECK(close(s.H, s.H_work, kStaticKinematic));
+    if (right_share == 0) CHECK(r.right_wall_rotation == 0);
+  }
+}
+
+TEST_CASE("spreading walls: the lean at collapse converges in the joints") {
+  const Scene scene = on_walls(0.1, 1.0, 0.25);
+  const SpreadResult coarse = spread_on(scene, {}, 201), fine = spread_on(scene, {}, 801);
+  REQUIRE(coarse.status == SpreadStatus::success);
+  REQUIRE(fine.status == SpreadStatus::success);
+  CHECK(close(coarse.left_wall_rotation, fine.left_wall_rotation, kSpreadCapacityTolerance));
+  CHECK(close(coarse.left_wall_top_displacement, fine.left_wall_top_displacement, kSpreadCapacityTolerance));
+}
+
+TEST_CASE("spreading walls: a symmetric system gives mirrored hinges along the path") {
+  const SpreadResult r = spread_on(on_walls(0.1, 1.0, 0.25));
+  REQUIRE(r.status == SpreadStatus::success);
+  const double L = r.ring.span;
+  // The mirror: the vertical through the crown joint's axis point.
+  const double mid = r.ring.joints[static_cast<std::size_t>(r.ring.crown_joint())].axis.x();
+  for (const SpreadStep* s : {&r.path.front(), &r.path.back()}) {
+    REQUIRE(s->hinges.size() == 3);
+    const Hinge &a = s->hinges.front(), &b = s->hinges.back();
+    CHECK(a.face == b.face);
+    CHECK(std::abs((a.point.x() - mid) + (b.point.x() - mid)) <= 1e-9 * L);
+    CHECK(std::abs(a.point.y() - b.point.y()) <= 1e-9 * L);
+    CHECK(std::abs(s->hinges[1].point.x() - mid) <= 1e-9 * L);
+  }
+}
+
+TEST_CASE("spreading walls: one wall leaning, then the other: mirror images") {
+  const Scene scene = on_walls(0.1, 1.0, 0.25);
+  SpreadOptions left, right;
+  left.right_share = 0;
+  right.left_share = 0;
+  const SpreadResult a = spread_on(scene, left), b = spread_on(scene, right);
+  REQUIRE(a.status == SpreadStatus::success);
+  REQUIRE(b.status == SpreadStatus::success);
+  CHECK(a.tipping_wall == 0);
+  CHECK(b.tipping_wall == 1);
+  CHECK(close(a.left_wall_rotation, b.right_wall_rotation, kSpreadTolerance));
+  CHECK(close(a.path.back().span_increase, b.path.back().span_increase, kSpreadTolerance));
+  const double L = a.ring.span;
+  const double mid = a.ring.joints[static_cast<std::size_t>(a.ring.crown_joint())].axis.x();
+  const std::vector<Hinge>&ha = a.path.back().hinges, &hb = b.path.back().hinges;
+  REQUIRE(ha.size() == hb.size());
+  for (std::size_t i = 0; i < ha.size(); ++i) {
+    const Hinge &x = ha[i], &y = hb[hb.size() - 1 - i];
+    CHECK(x.face == y.face);
+    CHECK(std::abs((x.point.x() - mid) + (y.point.x() - mid)) <= kSpreadTolerance * L);  // each collapse located to that
+    CHECK(std::abs(x.point.y() - y.point.y()) <= kSpreadTolerance * L);  // each collapse located to that
+  }
+}
+
+TEST_CASE("spreading walls: walls thinner than b_min leave no path, and misuse throws") {
+  const Scene thin = on_walls(0.1, 1.0, 0.15);  // b_min = 0.1678 L (limit)
+  CHECK(spread_on(thin).status == SpreadStatus::inadmissible);
+  const Scene scene = on_walls(0.1, 1.0, 0.25);
+  SpreadOptions settling;
+  settling.left_settlement_share = 0.5;
+  CHECK_THROWS_AS(analyse_spreading(scene, {}, settling), std::invalid_argument);
+  LimitOptions friction;
+  friction.friction = 0.6;
+  CHECK_THROWS_AS(analyse_spreading(scene, friction, {}), std::invalid_argument);
+  Scene one = scene;
+  one.left_wall.reset();
+  CHECK_THROWS_AS(analyse_spreading(one, {}, {}), std::invalid_argument);  // the left springing has no wall to turn
+  SpreadOptions right_only;
+  right_only.left_share = 0;
+  CHECK(analyse_spreading(one, {}, right_only).status == SpreadStatus::success);
+}
