@@ -83,8 +83,8 @@ const std::map<std::string, std::string>& axis_meanings() {
   // The walls' options, each in three forms: both walls, the left one, the right one.
   static const bool walls_added = [] {
     const std::pair<const char*, const char*> wall[] = {
-        {"height", "wall's height h_w from its base to the springing line, m (docs/model.md, Walls; limit, draw, "
-                   "report)"},
+        {"height", "wall's height h_w from its base to the springing line, m (docs/model.md, Walls; limit, thrust, "
+                   "spread, assess, draw, report)"},
         {"thickness", "wall's thickness b_w from the vertical through the springing's intrados point outwards, m "
                       "(needed with a height)"},
         {"density", "wall's density, kg/m^3 (default: --density)"},

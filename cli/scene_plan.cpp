@@ -100,7 +100,7 @@ std::shared_ptr<const Curve> read_points(const SceneOptions& o) {
   }
 }
 
-// The commands whose analyses take walls (the limit analysis of the system): the others refuse them.
+// The commands whose analyses take walls: the others refuse them.
 void refuse_walls(const CLI::App& cmd) {
   const std::string name = cmd.get_name();
   if (!walls_given(cmd) || name == "limit" || name == "draw" || name == "thrust" || name == "report" ||

@@ -300,11 +300,9 @@ double cracking_lean(Scene& cracking, const SpreadSetup& s, double move) {
   const double theta = move * cracking.span() / arm;
   for (const bool right : {false, true}) {
     if (!(right ? s.right_moves : s.left_moves)) continue;
-    const Eigen::Vector2d r = wall_arm(cracking, right);
     Support& support = right ? cracking.right : cracking.left;
-    support.spread = theta * r.y();
-    support.settlement = right ? theta * r.x() : -theta * r.x();
-    if (support.kind == SupportKind::clamped) support.rotation = right ? -theta : theta;
+    const Wall& wall = right ? *cracking.right_wall : *cracking.left_wall;
+    support = wall_lean_movement(wall_outline(*cracking.curve, cracking.thickness, wall, right), theta, support.kind);
   }
   return theta;
 }
