@@ -8,7 +8,8 @@ shooting (scipy's DOP853), with two optional terms that ogive does not have:
 - a crown joint (continuum.py joint): the crown's conditions Ux = 0 and psi = 0 become
   Ux + b M + c Fx = 0 and psi + a M + b Fx = 0 (the half of a joint between the two legs).
 
-Without them it is ogive's `--beam-model curved` (H/V within 3e-7 of ogive's on every row of the table).
+Without them it is ogive's `--beam-model curved` on the smooth arches, and with kink_joint (the joint that
+the bar's own coupling gives a kinked axis) on the equilateral arch (H/V within 3e-7 of ogive's).
 Units: the span L = 1 and E I = 1 (the compliances below are scaled accordingly); nu the section's.
 """
 import functools
@@ -162,6 +163,15 @@ def h_over_v(kind, t, supports="clamped", nu=0.2, held=None, joint=None, weight=
     z = np.linalg.solve(rows[:, :3], -rows[:, 3])
     y0 = Y0[:, :3] @ z + Y0[:, 3]
     return y0[3] / y0[4]
+
+
+def kink_joint(arch, t, nu=0.2):
+    """The crown joint that the curved bar's own coupling gives a kinked axis: the bar's eps and psi' gain
+    coupling kappa M and coupling kappa N (coupling = a_N (1 + 6 nu / 5) as t/R -> 0), and over the crown's
+    turn, where kappa is a Dirac delta, their integrals are the half joint (0, -a_N (1 + 6 nu / 5) sin
+    theta_c, 0): psi jumps by a_N coupling' int N dtheta = a_N coupling' Fx sin theta_c (Fy = 0 at the
+    crown), Ux by a_N coupling' M int cos theta dtheta, the same. No constant of its own."""
+    return (0.0, -t * t / 12 * (1 + 1.2 * nu) * math.sin(arch.theta(arch.S)), 0.0)
 
 
 def segment_compliance(kind, t, length, joint, nu=0.2):

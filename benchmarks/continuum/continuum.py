@@ -555,12 +555,14 @@ def run_input(text):
 
 def crown(ogive):
     """crown.csv: the equilateral arch's continuum with its pointed crown (the table's) beside the same half
-    arch ending on the radial line through the axis' crown point, held there as the beam's crown is, and
-    the curved bar: how much of the curved bar's error is the pointed crown."""
+    arch ending on the radial line through the axis' crown point, held there as the beam's crown is; the
+    curved bar without a crown term (beam.py: the legs meeting at a point, as the radial crown) and ogive's
+    (its kink): how much of the bar's error is the pointed crown, and what the kink takes of it."""
+    import beam
     with open(CROWN, "w", newline="") as f:
         w = csv.writer(f, lineterminator="\n")
-        w.writerow(["supports", "t_over_L", "pointed", "radial_crown", "fe_error", "curved",
-                    "curved_error_pointed", "curved_error_radial_crown"])
+        w.writerow(["supports", "t_over_L", "pointed", "radial_crown", "fe_error", "bar_without_kink", "curved",
+                    "without_kink_error_radial_crown", "without_kink_error_pointed", "curved_error_pointed"])
         ref = {(r["supports"], r["t_over_L"]): float(r["H_over_V"]) for r in csv.DictReader(open(REFERENCE))
                if r["arch"] == "equilateral" and r["plane"] == "stress"}
         for supports in ("clamped", "pinned"):
@@ -572,10 +574,12 @@ def crown(ogive):
                     m = re.search(r"total force \(fx,fy,fz\).*?\n\s*\n?\s*([-+0-9.Ee]+)", dat, re.S)
                     values.append(round(float(m.group(1)) / section_thickness(arch) / (RHO * G_ACC * area(arch)), 7))
                 hv, err, _ = extrapolate(values)
+                bar = beam.h_over_v("equilateral", ratio, supports)
                 curved = ogive_hv(ogive, make_arch("equilateral", ratio * SPAN), ratio, "curved", False, supports)[0]
                 pointed = ref[(supports, repr(ratio))]
-                w.writerow([supports, repr(ratio), f"{pointed:.7f}", f"{hv:.7f}", f"{err:.1e}", f"{curved:.7f}",
-                            f"{(curved - pointed) / pointed:.3e}", f"{(curved - hv) / hv:.3e}"])
+                w.writerow([supports, repr(ratio), f"{pointed:.7f}", f"{hv:.7f}", f"{err:.1e}", f"{bar:.7f}",
+                            f"{curved:.7f}", f"{(bar - hv) / hv:.3e}", f"{(bar - pointed) / pointed:.3e}",
+                            f"{(curved - pointed) / pointed:.3e}"])
                 f.flush()
     print(open(CROWN).read(), end="")
 
@@ -767,33 +771,37 @@ def joint(ogive):
 
 
 def trial(ogive):
-    """trial.csv: beam.py's curved bar beside the continuum on every plane-stress row of the table, as
-    ogive's (none), with the crown joint of joint.csv on the equilateral arch (joint), and with the held
-    springing face of strip.csv (the finest mesh, nu 0.2) on the clamped arches too (joint_held), and with
-    the self-weight's own stress across the depth as well (joint_held_weight); the summary as the table's."""
+    """trial.csv: beam.py's curved bar beside the continuum on every plane-stress row of the table, without
+    a crown term (none: ogive's before its kink); with the crown joint of joint.csv on the equilateral arch (joint), and with the held
+    springing face of strip.csv (the finest mesh, nu 0.2) on the clamped arches and the self-weight's own
+    stress across the depth as well (joint_held_weight); the same with the crown joint that the curved
+    bar's own coupling gives the kink instead (kink: ogive's `curved`; kink_held_weight: beam.kink_joint). The summary as
+    the table's, each variant's rows beyond half of Timoshenko's error with the continuum's fe_error."""
     import beam
     joints = {r["t_over_L"]: (float(r["a"]), float(r["b"]), float(r["c"])) for r in csv.DictReader(open(JOINT))}
     held = [r for r in csv.DictReader(open(STRIP)) if r["nu"] == repr(NU)][-1]
     held = tuple(float(held[k]) for k in ("c_NN", "c_VV", "c_VM", "c_MM"))
     rows = [r for r in csv.DictReader(open(TABLE)) if r["plane"] == "stress"]
     out = []
+    names = ["none", "joint", "joint_held_weight", "kink", "kink_held_weight"]
     with open(TRIAL, "w", newline="") as f:
         w = csv.writer(f, lineterminator="\n")
-        w.writerow(["arch", "supports", "t_over_L", "continuum", "timoshenko_error", "curved_error", "none_error",
-                    "joint_error", "joint_held_error", "joint_held_weight_error"])
+        w.writerow(["arch", "supports", "t_over_L", "continuum", "timoshenko_error", "curved_error"] +
+                   [f"{n}_error" for n in names])
         for r in rows:
             ratio, ref = float(r["t_over_L"]), float(r["continuum"])
-            J = joints[r["t_over_L"]] if r["arch"] == "equilateral" else (0.0, 0.0, 0.0)
+            pointed = r["arch"] == "equilateral"
+            J = joints[r["t_over_L"]] if pointed else (0.0, 0.0, 0.0)
             J = (J[0] * ratio / 12, J[1] * ratio ** 2 / 12, J[2] * ratio ** 3 / 12)
-            got = [beam.h_over_v(r["arch"], ratio, r["supports"]),
-                   beam.h_over_v(r["arch"], ratio, r["supports"], joint=J),
-                   beam.h_over_v(r["arch"], ratio, r["supports"], joint=J, held=held),
-                   beam.h_over_v(r["arch"], ratio, r["supports"], joint=J, held=held, weight=True)]
+            kink = beam.kink_joint(beam.Arch(r["arch"]), ratio) if pointed else (0.0, 0.0, 0.0)
+            hv = lambda **kw: beam.h_over_v(r["arch"], ratio, r["supports"], **kw)
+            got = [hv(), hv(joint=J), hv(joint=J, held=held, weight=True), hv(joint=kink),
+                   hv(joint=kink, held=held, weight=True)]
             errors = [(g - ref) / max(abs(ref), 0.01) for g in got]
             out.append((r, errors))
             w.writerow([r["arch"], r["supports"], r["t_over_L"], r["continuum"], r["timoshenko_error"], r["curved_error"]] +
                        [f"{e:.3e}" for e in errors])
-    for k, name in enumerate(("none", "joint", "joint_held", "joint_held_weight")):
+    for k, name in enumerate(names):
         half = sum(1 for r, e in out if abs(e[k]) <= 0.5 * abs(float(r["timoshenko_error"])))
         near = [(r, e) for r, e in out if float(r["t_over_L"]) <= 0.2]
         ok = sum(1 for r, e in near if abs(e[k]) <= 0.005)
