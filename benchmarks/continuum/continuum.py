@@ -775,7 +775,8 @@ def trial(ogive):
     a crown term (none: ogive's before its kink); with the crown joint of joint.csv on the equilateral arch (joint), and with the held
     springing face of strip.csv (the finest mesh, nu 0.2) on the clamped arches and the self-weight's own
     stress across the depth as well (joint_held_weight); the same with the crown joint that the curved
-    bar's own coupling gives the kink instead (kink: ogive's `curved`; kink_held_weight: beam.kink_joint). The summary as
+    bar's own coupling gives the kink instead (kink: ogive's `curved`, beam.kink_joint; kink_held, kink_weight
+    and kink_held_weight with one or both of the other terms). The summary as
     the table's, each variant's rows beyond half of Timoshenko's error with the continuum's fe_error."""
     import beam
     joints = {r["t_over_L"]: (float(r["a"]), float(r["b"]), float(r["c"])) for r in csv.DictReader(open(JOINT))}
@@ -783,7 +784,7 @@ def trial(ogive):
     held = tuple(float(held[k]) for k in ("c_NN", "c_VV", "c_VM", "c_MM"))
     rows = [r for r in csv.DictReader(open(TABLE)) if r["plane"] == "stress"]
     out = []
-    names = ["none", "joint", "joint_held_weight", "kink", "kink_held_weight"]
+    names = ["none", "joint", "joint_held_weight", "kink", "kink_held", "kink_weight", "kink_held_weight"]
     with open(TRIAL, "w", newline="") as f:
         w = csv.writer(f, lineterminator="\n")
         w.writerow(["arch", "supports", "t_over_L", "continuum", "timoshenko_error", "curved_error"] +
@@ -795,8 +796,8 @@ def trial(ogive):
             J = (J[0] * ratio / 12, J[1] * ratio ** 2 / 12, J[2] * ratio ** 3 / 12)
             kink = beam.kink_joint(beam.Arch(r["arch"]), ratio) if pointed else (0.0, 0.0, 0.0)
             hv = lambda **kw: beam.h_over_v(r["arch"], ratio, r["supports"], **kw)
-            got = [hv(), hv(joint=J), hv(joint=J, held=held, weight=True), hv(joint=kink),
-                   hv(joint=kink, held=held, weight=True)]
+            got = [hv(), hv(joint=J), hv(joint=J, held=held, weight=True), hv(joint=kink), hv(joint=kink, held=held),
+                   hv(joint=kink, weight=True), hv(joint=kink, held=held, weight=True)]
             errors = [(g - ref) / max(abs(ref), 0.01) for g in got]
             out.append((r, errors))
             w.writerow([r["arch"], r["supports"], r["t_over_L"], r["continuum"], r["timoshenko_error"], r["curved_error"]] +
