@@ -18,6 +18,10 @@ Usage (from the repository's top, after the build):
   /usr/bin/python3 benchmarks/continuum/continuum.py poisson   # nu 0 against 0.2: poisson.csv
   /usr/bin/python3 benchmarks/continuum/continuum.py ends      # the held face against one free laterally
   /usr/bin/python3 benchmarks/continuum/continuum.py spread    # no weight, the springings spread apart
+  /usr/bin/python3 benchmarks/continuum/continuum.py crown     # the pointed crown against a beam's crown
+  /usr/bin/python3 benchmarks/continuum/continuum.py strip     # a held face's compliance, a straight strip
+  /usr/bin/python3 benchmarks/continuum/continuum.py joint     # the pointed crown's joint, a local problem
+  /usr/bin/python3 benchmarks/continuum/continuum.py trial     # the curved bar with both terms (beam.py)
   /usr/bin/python3 benchmarks/continuum/continuum.py figure    # docs/figures/continuum.png from the CSV
 """
 import argparse
@@ -353,6 +357,10 @@ TABLE = os.path.join(HERE, "continuum.csv")
 POISSON = os.path.join(HERE, "poisson.csv")
 ENDS = os.path.join(HERE, "ends.csv")
 SPREAD = os.path.join(HERE, "spread.csv")
+CROWN = os.path.join(HERE, "crown.csv")
+STRIP = os.path.join(HERE, "strip.csv")
+JOINT = os.path.join(HERE, "joint.csv")
+TRIAL = os.path.join(HERE, "trial.csv")
 SPREAD_CASES = [("semicircular", 0.1), ("semicircular", 0.2), ("segmental", 0.2), ("catenary", 0.2)]
 ENDS_CASES = [("semicircular", 0.1), ("semicircular", 0.2), ("equilateral", 0.2), ("catenary", 0.08), ("catenary", 0.2)]
 POISSON_CASES = [("semicircular", "pinned", 0.1), ("semicircular", "pinned", 0.2), ("semicircular", "clamped", 0.1),
@@ -508,6 +516,304 @@ def spread(ogive):
     print(open(SPREAD).read(), end="")
 
 
+class RadialCrown(Pointed):
+    """The pointed arch's half cut on the radial line through the axis' crown point: the beam's own crown
+    section, not the crown's vertical line (where the two legs meet in one wedge of material)."""
+
+    def face(self, side, xi):
+        r = self.R + side * self.t / 2
+        end = math.acos((SPAN / 2 - self.cx) / self.R)  # the same angle for every radius
+        phi = math.pi + xi * (end - math.pi)
+        return (self.cx + r * math.cos(phi), r * math.sin(phi))
+
+
+def crown_input(arch, n_across, supports):
+    """The radial crown face held as the beam's crown: every node's ux zero (the crown's set) and its uy
+    the axis node's (a face that slides vertically without turning or changing its shape)."""
+    text, _ = ccx_input(arch, n_across, False, supports)
+    crown = mesh(arch, n_across)[3]
+    master = crown[len(crown) // 2]
+    lines = ["*EQUATION"]
+    for k in crown:
+        if k != master:
+            lines += ["2", f"{k}, 2, 1., {master}, 2, -1."]
+    return text.replace("*STEP", "\n".join(lines) + "\n*STEP", 1)
+
+
+def run_input(text):
+    """Runs ccx on an input deck; the .dat file's text."""
+    with tempfile.TemporaryDirectory() as work:
+        with open(os.path.join(work, "arch.inp"), "w") as f:
+            f.write(text)
+        run = subprocess.run(["ccx", "-i", "arch"], cwd=work, capture_output=True, text=True,
+                             env=dict(os.environ, OMP_NUM_THREADS="1"))
+        path = os.path.join(work, "arch.dat")
+        if run.returncode != 0 or not os.path.exists(path):
+            raise RuntimeError(f"ccx failed ({run.returncode}): {run.stdout[-2000:]}")
+        return open(path).read()
+
+
+def crown(ogive):
+    """crown.csv: the equilateral arch's continuum with its pointed crown (the table's) beside the same half
+    arch ending on the radial line through the axis' crown point, held there as the beam's crown is; the
+    curved bar without a crown term (beam.py: the legs meeting at a point, as the radial crown) and ogive's
+    (its kink): how much of the bar's error is the pointed crown, and what the kink takes of it."""
+    import beam
+    with open(CROWN, "w", newline="") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(["supports", "t_over_L", "pointed", "radial_crown", "fe_error", "bar_without_kink", "curved",
+                    "without_kink_error_radial_crown", "without_kink_error_pointed", "curved_error_pointed"])
+        ref = {(r["supports"], r["t_over_L"]): float(r["H_over_V"]) for r in csv.DictReader(open(REFERENCE))
+               if r["arch"] == "equilateral" and r["plane"] == "stress"}
+        for supports in ("clamped", "pinned"):
+            for ratio in (0.1, 0.15, 0.2, 0.25):
+                arch = RadialCrown(0.5, ratio * SPAN)
+                values = []
+                for n in (4, 8, 16):
+                    dat = run_input(crown_input(arch, n, supports))
+                    m = re.search(r"total force \(fx,fy,fz\).*?\n\s*\n?\s*([-+0-9.Ee]+)", dat, re.S)
+                    values.append(round(float(m.group(1)) / section_thickness(arch) / (RHO * G_ACC * area(arch)), 7))
+                hv, err, _ = extrapolate(values)
+                bar = beam.h_over_v("equilateral", ratio, supports)
+                curved = ogive_hv(ogive, make_arch("equilateral", ratio * SPAN), ratio, "curved", False, supports)[0]
+                pointed = ref[(supports, repr(ratio))]
+                w.writerow([supports, repr(ratio), f"{pointed:.7f}", f"{hv:.7f}", f"{err:.1e}", f"{bar:.7f}",
+                            f"{curved:.7f}", f"{(bar - hv) / hv:.3e}", f"{(bar - pointed) / pointed:.3e}",
+                            f"{(curved - pointed) / pointed:.3e}"])
+                f.flush()
+    print(open(CROWN).read(), end="")
+
+
+class Strip:
+    """A straight strip of depth t and length ell: x along it, y across."""
+
+    def __init__(self, t, ell):
+        self.t, self.ell = t, ell
+
+    def face(self, side, xi):
+        return (xi * self.ell, side * self.t / 2)
+
+    def axis_length(self):
+        return self.ell
+
+
+def strip_run(ell, nu, n_across):
+    """The strip t = 1, E = 1 held whole at x = 0, its far face loaded by Saint-Venant's tractions (the
+    consistent nodal forces of a uniform N and of a parabolic shear V): the far face's displacements
+    conjugate to N, V and M (the tractions' work per unit load) under each load."""
+    t = 1.0
+    arch = Strip(t, ell)
+    nodes, elements, held, tip = mesh(arch, n_across)
+    th = section_thickness(arch)
+    lines = ["*HEADING", "held strip", "*NODE"] + [f"{k + 1}, {x:.13f}, {y:.13f}, 0" for k, (x, y) in enumerate(nodes)]
+    lines += ["*ELEMENT, TYPE=CPS8, ELSET=EALL"] + [f"{k + 1}, " + ", ".join(map(str, e)) for k, e in enumerate(elements)]
+    lines += ["*NSET, NSET=NHELD"] + [str(n) for n in held] + ["*NSET, NSET=NTIP"] + [str(n) for n in tip]
+    lines += ["*MATERIAL, NAME=M", "*ELASTIC", f"1., {nu!r}", "*SOLID SECTION, ELSET=EALL, MATERIAL=M", f"{th!r}",
+              "*BOUNDARY", "NHELD, 1, 2, 0."]
+    ys = [nodes[n - 1][1] for n in tip]
+    tractions = {"N": lambda y: (1 / t, 0.0), "V": lambda y: (0.0, 1.5 / t * (1 - 4 * y * y / (t * t))),
+                 "M": lambda y: (-12 * y / t ** 3, 0.0)}
+    gauss = [(-0.9324695142, 0.1713244924), (-0.6612093865, 0.3607615730), (-0.2386191861, 0.4679139346),
+             (0.2386191861, 0.4679139346), (0.6612093865, 0.3607615730), (0.9324695142, 0.1713244924)]
+    forces = {}
+    for name, trac in tractions.items():
+        f = [[0.0, 0.0] for _ in tip]
+        for e in range(0, len(tip) - 1, 2):  # the far face's 3-node edges
+            h = ys[e + 2] - ys[e]
+            for xi, wt in gauss:
+                shape = [xi * (xi - 1) / 2, 1 - xi * xi, xi * (xi + 1) / 2]
+                p = trac(ys[e] + (xi + 1) / 2 * h)
+                for a in range(3):
+                    for d in range(2):
+                        f[e + a][d] += p[d] * shape[a] * wt * h / 2
+        forces[name] = f
+    for name in ("N", "V"):  # the moment follows from V at two lengths (strip_compliance)
+        lines += ["*STEP", "*STATIC", "*CLOAD, OP=NEW"]
+        lines += [f"{n}, {d + 1}, {forces[name][k][d] * th:.12g}" for k, n in enumerate(tip) for d in range(2)
+                  if abs(forces[name][k][d]) > 1e-14]
+        lines += ["*NODE PRINT, NSET=NTIP", "U", "*END STEP"]
+    dat = run_input("\n".join(lines) + "\n")
+    out = {}
+    for name, block in zip(("N", "V"), re.split(r"displacements \(vx,vy,vz\)", dat)[1:]):
+        u = {int(m.group(1)): (float(m.group(2)), float(m.group(3)))
+             for m in re.finditer(r"^\s*(\d+)\s+([-+0-9.Ee]+)\s+([-+0-9.Ee]+)\s+[-+0-9.Ee]+\s*$", block, re.M)}
+        out[name] = {c: sum(forces[c][k][d] * u[n][d] for k, n in enumerate(tip) for d in range(2)) for c in "NVM"}
+    return out
+
+
+def strip_compliance(nu, n_across):
+    """The held face's compliance beyond Timoshenko's clamped beam (k = 5/6), per unit width: the far face
+    moves by dC (N, V, M) more than the beam's, dC = [[cNN / E, 0, 0], [0, cVV / E, cVM / (E t)],
+    [0, cVM / (E t), cMM / (E t^2)]] at the held face's resultants. From two lengths (4 t and 8 t: the
+    zone's terms do not depend on the length, the beam's are known)."""
+    G, k = 1 / (2 * (1 + nu)), 5 / 6
+    r = {ell: strip_run(ell, nu, n_across) for ell in (4.0, 8.0)}
+    # Under V the far face turns by ell^2 / 2EI + cVM + ell cMM and moves by ell^3 / 3EI + ell / kGA +
+    # cVV + 2 ell cVM + ell^2 cMM (E = t = 1, I = 1/12).
+    turn = {ell: r[ell]["V"]["M"] - 6 * ell ** 2 for ell in r}
+    cMM = (turn[8.0] - turn[4.0]) / 4
+    cVM = turn[4.0] - 4 * cMM
+    cVV = r[4.0]["V"]["V"] - 4 * 4.0 ** 3 - 4.0 / (k * G) - 8 * cVM - 16 * cMM
+    cNN = r[4.0]["N"]["N"] - 4.0
+    return cNN, cVV, cVM, cMM
+
+
+def strip(ogive):
+    """strip.csv: the held face's compliance (strip_compliance) at nu 0 and 0.2, meshes of 8, 16 and 32
+    elements through the depth (the held face's corners are singular: it converges slowly)."""
+    with open(STRIP, "w", newline="") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(["nu", "elements_across", "c_NN", "c_VV", "c_VM", "c_MM"])
+        for nu in (0.0, NU):
+            for n in (8, 16, 32):
+                w.writerow([repr(nu), n] + [f"{c:.5f}" for c in strip_compliance(nu, n)])
+                f.flush()
+    print(open(STRIP).read(), end="")
+
+
+class CrownSegment(Pointed):
+    """The pointed arch's crown part, from the axis angle phi0 to the crown: ending on the crown's vertical
+    line (the two legs' wedge, `radial` False) or on the radial line through the axis' crown point."""
+
+    def __init__(self, eps, t, phi0, radial):
+        super().__init__(eps, t)
+        self.phi0, self.radial = phi0, radial
+
+    def face(self, side, xi):
+        r = self.R + side * self.t / 2
+        end = math.acos((SPAN / 2 - self.cx) / (self.R if self.radial else r))
+        phi = self.phi0 + xi * (end - self.phi0)
+        return (self.cx + r * math.cos(phi), r * math.sin(phi))
+
+    def axis_length(self):
+        return self.R * abs(math.acos((SPAN / 2 - self.cx) / self.R) - self.phi0)
+
+
+def segment_stiffness(seg, n_across):
+    """The crown segment without weight, its crown held as in the table (the vertical line's ux = 0) or as
+    the beam's crown (crown_input's radial face), its lower face a rigid line: the 2 x 2 stiffness from the
+    lower face's (ux, rotation about its axis node; uy = 0) to the face's force Fx and moment on the
+    segment, per metre of width. Translation: every face node moved alike; rotation: the face a rigid line
+    about its held axis node (as the pinned springing), turned by a force on its extrados node, Fx from
+    the crown's reaction."""
+    nodes, elements, low, crown_nodes = mesh(seg, n_across)
+    th = section_thickness(seg)
+    base = ["*HEADING", "crown segment", "*NODE"] + [f"{k + 1}, {x:.13f}, {y:.13f}, 0" for k, (x, y) in enumerate(nodes)]
+    base += ["*ELEMENT, TYPE=CPS8, ELSET=EALL"] + [f"{k + 1}, " + ", ".join(map(str, e)) for k, e in enumerate(elements)]
+    base += ["*NSET, NSET=NLOW"] + [str(k) for k in low] + ["*NSET, NSET=NCROWN"] + [str(k) for k in crown_nodes]
+    base += ["*MATERIAL, NAME=STONE", "*ELASTIC", f"{E:.15g}, {NU:.15g}", "*SOLID SECTION, ELSET=EALL, MATERIAL=STONE",
+             f"{th:.15g}", "*BOUNDARY", "NCROWN, 1, 1, 0."]
+    if seg.radial:
+        master = crown_nodes[len(crown_nodes) // 2]
+        base += ["*EQUATION"] + [x for k in crown_nodes if k != master for x in ("2", f"{k}, 2, 1., {master}, 2, -1.")]
+    ref, e_node = low[len(low) // 2], low[-1]
+    (x0, y0), (xe, ye) = nodes[ref - 1], nodes[e_node - 1]
+    number = r"^\s*(\d+)\s+([-+0-9.Ee]+)\s+([-+0-9.Ee]+)\s+[-+0-9.Ee]+\s*$"
+    K = [[0.0, 0.0], [0.0, 0.0]]
+    move = 1e-4
+    dat = run_input("\n".join(base + ["*BOUNDARY", f"NLOW, 1, 1, {move!r}", "NLOW, 2, 2, 0.", "*STEP", "*STATIC",
+                                      "*NODE PRINT, NSET=NLOW", "RF", "*END STEP"]) + "\n")
+    rf = {int(m.group(1)): (float(m.group(2)), float(m.group(3))) for m in re.finditer(number, dat, re.M)}
+    K[0][0] = sum(rf[k][0] for k in low) / th / move
+    K[1][0] = sum((nodes[k - 1][0] - x0) * rf[k][1] - (nodes[k - 1][1] - y0) * rf[k][0] for k in low) / th / move
+    re_ = math.hypot(xe - x0, ye - y0)
+    d = ((xe - x0) / re_, (ye - y0) / re_)
+    normal = (-d[1], d[0])
+    lines = base + ["*BOUNDARY", f"{ref}, 1, 2, 0.", "*EQUATION", "2", f"{e_node}, 1, {d[0]:.15g}, {e_node}, 2, {d[1]:.15g}"]
+    for k in low:
+        if k not in (ref, e_node):
+            r = ((nodes[k - 1][0] - x0) * d[0] + (nodes[k - 1][1] - y0) * d[1]) / re_
+            lines += [x for dof in (1, 2) for x in ("2", f"{k}, {dof}, 1., {e_node}, {dof}, {-r:.15g}")]
+    force = 1e3 * th
+    lines += ["*STEP", "*STATIC", "*CLOAD", f"{e_node}, 1, {force * normal[0]:.15g}", f"{e_node}, 2, {force * normal[1]:.15g}",
+              "*NODE PRINT, NSET=NLOW", "U", "*NODE PRINT, NSET=NCROWN, TOTALS=ONLY", "RF", "*END STEP"]
+    dat = run_input("\n".join(lines) + "\n")
+    moved, totals = re.split(r"total force \(fx,fy,fz\)", dat)[:2]
+    u = {int(m.group(1)): (float(m.group(2)), float(m.group(3))) for m in re.finditer(number, moved, re.M)}
+    turn = (u[e_node][0] * normal[0] + u[e_node][1] * normal[1]) / re_
+    crown_fx = float(re.search(r"\n\s*([-+]?[0-9.]+E[-+][0-9]+)\s+", totals).group(1))
+    K[0][1] = -crown_fx / th / turn
+    K[1][1] = force * re_ / th / turn
+    return K
+
+
+def joint(ogive):
+    """joint.csv: the equilateral arch's pointed crown as a joint between the two legs, from the local
+    problem alone: the crown's last 4 t of the half arch (CrownSegment) with the pointed crown and with the
+    beam's radial one; the difference of their compliances is the joint's (in series), which beam.py turns
+    into the crown conditions' (a, b, c): psi + a M + b Fx = 0, Ux + b M + c Fx = 0 (scaled), printed per
+    E and t as a t/12, b t^2/12, c t^3/12. Each extrapolated from 4, 8 and 16 elements through the depth."""
+    import beam
+    with open(JOINT, "w", newline="") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(["t_over_L", "a", "b", "c", "a_meshes", "b_meshes", "c_meshes"])
+        for ratio in RATIOS:
+            t = ratio * SPAN
+            phi_c = math.acos(-0.5)
+            phi0 = phi_c + 4 * t / SPAN  # R = L
+            EI = E * t ** 3 / 12
+            scale = [[EI / SPAN ** 3, EI / SPAN ** 2], [EI / SPAN ** 2, EI / SPAN]]
+            found = []
+            for n in (4, 8, 16):
+                comp = []
+                for radial in (False, True):
+                    K = segment_stiffness(CrownSegment(0.5, t, phi0, radial), n)
+                    det = K[0][0] * K[1][1] - K[0][1] * K[1][0]
+                    comp.append([[K[1][1] / det, -K[0][1] / det], [-K[1][0] / det, K[0][0] / det]])
+                dC = [[(comp[0][i][j] - comp[1][i][j]) * scale[i][j] for j in range(2)] for i in range(2)]
+                a, b, c = beam.joint_from("equilateral", ratio, 4 * t / SPAN, dC)
+                found.append((a * 12 / ratio, b * 12 / ratio ** 2, c * 12 / ratio ** 3))
+            best = [extrapolate([round(v[k], 7) for v in found])[0] for k in range(3)]
+            w.writerow([repr(ratio)] + [f"{v:.5f}" for v in best] +
+                       [" ".join(f"{v[k]:.5f}" for v in found) for k in range(3)])
+            f.flush()
+    print(open(JOINT).read(), end="")
+
+
+def trial(ogive):
+    """trial.csv: beam.py's curved bar beside the continuum on every plane-stress row of the table, without
+    a crown term (none: ogive's before its kink); with the crown joint of joint.csv on the equilateral arch (joint), and with the held
+    springing face of strip.csv (the finest mesh, nu 0.2) on the clamped arches and the self-weight's own
+    stress across the depth as well (joint_held_weight); the same with the crown joint that the curved
+    bar's own coupling gives the kink instead (kink: ogive's `curved`, beam.kink_joint; kink_held, kink_weight
+    and kink_held_weight with one or both of the other terms). The summary as
+    the table's, each variant's rows beyond half of Timoshenko's error with the continuum's fe_error."""
+    import beam
+    joints = {r["t_over_L"]: (float(r["a"]), float(r["b"]), float(r["c"])) for r in csv.DictReader(open(JOINT))}
+    held = [r for r in csv.DictReader(open(STRIP)) if r["nu"] == repr(NU)][-1]
+    held = tuple(float(held[k]) for k in ("c_NN", "c_VV", "c_VM", "c_MM"))
+    rows = [r for r in csv.DictReader(open(TABLE)) if r["plane"] == "stress"]
+    out = []
+    names = ["none", "joint", "joint_held_weight", "kink", "kink_held", "kink_weight", "kink_held_weight"]
+    with open(TRIAL, "w", newline="") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(["arch", "supports", "t_over_L", "continuum", "timoshenko_error", "curved_error"] +
+                   [f"{n}_error" for n in names])
+        for r in rows:
+            ratio, ref = float(r["t_over_L"]), float(r["continuum"])
+            pointed = r["arch"] == "equilateral"
+            J = joints[r["t_over_L"]] if pointed else (0.0, 0.0, 0.0)
+            J = (J[0] * ratio / 12, J[1] * ratio ** 2 / 12, J[2] * ratio ** 3 / 12)
+            kink = beam.kink_joint(beam.Arch(r["arch"]), ratio) if pointed else (0.0, 0.0, 0.0)
+            hv = lambda **kw: beam.h_over_v(r["arch"], ratio, r["supports"], **kw)
+            got = [hv(), hv(joint=J), hv(joint=J, held=held, weight=True), hv(joint=kink), hv(joint=kink, held=held),
+                   hv(joint=kink, weight=True), hv(joint=kink, held=held, weight=True)]
+            errors = [(g - ref) / max(abs(ref), 0.01) for g in got]
+            out.append((r, errors))
+            w.writerow([r["arch"], r["supports"], r["t_over_L"], r["continuum"], r["timoshenko_error"], r["curved_error"]] +
+                       [f"{e:.3e}" for e in errors])
+    for k, name in enumerate(names):
+        half = sum(1 for r, e in out if abs(e[k]) <= 0.5 * abs(float(r["timoshenko_error"])))
+        near = [(r, e) for r, e in out if float(r["t_over_L"]) <= 0.2]
+        ok = sum(1 for r, e in near if abs(e[k]) <= 0.005)
+        print(f"{name}: error <= half of timoshenko's on {half} of {len(out)} rows, within 0.5 % up to t/L 0.2 on "
+              f"{ok} of {len(near)}, largest {max(abs(e[k]) for r, e in out):.2e}")
+        for r, e in out:
+            if abs(e[k]) > 0.5 * abs(float(r["timoshenko_error"])) and k > 0:
+                print(f"  not: {r['arch']} {r['supports']} t/L {r['t_over_L']}: {e[k]:+.2e}, timoshenko "
+                      f"{float(r['timoshenko_error']):+.2e}, fe_error {float(r['fe_error']) / float(r['continuum']):.1e}")
+
+
 def figure(out=os.path.join(TOP, "docs", "figures", "continuum.png")):
     """Each beam model's H/V error against the continuum over t/L, one panel per arch (plane stress;
     clamped solid, pinned dashed), drawn by gnuplot."""
@@ -539,7 +845,8 @@ def figure(out=os.path.join(TOP, "docs", "figures", "continuum.png")):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("what", choices=["check", "reference", "table", "summary", "poisson", "ends", "spread", "figure"])
+    parser.add_argument("what", choices=["check", "reference", "table", "summary", "poisson", "ends", "spread", "crown", "strip",
+                                           "joint", "trial", "figure"])
     parser.add_argument("--ogive", default=os.path.join(TOP, "build", "ogive"))
     parser.add_argument("--supports", default="clamped,pinned")
     args = parser.parse_args()
@@ -564,6 +871,14 @@ def main():
         spread(args.ogive)
     elif args.what == "ends":
         ends(args.ogive)
+    elif args.what == "crown":
+        crown(args.ogive)
+    elif args.what == "strip":
+        strip(args.ogive)
+    elif args.what == "joint":
+        joint(args.ogive)
+    elif args.what == "trial":
+        trial(args.ogive)
     else:
         figure()
 

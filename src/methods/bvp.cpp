@@ -33,11 +33,12 @@ int unknown_count(const ArchModel& model) { return model.hinge() ? 4 : 3; }
 
 std::vector<double> required_knots(const ArchModel& model) {
   std::vector<double> knots;
-  knots.reserve(model.jumps().size() + 3);
+  knots.reserve(model.jumps().size() + 4);
   knots.push_back(0.0);
   for (const PointJump& j : model.jumps())
     if (j.s > 0 && j.s < model.length()) knots.push_back(j.s);
   if (model.hinge()) knots.push_back(*model.hinge());
+  if (model.kink()) knots.push_back(model.kink()->s);
   knots.push_back(model.length());
   std::sort(knots.begin(), knots.end());
   knots.erase(std::unique(knots.begin(), knots.end()), knots.end());
@@ -101,7 +102,15 @@ bool march(const ArchModel& model, const std::vector<double>& knots, const Advan
       Y.col(3).setZero();
       Y(kPsi, 3) = 1.0;  // psi jumps by the fourth unknown
     }
+    const bool kink = model.kink() && s == model.kink()->s;
+    // A kink's turn in two halves, a load at the crown between them (each half turns with its side's Fy).
+    auto turn = [&](double theta1, double theta2) {
+      const AffineState jump = model.kink_jump(theta1, theta2).lazyProduct(Y);
+      Y += jump;
+    };
+    if (kink) turn(model.kink()->theta_before, 0.0);
     apply_jumps(s);
+    if (kink) turn(0.0, model.kink()->theta_after);
   }
   out.end = Y;
   return true;

@@ -196,6 +196,14 @@ PanelColumns integrate_panel(const ArchModel& model, const Panel& panel, const C
   return out;
 }
 
+// The columns across the curved bar's kink (ArchModel::kink) where the panel ends on it: the whole turn
+// at once (the quadrature takes no point loads).
+void cross_kink(const ArchModel& model, const Panel& panel, Columns& Y) {
+  if (!model.kink() || panel.b != model.kink()->s) return;
+  const Columns before = Y;
+  Y += model.kink_jump(model.kink()->theta_before, model.kink()->theta_after) * before;
+}
+
 // One degree's transfer over the half arch and its boundary-value solve; the field is built only for
 // the degree that is returned (make_solution). The panels' columns are not kept (a survey of 10^5
 // points has 10^5 panels, and they would take kilobytes each): node_states integrates them again from
@@ -217,7 +225,10 @@ Level solve_level(const ArchModel& model, const std::vector<Panel>& panels, int 
   const SpringingSplit split = springing_split(model);
   for (int k : {kUx, kUy, kPsi}) Y(k, kLoad) = split.start[k];
   level.springing = Y;
-  for (const Panel& panel : panels) Y = integrate_panel(model, panel, rule, Y).end;
+  for (const Panel& panel : panels) {
+    Y = integrate_panel(model, panel, rule, Y).end;
+    cross_kink(model, panel, Y);
+  }
   // The whole transfer y(S) = Phi y(0) + p for the boundary-value solve the methods share. The given
   // springing components' columns are exact: a unit Ux0 or Uy0 is a rigid translation, a unit psi0 a
   // rigid rotation about the springing (Ux = -y, Uy = x at the domain's end: the crown, or the right
@@ -248,6 +259,7 @@ NodeStates node_states(const ArchModel& model, const std::vector<Panel>& panels,
   for (std::size_t k = 0; k < panels.size(); ++k) {
     const PanelColumns columns = integrate_panel(model, panels[k], rule, Y);
     Y = columns.end;
+    cross_kink(model, panels[k], Y);
     Eigen::MatrixXd panel_states(kStateSize, n);
     for (int i : {kFx, kFy, kM, kPsi}) panel_states.row(i) = (columns.component(i) * level.y0).transpose();
     integrand.col(0) = columns.component(kUx) * level.y0;
@@ -255,7 +267,7 @@ NodeStates node_states(const ArchModel& model, const std::vector<Panel>& panels,
     cumulative(rule.integration, panels[k].nodes.col(kJacobian), integrand, scaled, integral);
     panel_states.row(kUx) = (y_start[kUx] + integral.col(0).array()).transpose();
     panel_states.row(kUy) = (y_start[kUy] + integral.col(1).array()).transpose();
-    y_start = columns.end * level.y0;
+    y_start = Y * level.y0;
     states.push_back(std::move(panel_states));
   }
   return states;

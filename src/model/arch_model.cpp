@@ -114,6 +114,7 @@ ArchModel::ArchModel(Scene scene, bool whole_arch_domain) : scene_(std::move(sce
              : m.effective_modulus() / (m.shear_coefficient * m.shear_modulus()) * a_N_;
   self_weight_ = scene_.weight_per_length() / w;
   uniform_ = scene_.loads.empty();
+  find_kink();
   place_loads();
   set_boundary_conditions();
   sum_loads();
@@ -121,6 +122,28 @@ ArchModel::ArchModel(Scene scene, bool whole_arch_domain) : scene_(std::move(sce
     sum_centroid_offset();
     tabulate_section();
   }
+}
+
+void ArchModel::find_kink() {
+  // Only a half curve has a kink (the pointed crown, where it meets its mirror); a whole curve is smooth.
+  // A smooth crown's tangent is 0 to round-off: a kink turns by a finite angle.
+  constexpr double kSmoothCrown = 1e-9;
+  if (!curved() || scene_.curve->extent() != CurveExtent::half) return;
+  const double theta_c = scene_.curve->angle(scene_.curve->length());
+  if (std::abs(theta_c) <= kSmoothCrown) return;
+  crown_kink_angle_ = theta_c;
+  if (!half_) kink_ = Kink{scene_.curve->length() / scene_.span(), theta_c, -theta_c};
+}
+
+SystemMatrix ArchModel::kink_jump(double theta1, double theta2) const {
+  SystemMatrix K = SystemMatrix::Zero();
+  const double f = a_N_ * (1 + 1.2 * section_poisson_ratio());
+  const double dsin = std::sin(theta2) - std::sin(theta1), dcos = std::cos(theta1) - std::cos(theta2);
+  K(kUx, kM) = f * dsin;
+  K(kUy, kM) = f * dcos;
+  K(kPsi, kFx) = f * dsin;
+  K(kPsi, kFy) = f * dcos;
+  return K;
 }
 
 void ArchModel::sum_centroid_offset() {
@@ -306,6 +329,12 @@ void ArchModel::set_boundary_conditions() {
     bc_.at_end(4, scene_.crown_hinge ? kM : kPsi) = 1.0;
     bc_.at_end(5, kFy) = 1.0;
     bc_.rhs(5) = -crown_load_;
+    if (crown_kink_angle_ != 0) {
+      // The crown's conditions hold beyond the half of the kink's turn, on the symmetry line.
+      const SystemMatrix K = kink_jump(crown_kink_angle_, 0.0);
+      bc_.at_end.row(3) += K.row(kUx);
+      if (!scene_.crown_hinge) bc_.at_end.row(4) += K.row(kPsi);
+    }
   } else {
     springing(scene_.right, 1.0, 3, bc_.at_end);
   }

@@ -14,10 +14,10 @@ namespace ogive {
 namespace {
 
 // The bound's constants, from benchmarks/continuum/continuum.csv (its README gives the curved bar's
-// errors row by row). The linear term covers the ends (a pointed crown's block, the springing face held
-// whole), whose zones are about t long; the quadratic one how they and the weight's own stress across the
-// depth grow as the arch deepens (the largest ratio of error to bound, 0.82, is the clamped equilateral
-// arch's at t/L 0.1).
+// errors row by row). The linear term covers the ends (what remains of a pointed crown's joint beyond its
+// kink, the springing face held whole), whose zones are about t long; the quadratic one how they and the
+// weight's own stress across the depth grow as the arch deepens (the largest ratio of error to bound, 0.40,
+// is the clamped equilateral arch's at t/L 0.02).
 constexpr double kLinear = 0.012, kQuadratic = 0.35;
 
 Scene with_model(const Scene& scene, BeamModel model) {

@@ -137,6 +137,22 @@ class ArchModel {
     double coupling = 0, bending = 1, axial = 1, shear = 1, offset = 0;
   };
   CurvedBar curved_bar(double k) const;
+  // A pointed crown's kink (a half curve whose crown tangent is not horizontal) for the curved bar: there
+  // the axis turns by a finite angle at a point, kappa a Dirac delta, and the section law's coupling terms
+  // (coupling' k M~ in eps~, coupling' k N~ in psi~') integrate to a jump of the state across the turn,
+  // y+ = y- + kink_jump(theta1, theta2) y- with f = a_N (1 + 6 nu / 5) (coupling' as t/R -> 0):
+  //   Ux~, Uy~ jump by f M~ (sin theta2 - sin theta1, cos theta1 - cos theta2)
+  //   psi~    jumps by f (Fx~ (sin theta2 - sin theta1) + Fy~ (cos theta1 - cos theta2))
+  // (the integrals of the bar's coupling over the turn at constant forces: kappa ds = d theta). Over the
+  // half the turn from the crown's tangent to the symmetry line's (0) enters the crown's conditions; over
+  // the whole arch kink() is the crown's knot, its turn from theta_c to -theta_c taken in two halves on
+  // either side of a crown load. None for the other models or a smooth crown.
+  struct Kink {
+    double s = 0;                         // scaled arc length of the crown in the whole domain
+    double theta_before = 0, theta_after = 0;
+  };
+  const std::optional<Kink>& kink() const { return kink_; }
+  SystemMatrix kink_jump(double theta1, double theta2) const;
   double kappa(double s) const;  // the scaled curvature kappa L at scaled arc length s
   // dy of the curved bar: derivative()'s equations with the bar's section law and, on the load column
   // (self_weight true), the self-weight's couple.
@@ -219,6 +235,8 @@ class ArchModel {
   std::vector<double> breakpoints_;
   std::vector<PointJump> jumps_;
   std::optional<double> hinge_;
+  std::optional<Kink> kink_;
+  double crown_kink_angle_ = 0;  // the half curve's crown tangent where it is a kink of the curved bar, else 0
   BoundaryConditions bc_;
   double total_load_ = 0, total_horizontal_load_ = 0, load_moment_ = 0;
   // The curved bar's moment of the self-weight's offset from the axis, added to load_moment_.
@@ -231,9 +249,10 @@ class ArchModel {
   std::array<std::array<double, kSectionDegree + 1>, 4> section_series_{};
   double section_poisson_ratio() const;
   void tabulate_section();
-  // The constructor's steps, in order: where the loads act and where the system is not smooth (the
+  // The constructor's steps, in order: the curved bar's crown kink (find_kink); where the loads act and where the system is not smooth (the
   // curve's breakpoints, the point loads, the hinge, the live loads' ends, where the fill meets the
   // extrados and under the extrados' breaks); the six boundary conditions; the domain's total load and its moment.
+  void find_kink();
   void place_loads();
   void set_boundary_conditions();
   void sum_loads();
