@@ -1,5 +1,6 @@
 // Non-associative friction (Gilbert, Casapulla & Ahmed 2006): the iteration on the normal forces that
-// the sliding rows hold (limit_internal.hpp, non_associative).
+// the sliding rows hold (limit_internal.hpp, non_associative); and the refinement next to the joints that
+// slide (add_sliding_refinement).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -22,6 +23,27 @@ const char* to_string(FrictionModel f) {
 }
 
 namespace limit_detail {
+
+// A joint whose force is this close to Coulomb's cone (relative to the force) slides in the state: far
+// above the programs' row tolerance (1e-11 of the load), far below any margin a state keeps.
+constexpr double kOnCone = 1e-9;
+
+void add_sliding_refinement(const Ring& ring, const ThrustState& st, const LimitOptions& options,
+                            std::vector<double>& out) {
+  if (!(options.friction > 0) || !std::isfinite(options.compressive_strength) || st.force.size() != ring.joints.size())
+    return;
+  std::vector<Hinge> sliding;
+  for (std::size_t j = 0; j < ring.joints.size(); ++j) {
+    const Joint& joint = ring.joints[j];
+    const Eigen::Vector2d along = (joint.extrados - joint.intrados).normalized();
+    const Eigen::Vector2d& F = st.force[j];
+    const double N = cross(F, along), T = F.dot(along);  // compression positive, as thrust_state's
+    if (std::abs(T) >= options.friction * N - kOnCone * F.norm())
+      sliding.push_back({static_cast<int>(j), Face::intrados, joint.intrados});
+  }
+  add_refinement(ring, sliding, out);
+}
+
 namespace {
 
 // Non-associative friction (Gilbert, Casapulla & Ahmed 2006): the iterations at the most, the change of

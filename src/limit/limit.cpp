@@ -143,6 +143,7 @@ struct MarginFunction {
       const ThrustState st =
           thrust_state(ring, a.H, a.V, a.M, a.load_factor, kThinnestHingeTolerance, options.compressive_strength);
       limit_detail::add_refinement(ring, st.hinges, feasible_refinement);
+      limit_detail::add_sliding_refinement(ring, st, options, feasible_refinement);
       feasible_blocks = stress_blocks(ring, st.hinges);
     }
     return a.margin;
@@ -501,6 +502,7 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   }
   for (const ThrustState* st : {&r.min_state, &r.max_state, &r.collapse_state}) {
     limit_detail::add_refinement(ring, st->hinges, round.refinement);
+    limit_detail::add_sliding_refinement(ring, *st, options, round.refinement);
     if (stress_blocks(ring, st->hinges)) work.beside_loads = true;
   }
   if (!std::isnan(r.thickness_min)) {
@@ -587,6 +589,7 @@ HorizontalOutcome converge_horizontal(const Scene& scene, const LimitOptions& op
   for (int k = 0; k < kMaxLimitRefinements && !out.failed; ++k) {
     std::vector<double> refinement;
     limit_detail::add_refinement(out.ring, out.collapse.state.hinges, refinement);
+    limit_detail::add_sliding_refinement(out.ring, out.collapse.state, options, refinement);
     if (stress_blocks(out.ring, out.collapse.state.hinges)) work.beside_loads = true;
     if (refinement.empty()) {
       out.change = 0;

@@ -257,6 +257,13 @@ using SolveWarm = std::function<LimitLp::Answer(const std::vector<int>*)>;
 // `load_scale`: the live load's magnitude at factor 1 (added to the dead loads times the factor found).
 SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptions& options,
                                  const LimitLp::Answer& first, double load_scale, const SolveWarm& solve);
+// With friction and a finite compressive strength: appends the refinement (add_refinement's) next to
+// the joints of `st` whose force lies on Coulomb's cone. A sliding joint bounds a state as a hinge does,
+// and a finer ring moves it (with vertical joints the one next to a springing, nearly along the thrust,
+// slides first, and lies closer to the springing on a finer ring): refined next to the hinges alone, the
+// rings saw no change where sliding governs. Nothing otherwise (the rings without crushing are kept).
+void add_sliding_refinement(const Ring& ring, const ThrustState& st, const LimitOptions& options,
+                            std::vector<double>& out);
 
 // The analysis's checks (limit_checks.cpp). Throws std::invalid_argument naming the field when nothing
 // (or next to nothing) loads the ring.
