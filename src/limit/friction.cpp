@@ -30,7 +30,7 @@ constexpr double kOnCone = 1e-9;
 
 void add_sliding_refinement(const Ring& ring, const ThrustState& st, const LimitOptions& options,
                             std::vector<double>& out) {
-  if (!(options.friction > 0) || !std::isfinite(options.compressive_strength) || st.force.size() != ring.joints.size())
+  if (!(options.friction > 0) || st.force.size() != ring.joints.size())
     return;
   std::vector<Hinge> sliding;
   for (std::size_t j = 0; j < ring.joints.size(); ++j) {

@@ -257,11 +257,11 @@ using SolveWarm = std::function<LimitLp::Answer(const std::vector<int>*)>;
 // `load_scale`: the live load's magnitude at factor 1 (added to the dead loads times the factor found).
 SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptions& options,
                                  const LimitLp::Answer& first, double load_scale, const SolveWarm& solve);
-// With friction and a finite compressive strength: appends the refinement (add_refinement's) next to
-// the joints of `st` whose force lies on Coulomb's cone. A sliding joint bounds a state as a hinge does,
-// and a finer ring moves it (with vertical joints the one next to a springing, nearly along the thrust,
-// slides first, and lies closer to the springing on a finer ring): refined next to the hinges alone, the
-// rings saw no change where sliding governs. Nothing otherwise (the rings without crushing are kept).
+// With friction: appends the refinement (add_refinement's) next to the joints of `st` whose force lies
+// on Coulomb's cone. A sliding joint bounds a state as a hinge does, and a finer ring moves it (with
+// vertical joints the one next to a springing, nearly along the thrust, slides first, and lies closer to
+// the springing on a finer ring): refined next to the hinges alone, the rings saw no change where sliding
+// governs and said converged with t_min 1 % off. Nothing without friction.
 void add_sliding_refinement(const Ring& ring, const ThrustState& st, const LimitOptions& options,
                             std::vector<double>& out);
 
