@@ -790,11 +790,11 @@ def joint(ogive):
 
 def trial(ogive):
     """trial.csv: beam.py's curved bar beside the continuum on every plane-stress row of the table, without
-    a crown term (none: ogive's before its kink); with the crown joint of joint.csv on the equilateral arch (joint), and with the held
+    a crown term (none: the section law alone); with the crown joint of joint.csv on the equilateral arch (joint), and with the held
     springing face of strip.csv (the finest mesh, nu 0.2) on the clamped arches and the self-weight's own
     stress across the depth as well (joint_held_weight); the same with the crown joint that the curved
-    bar's own coupling gives the kink instead (kink: ogive's `curved`, beam.kink_joint; kink_held, kink_weight
-    and kink_held_weight with one or both of the other terms). The summary as
+    bar's own coupling gives the kink instead (kink, beam.kink_joint; kink_held, kink_weight and
+    kink_held_weight with one or both of the other terms: kink_held_weight is ogive's `curved`). The summary as
     the table's, each variant's rows beyond half of Timoshenko's error with the continuum's fe_error."""
     import beam
     joints = {r["t_over_L"]: (float(r["a"]), float(r["b"]), float(r["c"])) for r in csv.DictReader(open(JOINT))}

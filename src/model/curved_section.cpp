@@ -122,7 +122,9 @@ constexpr double kSmallExtension = 0.02;
 // The held face's compliance (curved_section.hpp) at the section's nu: {nu, NN, VV, VM, MM}, CalculiX's
 // strip at 32 elements through the depth (benchmarks/continuum/held.csv; the held corners are singular,
 // and from 16 elements to 32 the coefficients move by 2 to 5 %: 1e-5 of H/V here).
-constexpr std::array<std::array<double, 5>, 15> kHeldFace = {{
+constexpr std::array<std::array<double, 5>, 17> kHeldFace = {{
+    {-0.9, -0.24952, -0.04949, 0.20544, -1.54081},
+    {-0.7, -0.11207, -0.03720, 0.10446, -0.64655},
     {-0.5, -0.04839, -0.03126, 0.06067, -0.27138},
     {-0.3, -0.01548, -0.03323, 0.03222, -0.08549},
     {-0.1, -0.00157, -0.03756, 0.01021, -0.00870},
