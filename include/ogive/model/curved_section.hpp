@@ -46,8 +46,8 @@ CurvedSection curved_section(double rho, double nu);
 // the axis leaving the face (V a quarter turn anticlockwise from N, M anticlockwise); E and nu plane
 // stress', in plane strain E / (1 - nu^2) and nu / (1 - nu). These are plane elasticity's: a straight
 // strip held whole at one end and loaded by Saint-Venant's stresses at the other (CalculiX, 32 quadratic
-// elements through the depth, benchmarks/continuum strip: held.csv), tabulated over nu and interpolated
-// by quadratics; at nu = 0 only VV (-0.035, the warping) is left; at nu = 0.2 VV -0.043, VM -0.017,
+// elements through the depth, benchmarks/continuum strip: held.csv), tabulated over nu from -0.9 to 0.97
+// and interpolated by quadratics (beyond, the end ones); at nu = 0 only VV (-0.035, the warping) is left; at nu = 0.2 VV -0.043, VM -0.017,
 // MM -0.031, NN -0.006: all negative, a stiffer end. nu in (-1, 1).
 struct HeldFace {
   double NN = 0, VV = 0, VM = 0, MM = 0;
