@@ -8,8 +8,10 @@ shooting (scipy's DOP853), with two optional terms that ogive does not have:
 - a crown joint (continuum.py joint): the crown's conditions Ux = 0 and psi = 0 become
   Ux + b M + c Fx = 0 and psi + a M + b Fx = 0 (the half of a joint between the two legs).
 
-Without them it is ogive's `--beam-model curved` on the smooth arches, and with kink_joint (the joint that
-the bar's own coupling gives a kinked axis) on the equilateral arch (H/V within 3e-7 of ogive's).
+With the held face (strip.csv's finest mesh at nu 0.2, held.csv's row), the self-weight's own stress
+(weight=True) and on the equilateral arch kink_joint (the joint that the bar's own coupling gives a kinked
+axis) it is ogive's `--beam-model curved` (H/V within 3e-7 of ogive's); without them, ogive's curved bar's
+section law alone.
 Units: the span L = 1 and E I = 1 (the compliances below are scaled accordingly); nu the section's.
 """
 import functools

@@ -361,6 +361,8 @@ CROWN = os.path.join(HERE, "crown.csv")
 STRIP = os.path.join(HERE, "strip.csv")
 JOINT = os.path.join(HERE, "joint.csv")
 TRIAL = os.path.join(HERE, "trial.csv")
+HELD = os.path.join(HERE, "held.csv")
+HELD_NU = (-0.9, -0.7, -0.5, -0.3, -0.1, 0.0, 0.1, 0.2, 0.25, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.97)
 SPREAD_CASES = [("semicircular", 0.1), ("semicircular", 0.2), ("segmental", 0.2), ("catenary", 0.2)]
 ENDS_CASES = [("semicircular", 0.1), ("semicircular", 0.2), ("equilateral", 0.2), ("catenary", 0.08), ("catenary", 0.2)]
 POISSON_CASES = [("semicircular", "pinned", 0.1), ("semicircular", "pinned", 0.2), ("semicircular", "clamped", 0.1),
@@ -600,15 +602,22 @@ class Strip:
 def strip_run(ell, nu, n_across):
     """The strip t = 1, E = 1 held whole at x = 0, its far face loaded by Saint-Venant's tractions (the
     consistent nodal forces of a uniform N and of a parabolic shear V): the far face's displacements
-    conjugate to N, V and M (the tractions' work per unit load) under each load."""
+    conjugate to N, V and M (the tractions' work per unit load) under each load. nu is the section's
+    (plane stress'): from 0.5 (CalculiX's plane stress takes nu < 0.5) the strip is in plane strain (CPE8)
+    with nu / (1 + nu) and E = 1 - that^2,
+    the same body (its E / (1 - nu^2) is 1, its nu / (1 - nu) the nu asked)."""
+    element, modulus = "CPS8", 1.0
+    if nu >= 0.5:
+        nu = nu / (1 + nu)
+        element, modulus = "CPE8", 1 - nu * nu
     t = 1.0
     arch = Strip(t, ell)
     nodes, elements, held, tip = mesh(arch, n_across)
     th = section_thickness(arch)
     lines = ["*HEADING", "held strip", "*NODE"] + [f"{k + 1}, {x:.13f}, {y:.13f}, 0" for k, (x, y) in enumerate(nodes)]
-    lines += ["*ELEMENT, TYPE=CPS8, ELSET=EALL"] + [f"{k + 1}, " + ", ".join(map(str, e)) for k, e in enumerate(elements)]
+    lines += [f"*ELEMENT, TYPE={element}, ELSET=EALL"] + [f"{k + 1}, " + ", ".join(map(str, e)) for k, e in enumerate(elements)]
     lines += ["*NSET, NSET=NHELD"] + [str(n) for n in held] + ["*NSET, NSET=NTIP"] + [str(n) for n in tip]
-    lines += ["*MATERIAL, NAME=M", "*ELASTIC", f"1., {nu!r}", "*SOLID SECTION, ELSET=EALL, MATERIAL=M", f"{th!r}",
+    lines += ["*MATERIAL, NAME=M", "*ELASTIC", f"{modulus!r}, {nu!r}", "*SOLID SECTION, ELSET=EALL, MATERIAL=M", f"{th!r}",
               "*BOUNDARY", "NHELD, 1, 2, 0."]
     ys = [nodes[n - 1][1] for n in tip]
     tractions = {"N": lambda y: (1 / t, 0.0), "V": lambda y: (0.0, 1.5 / t * (1 - 4 * y * y / (t * t))),
@@ -660,7 +669,9 @@ def strip_compliance(nu, n_across):
 
 def strip(ogive):
     """strip.csv: the held face's compliance (strip_compliance) at nu 0 and 0.2, meshes of 8, 16 and 32
-    elements through the depth (the held face's corners are singular: it converges slowly)."""
+    elements through the depth (the held face's corners are singular: it converges slowly); held.csv: at
+    32 elements over the section's nu from -0.9 to 0.97 (plane strain's nu / (1 - nu) above 0.5), the table
+    that ogive's curved bar interpolates (src/model/curved_section.cpp, kHeldFace)."""
     with open(STRIP, "w", newline="") as f:
         w = csv.writer(f, lineterminator="\n")
         w.writerow(["nu", "elements_across", "c_NN", "c_VV", "c_VM", "c_MM"])
@@ -669,6 +680,13 @@ def strip(ogive):
                 w.writerow([repr(nu), n] + [f"{c:.5f}" for c in strip_compliance(nu, n)])
                 f.flush()
     print(open(STRIP).read(), end="")
+    with open(HELD, "w", newline="") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(["nu", "c_NN", "c_VV", "c_VM", "c_MM"])
+        for nu in HELD_NU:
+            w.writerow([repr(nu)] + [f"{c:.5f}" for c in strip_compliance(nu, 32)])
+            f.flush()
+    print(open(HELD).read(), end="")
 
 
 class CrownSegment(Pointed):
@@ -772,11 +790,11 @@ def joint(ogive):
 
 def trial(ogive):
     """trial.csv: beam.py's curved bar beside the continuum on every plane-stress row of the table, without
-    a crown term (none: ogive's before its kink); with the crown joint of joint.csv on the equilateral arch (joint), and with the held
+    a crown term (none: the section law alone); with the crown joint of joint.csv on the equilateral arch (joint), and with the held
     springing face of strip.csv (the finest mesh, nu 0.2) on the clamped arches and the self-weight's own
     stress across the depth as well (joint_held_weight); the same with the crown joint that the curved
-    bar's own coupling gives the kink instead (kink: ogive's `curved`, beam.kink_joint; kink_held, kink_weight
-    and kink_held_weight with one or both of the other terms). The summary as
+    bar's own coupling gives the kink instead (kink, beam.kink_joint; kink_held, kink_weight and
+    kink_held_weight with one or both of the other terms: kink_held_weight is ogive's `curved`). The summary as
     the table's, each variant's rows beyond half of Timoshenko's error with the continuum's fe_error."""
     import beam
     joints = {r["t_over_L"]: (float(r["a"]), float(r["b"]), float(r["c"])) for r in csv.DictReader(open(JOINT))}

@@ -13,19 +13,33 @@ namespace ogive {
 SpringingSplit springing_split(const ArchModel& model) {
   const BoundaryConditions& bc = model.boundary_conditions();
   SpringingSplit split;
+  // Each springing condition fixes one component y_j (its coefficient 1, the row's only one of 1) given
+  // the unknown ones (the held face's compliance: its other coefficients, on components no row fixes).
+  std::array<int, 3> fixed{};
   std::array<bool, kStateSize> known{};
   for (int r = 0; r < 3; ++r) {
-    Eigen::Index j = 0;
-    bc.at_start.row(r).cwiseAbs().maxCoeff(&j);
-    // Each springing condition fixes one component: a unit row (ArchModel's conditions are).
-    if (bc.at_start(r, j) != 1.0 || bc.at_start.row(r).cwiseAbs().sum() != 1.0)
-      throw std::logic_error("springing_split: a springing condition is not of the form y_j = value");
-    known[static_cast<std::size_t>(j)] = true;
-    split.start[j] = bc.rhs(r);
+    int ones = 0;
+    for (int j = 0; j < kStateSize; ++j)
+      if (bc.at_start(r, j) == 1.0) {
+        fixed[static_cast<std::size_t>(r)] = j;
+        ++ones;
+      }
+    if (ones != 1) throw std::logic_error("springing_split: a springing condition fixes no single component");
+    known[static_cast<std::size_t>(fixed[static_cast<std::size_t>(r)])] = true;
+    split.start[fixed[static_cast<std::size_t>(r)]] = bc.rhs(r);
   }
   int column = 0;
-  for (int j = 0; j < kStateSize; ++j)
-    if (!known[static_cast<std::size_t>(j)]) split.U(j, column++) = 1.0;
+  for (int k = 0; k < kStateSize; ++k) {
+    if (known[static_cast<std::size_t>(k)]) continue;
+    split.U(k, column) = 1.0;
+    for (int r = 0; r < 3; ++r)
+      if (bc.at_start(r, k) != 0) split.U(fixed[static_cast<std::size_t>(r)], column) = -bc.at_start(r, k);
+    ++column;
+  }
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < kStateSize; ++k)
+      if (known[static_cast<std::size_t>(k)] && k != fixed[static_cast<std::size_t>(r)] && bc.at_start(r, k) != 0)
+        throw std::logic_error("springing_split: a springing condition couples two fixed components");
   return split;
 }
 

@@ -28,7 +28,8 @@ using AffineRow = Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, k
 using ReducedMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, kMaxUnknowns, kMaxUnknowns>;
 using ReducedVector = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxUnknowns, 1>;
 
-// The springing's conditions fix three components of y(0) (Ux, Uy and psi or M), so y(0) = start + U u.
+// The springing's conditions fix three components of y(0) (Ux, Uy and psi or M), so y(0) = start + U u:
+// each column of U a unit free component and what it moves the fixed ones by (a held face's compliance).
 struct SpringingSplit {
   Eigen::Matrix<double, kStateSize, 3> U = Eigen::Matrix<double, kStateSize, 3>::Zero();
   StateVector start = StateVector::Zero();

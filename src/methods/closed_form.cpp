@@ -157,6 +157,12 @@ ArcMatrix curved_arc_exponential(double k, double l, double aN, double aV, const
   A(kM, kFy) = -1.0;
   A(kM, kSin) = bar.offset * b;
   A(kM, kCos) = -bar.offset * h;
+  // The self-weight's own stress across the depth: eps and psi' gain load_strain and load_curvature
+  // times its normal part -(b cos + h sin).
+  A(kUx, kCos) = -bar.load_strain * b;
+  A(kUx, kSin) = -bar.load_strain * h;
+  A(kPsi, kCos) = -bar.load_curvature * b;
+  A(kPsi, kSin) = -bar.load_curvature * h;
   A(kCos, kSin) = -k;
   A(kSin, kCos) = k;
   return (A * l).exp();

@@ -115,13 +115,22 @@ void curve_panel(const ArchModel& model, const Panel& panel, const ChebyshevRule
   out.component(kM).col(kLoad) += integral;
   for (int j = 0; j < kColumns; ++j) {
     const auto Fx = out.component(kFx).col(j), Fy = out.component(kFy).col(j), M = out.component(kM).col(j);
-    for (int i = 0; i < n; ++i) f[i] = bars[i].bending * M[i] + bars[i].coupling * (c[i] * Fx[i] + sn[i] * Fy[i]);
+    const bool weight = j == kLoad;  // the self-weight's own stress across the depth strains the load column
+    for (int i = 0; i < n; ++i) {
+      f[i] = bars[i].bending * M[i] + bars[i].coupling * (c[i] * Fx[i] + sn[i] * Fy[i]);
+      if (weight) f[i] += bars[i].load_curvature * model.weight_normal_load(c[i], sn[i]);
+    }
     cumulative(Q, J, f, scaled, integral);
     out.component(kPsi).col(j) = Y(kPsi, j) + integral.array();
     for (int i = 0; i < n; ++i) {
       StateVector y, dy;
       y << 0.0, 0.0, out.component(kPsi)(i, j), Fx[i], Fy[i], M[i];
       model.curved_derivative(c[i], sn[i], bars[i], y.data(), dy.data(), 0.0, 0.0, false);
+      if (weight) {
+        const double eps = bars[i].load_strain * model.weight_normal_load(c[i], sn[i]);
+        dy[kUx] += eps * c[i];
+        dy[kUy] += eps * sn[i];
+      }
       out.component(kUx)(i, j) = dy[kUx];
       out.component(kUy)(i, j) = dy[kUy];
     }
@@ -220,9 +229,11 @@ Level solve_level(const ArchModel& model, const std::vector<Panel>& panels, int 
   Level level;
   level.degree = degree;
   Columns Y = Columns::Zero();
-  for (int j = 0; j < 3; ++j) Y(kUnknowns[j], j) = 1.0;
-  // The load column starts from the springing's given movements (Ux, Uy, psi).
+  // Each force's column starts from a unit force and the movements it gives the springing (the curved
+  // bar's held face; none otherwise), the load column from the springing's given movements.
   const SpringingSplit split = springing_split(model);
+  for (int j = 0; j < 3; ++j)
+    for (int k : {int{kUx}, int{kUy}, int{kPsi}, kUnknowns[j]}) Y(k, j) = split.U(k, j);
   for (int k : {kUx, kUy, kPsi}) Y(k, kLoad) = split.start[k];
   level.springing = Y;
   for (const Panel& panel : panels) {
@@ -234,11 +245,16 @@ Level solve_level(const ArchModel& model, const std::vector<Panel>& panels, int 
   // rigid rotation about the springing (Ux = -y, Uy = x at the domain's end: the crown, or the right
   // springing).
   SystemMatrix Phi = SystemMatrix::Identity();
-  for (int j = 0; j < 3; ++j) Phi.col(kUnknowns[j]) = Y.col(j);
   const double L = model.scales().length;
   const CurvePoint end = model.curve().at(model.curve().length());
   Phi(kUx, kPsi) = -end.y / L;
   Phi(kUy, kPsi) = end.x / L;
+  // A force's column is its transfer plus the rigid motion of the movements it started with.
+  for (int j = 0; j < 3; ++j) {
+    Phi.col(kUnknowns[j]) = Y.col(j);
+    if (level.springing.col(j).head<3>().any())
+      Phi.col(kUnknowns[j]) -= Phi.leftCols<3>() * level.springing.col(j).head<3>();
+  }
   // The load column started from the given movements: p is the transfer of a zero start.
   const StateVector p = Y.col(kLoad) - Phi * level.springing.col(kLoad);
   level.bvp = solve_single_segment(model, Phi, p);

@@ -183,13 +183,16 @@ void ArchModel::tabulate_section() {
   // In rho^2 the factors are analytic up to rho^2 = 1, far from [0, 1/4]: degree 16 is at round-off.
   const ChebyshevRule& rule = chebyshev_rule(kSectionDegree);
   const double nu = section_poisson_ratio(), top = kTabulatedRho * kTabulatedRho;
-  Eigen::Matrix<double, kSectionDegree + 1, 4> values;
+  // load_extension is odd in rho: its series is of load_extension / rho.
+  Eigen::Matrix<double, kSectionDegree + 1, 6> values;
   for (int i = 0; i <= kSectionDegree; ++i) {
-    const CurvedSection c = curved_section(std::sqrt(0.5 * (rule.node[i] + 1) * top), nu);
-    values.row(i) << c.axial, c.coupling, c.bending, c.shear;
+    const double rho = std::sqrt(0.5 * (rule.node[i] + 1) * top);
+    const CurvedSection c = curved_section(rho, nu);
+    const double extension = rho > 0 ? c.load_extension / rho : curved_section(1e-6, nu).load_extension / 1e-6;
+    values.row(i) << c.axial, c.coupling, c.bending, c.shear, extension, c.load_curvature;
   }
-  const Eigen::Matrix<double, kSectionDegree + 1, 4> series = rule.to_coefficients * values;
-  for (int f = 0; f < 4; ++f)
+  const Eigen::Matrix<double, kSectionDegree + 1, 6> series = rule.to_coefficients * values;
+  for (int f = 0; f < 6; ++f)
     for (int i = 0; i <= kSectionDegree; ++i) section_series_[f][i] = series(i, f);
 }
 
@@ -208,6 +211,8 @@ ArchModel::CurvedBar ArchModel::curved_bar(double k) const {
     section.coupling = chebyshev_series(section_series_[1].data(), kSectionDegree, x);
     section.bending = chebyshev_series(section_series_[2].data(), kSectionDegree, x);
     section.shear = chebyshev_series(section_series_[3].data(), kSectionDegree, x);
+    section.load_extension = rho * chebyshev_series(section_series_[4].data(), kSectionDegree, x);
+    section.load_curvature = chebyshev_series(section_series_[5].data(), kSectionDegree, x);
   } else {
     section = curved_section(rho, section_poisson_ratio());
   }
@@ -215,6 +220,8 @@ ArchModel::CurvedBar ArchModel::curved_bar(double k) const {
   bar.coupling *= section.coupling;
   bar.bending = section.bending;
   bar.shear = section.shear;
+  bar.load_strain = -(k > 0 ? 1 : -1) * a_N_ * std::sqrt(12.0 * a_N_) * section.load_extension;
+  bar.load_curvature = -a_N_ * section.load_curvature;
   return bar;
 }
 
@@ -222,11 +229,12 @@ void ArchModel::curved_derivative(double c, double sn, const CurvedBar& bar, con
                                   double load, double horizontal, bool self_weight) const {
   const double N = c * y[kFx] + sn * y[kFy];
   const double V = -sn * y[kFx] + c * y[kFy];
-  const double eps = a_N_ * bar.axial * N + bar.coupling * y[kM];
+  const double q = self_weight ? weight_normal_load(c, sn) : 0.0;
+  const double eps = a_N_ * bar.axial * N + bar.coupling * y[kM] + bar.load_strain * q;
   const double rot = a_V_ * bar.shear * V + y[kPsi];
   dy[kUx] = eps * c - rot * sn;
   dy[kUy] = eps * sn + rot * c;
-  dy[kPsi] = bar.bending * y[kM] + bar.coupling * N;
+  dy[kPsi] = bar.bending * y[kM] + bar.coupling * N + bar.load_curvature * q;
   dy[kFx] = -horizontal;
   dy[kFy] = load;
   dy[kM] = sn * y[kFx] - c * y[kFy];
@@ -310,7 +318,9 @@ void ArchModel::place_loads() {
 void ArchModel::set_boundary_conditions() {
   // The conditions, each fixing one component (springing_split relies on it). A springing fixes its
   // displacements (its spread outwards: -x at the left, +x at the right) and its rotation if clamped,
-  // else its moment; the half's crown its symmetry (Ux, psi or the hinge's M, and Fy).
+  // else its moment; the half's crown its symmetry (Ux, psi or the hinge's M, and Fy). The curved bar's
+  // clamped springing is a face held whole: its displacements and rotation are the support's plus the
+  // held face's compliance times the forces there (held_face_compliance).
   auto springing = [&](const Support& support, double outward, Eigen::Index first, SystemMatrix& at) {
     at(first, kUx) = 1.0;
     bc_.rhs(first) = outward * support.spread / scales_.displacement;
@@ -319,6 +329,7 @@ void ArchModel::set_boundary_conditions() {
     if (support.kind == SupportKind::clamped) {
       at(first + 2, kPsi) = 1.0;
       bc_.rhs(first + 2) = support.rotation / scales_.rotation;
+      if (curved()) at.block<3, 3>(first, kFx) = -held_face_compliance(first == 0);
     } else {
       at(first + 2, kM) = 1.0;
     }
@@ -338,6 +349,28 @@ void ArchModel::set_boundary_conditions() {
   } else {
     springing(scene_.right, 1.0, 3, bc_.at_end);
   }
+}
+
+Eigen::Matrix3d ArchModel::held_face_compliance(bool left) const {
+  // The face's compliance (curved_section.hpp's held_face) scaled: with E I = 1 and the span 1, E = 12 /
+  // t~^3, so V / E is V~ t~^3 / 12, M / (E t) is M~ t~^2 / 12 and M / (E t^2) is M~ t~ / 12.
+  const HeldFace c = held_face(section_poisson_ratio());
+  const double t = std::sqrt(12.0 * a_N_);
+  Eigen::Matrix3d local;
+  local << c.NN * t * t * t, 0, 0, 0, c.VV * t * t * t, c.VM * t * t, 0, c.VM * t * t, c.MM * t;
+  local /= 12.0;
+  // The left springing's frame is the axis leaving it (theta at s = 0), and its forces on the face are
+  // y(0)'s Fx, Fy, M (the part beyond on the part before): y(0) = T' C T y(0)'s forces, T from global
+  // to the frame. At the right springing the axis arrives: its frame is turned by pi (the same T up to
+  // the sign of N and V), the forces on the face are minus y(S~)'s, and the frame's rotation is the
+  // global one: y(S~) = -T' D C D T y(S~)'s forces, D = diag(1, 1, -1) (the mirror image of the left).
+  const double theta = curve_->at(left ? 0.0 : curve_->length()).theta;
+  const double c0 = std::cos(theta), s0 = std::sin(theta);
+  Eigen::Matrix3d T;
+  T << c0, s0, 0, -s0, c0, 0, 0, 0, 1;
+  if (left) return T.transpose() * local * T;
+  const Eigen::Vector3d d(1, 1, -1);
+  return -T.transpose() * d.asDiagonal() * local * d.asDiagonal() * T;
 }
 
 void ArchModel::sum_loads() {

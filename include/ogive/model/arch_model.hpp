@@ -55,8 +55,10 @@ struct Scales {
 };
 
 // Linear two-point conditions at_start * y(0) + at_end * y(S~) = rhs (scaled). Rows 0-2 act at the left
-// springing, each fixing one component (Ux, Uy, and psi if clamped or M if pinned); rows 3-5 at the
-// domain's end, each fixing one component too: the right springing's, or the crown's symmetry.
+// springing, each fixing one component (Ux, Uy, and psi if clamped or M if pinned; its coefficient 1)
+// given the springing's forces (the curved bar's clamped springing moves by its held face's compliance
+// times Fx, Fy and M: the rows' other coefficients, on components no row fixes); rows 3-5 at the
+// domain's end: the right springing's, or the crown's symmetry.
 struct BoundaryConditions {
   SystemMatrix at_start = SystemMatrix::Zero();
   SystemMatrix at_end = SystemMatrix::Zero();
@@ -132,10 +134,16 @@ class ArchModel {
   // coupling' 1 + 6 nu / 5 as rho -> 0. And each slice of the arch, an annular sector, weighs at its
   // centroid, t^2 / (12 R) beyond the axis towards the extrados: the self-weight's load (b_self down,
   // a b_self to +x) brings the couple offset (b_self sn - a b_self c) into M~', offset = a_N k.
-  // In the struct coupling = a_N k coupling'. For the other models coupling 0, offset 0, the factors 1.
+  // In the struct coupling = a_N k coupling'. The self-weight is a body force: its own stress across the
+  // depth strains the section (CurvedSection's load terms), eps~ += load_strain q~ and psi~' +=
+  // load_curvature q~ with q~ = -b_self (c + a sn) its part along the extrados normal (-sn, c):
+  // load_strain = -sign(k) a_N t~ load_extension, load_curvature = -a_N load_curvature'.
+  // For the other models coupling 0, offset 0, the load terms 0, the factors 1.
   struct CurvedBar {
-    double coupling = 0, bending = 1, axial = 1, shear = 1, offset = 0;
+    double coupling = 0, bending = 1, axial = 1, shear = 1, offset = 0, load_strain = 0, load_curvature = 0;
   };
+  // The self-weight's part along the extrados normal (-sn, c) per scaled length (q~ above).
+  double weight_normal_load(double c, double sn) const { return -self_weight_ * (c + acceleration() * sn); }
   CurvedBar curved_bar(double k) const;
   // A pointed crown's kink (a half curve whose crown tangent is not horizontal) for the curved bar: there
   // the axis turns by a finite angle at a point, kappa a Dirac delta, and the section law's coupling terms
@@ -246,7 +254,7 @@ class ArchModel {
   // beyond it curved_bar computes them.
   static constexpr double kTabulatedRho = 0.5;
   static constexpr int kSectionDegree = 16;
-  std::array<std::array<double, kSectionDegree + 1>, 4> section_series_{};
+  std::array<std::array<double, kSectionDegree + 1>, 6> section_series_{};
   double section_poisson_ratio() const;
   void tabulate_section();
   // The constructor's steps, in order: the curved bar's crown kink (find_kink); where the loads act and where the system is not smooth (the
@@ -255,6 +263,9 @@ class ArchModel {
   void find_kink();
   void place_loads();
   void set_boundary_conditions();
+  // The curved bar's clamped springing (left, or the right one) as a held face: the 3 x 3 compliance
+  // (scaled) from the state's (Fx, Fy, M) there to its (Ux, Uy, psi) beyond the support's.
+  Eigen::Matrix3d held_face_compliance(bool left) const;
   void sum_loads();
   // b beyond the self-weight at scaled arc length s, whose axis point is p.
   double distributed_load(double s, const CurvePoint& p) const;

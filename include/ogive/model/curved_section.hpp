@@ -17,12 +17,41 @@
 
 namespace ogive {
 
+//
+// A body force across the section (the self-weight), whose part normal to the axis is q per length of
+// the axis (outward from the centre of curvature), is not carried by these stresses alone: the annulus
+// under a uniform radial body force, less the modes of its own (N, M), is the load's own stress across
+// the depth (its radial stress, and the hoop stress that balances it), zero on both faces and without
+// resultants. Its complementary energy against the modes of (N, M) adds the load terms
+//   N eps0 + M kappa0,  eps0 = load_extension q t / (E A),  kappa0 = load_curvature q / (E A)
+// to U: the section strains by eps0 and curves by kappa0 (M tension on the outer face positive) under
+// the load alone. As rho -> 0, load_curvature tends to -nu / 5 (the straight beam's transverse stress
+// through Poisson's ratio) and load_extension to 0 (odd in rho). The part of the body force along the
+// axis brings a shear strain of order rho^2 of the shear's (4e-4 at rho 0.2), which is not kept.
 struct CurvedSection {
   double axial = 1, coupling = 1, bending = 1, shear = 1;
+  double load_extension = 0, load_curvature = 0;
 };
 
 // rho = t / (2 R) in [0, 1), nu in (-1, 0.5]: the four factors above. Below rho = 1e-3 each is its
 // limit plus its rho^2 term (the stress modes' constants cancel there beyond round-off).
 CurvedSection curved_section(double rho, double nu);
+
+// A face held whole (a clamped springing) is stiffer than the beam's clamped end within about a depth of
+// it: the held face stops the section's warping under shear and its lateral (Poisson) strain. Beyond
+// Timoshenko's clamped beam (k0 = 5/6) the bar's displacements and rotation a few depths from such a face
+// are those of an end that moves, per unit width, by
+//   NN N / E along the axis, VV V / E + VM M / (E t) across it, and turns by VM V / (E t) + MM M / (E t^2)
+// (the compliance is symmetric: Maxwell), N, V and M the forces of the bar on the face, in the frame of
+// the axis leaving the face (V a quarter turn anticlockwise from N, M anticlockwise); E and nu plane
+// stress', in plane strain E / (1 - nu^2) and nu / (1 - nu). These are plane elasticity's: a straight
+// strip held whole at one end and loaded by Saint-Venant's stresses at the other (CalculiX, 32 quadratic
+// elements through the depth, benchmarks/continuum strip: held.csv), tabulated over nu from -0.9 to 0.97
+// and interpolated by quadratics (beyond, the end ones); at nu = 0 only VV (-0.035, the warping) is left; at nu = 0.2 VV -0.043, VM -0.017,
+// MM -0.031, NN -0.006: all negative, a stiffer end. nu in (-1, 1).
+struct HeldFace {
+  double NN = 0, VV = 0, VM = 0, MM = 0;
+};
+HeldFace held_face(double nu);
 
 }  // namespace ogive
