@@ -32,7 +32,10 @@ struct State {
   Mechanism mechanism;
   SpreadStep step;
   int sliding = -1;  // the joint whose resultant leaves the friction cone (sliding_joint), or -1
-  std::vector<Hinge> contacts;  // every joint where the program's thrust line touches a face (or a pin)
+  // Every joint where the program's thrust line touches a face (or a pin), at the point its blocks turn
+  // about (with a finite compressive strength the stress block's inner edge, turning_points), and at
+  // the resultant's point (the stress block's centre).
+  std::vector<Hinge> contacts, resultants;
   // Each hinge's relative rotation rate per unit rate of d, to start the next increment from: the
   // mechanism's (none where it left a hinge out: the next placement is found from phi alone).
   Eigen::VectorXd rates;
@@ -49,6 +52,20 @@ constexpr int kRollJoints = 2;
 // Hinges that roll more often than this at one movement have found no state whose contacts are its
 // hinges (a ring whose joints alternate at the same d; not seen on the tested arches).
 constexpr int kMostRolls = 20;
+
+// With a finite compressive strength the blocks turn about points that move with the normal forces: a
+// state is placed again about its own points until they move by at most this much of the span (each
+// placement moves them by a fraction of the last move: they agree after two to four), at most
+// kMostReplacements times.
+constexpr double kPointsAgree = 1e-12;
+constexpr int kMostReplacements = 30;
+
+// The most that a hinge of `a` lies from the same joint's hinge of `b` (m; the same joints and faces).
+double farthest_apart(const std::vector<Hinge>& a, const std::vector<Hinge>& b) {
+  double most = 0;
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) most = std::max(most, (a[i].point - b[i].point).norm());
+  return most;
+}
 
 class Path {
  public:
@@ -87,6 +104,7 @@ class Path {
     Eigen::VectorXd phi = from.phi + from.rates * dd;
     const std::vector<int>* warm = &from.answer.basis;
     std::vector<std::vector<Hinge>> seen;
+    int replacements = 0;
     for (int roll = 0; roll <= kMostRolls; ++roll) {
       std::vector<Rigid> bodies;
       if (!close_chain(hinges, vL_ * d, vR_ * d, ring0_.span, phi, bodies)) return Outcome::snap_through;
@@ -125,10 +143,21 @@ class Path {
           to.rates = Eigen::Map<const Eigen::VectorXd>(to.mechanism.rates.data(), static_cast<Eigen::Index>(hinges.size()));
         else
           to.rates = Eigen::VectorXd::Zero(4);
-        if (!own) to.step.hinges = to.contacts;  // all four, where they are now
-        // With a finite compressive strength a hinge follows its stress block's centre as the joint's
-        // normal force changes (else the contacts' points are the hinges' own face points).
-        to.hinges = with_points_of(std::move(hinges), own ? on_ring0(to.mechanism.hinges) : on_ring0(to.contacts));
+        if (!own) to.step.hinges = to.resultants;  // all four, where they are now
+        // With a finite compressive strength a hinge turns about its stress block's inner edge, which
+        // moves with the joint's normal force: the blocks are placed again about the state's own points
+        // until they agree, so that the state at d is one (not the last state's points carried on).
+        // Without one the contacts' points are the hinges' own face points.
+        std::vector<Hinge> own_points =
+            with_points_of(hinges, own ? on_ring0(to.mechanism.hinges) : on_ring0(to.contacts));
+        if (std::isfinite(compressive_strength_) && farthest_apart(own_points, hinges) > kPointsAgree * ring0_.span) {
+          if (++replacements > kMostReplacements) break;
+          hinges = std::move(own_points);
+          warm = &to.answer.basis;
+          --roll;
+          continue;
+        }
+        to.hinges = std::move(own_points);
         to.phi = std::move(phi);
         return o;
       }
@@ -199,7 +228,15 @@ class Path {
     };
     std::vector<std::size_t> kept;
     for (std::size_t k = 0; k < hinges.size(); ++k) {
+      // With a finite strength the thrust line touches the stress blocks' offset curve, which it grazes
+      // over a stretch of the face near collapse: its contact can jump a few hundredths of the span
+      // along it at once, further than two of the refined ring's joints. Such a contact is no new hinge
+      // (further than kNewHingeReach): two hinges on one face so near each other cannot both hold the
+      // thrust line (the chord between them lies outside the voussoirs between), so it is this hinge,
+      // rolled there.
       const bool rolled = std::any_of(contacts.begin(), contacts.end(), [&](const Hinge& c) {
+        if (std::isfinite(compressive_strength_))
+          return c.face == hinges[k].face && std::abs(s(c) - s(hinges[k])) <= kNewHingeReach * ring0_.span;
         return c.face == hinges[k].face && std::abs(c.joint - hinges[k].joint) <= kRollJoints;
       });
       if (!rolled && phi(static_cast<Eigen::Index>(k)) != 0) kept.push_back(k);
@@ -239,10 +276,12 @@ class Path {
     if (a.outcome == LimitLp::Outcome::infeasible) return Outcome::inadmissible;
     if (a.outcome != LimitLp::Outcome::optimal) return Outcome::lp_failure;
     const ThrustState st = thrust_state(moved_, a.H, a.V, a.M, live_factor_, 1e-9, compressive_strength_);
-    Mechanism mech = choose_mechanism(moved_, st.hinges, vL_, vR_);
+    std::vector<Hinge> turning = turning_points(st);
+    Mechanism mech = choose_mechanism(moved_, turning, vL_, vR_);
     if (!mech.found()) return Outcome::snap_through;
     s.sliding = sliding_joint(moved_, st, friction_);
-    s.contacts = st.hinges;
+    s.contacts = std::move(turning);
+    s.resultants = st.hinges;
     s.at = std::move(at);
     s.answer = a;
     s.mechanism = std::move(mech);
@@ -251,12 +290,12 @@ class Path {
     step.H = a.H;
     step.V_left = st.V_left;
     step.V_right = st.V_right;
-    step.H_work = thrust_by_work(s.mechanism, st.V_left, st.V_right);
+    step.H_work = thrust_by_work(s.mechanism, st, st.V_left, st.V_right);
     const std::size_t cj = static_cast<std::size_t>(ring0_.crown_joint());
     step.crown_drop = ring0_.joints[cj].extrados.y() - moved_.joints[cj].extrados.y();
     step.potential = 0;
     for_each_load(moved_, [&](std::size_t, double f, const Vec& p) { step.potential += f * p.y(); });
-    step.hinges = s.mechanism.hinges;
+    step.hinges = with_points_of(s.mechanism.hinges, st.hinges);  // where the resultants cross
     return Outcome::admissible;
   }
 
@@ -267,7 +306,7 @@ class Path {
  private:
   // The hinges of the moved ring with their points on the ring at d = 0: a face's point, or with a
   // finite compressive strength the point as far inside the face (along the joint, in its fraction of
-  // the joint's length) as the stress block's centre on the moved ring.
+  // the joint's length) as the hinge's point on the moved ring (where its blocks turn: turning_points).
   std::vector<Hinge> on_ring0(std::vector<Hinge> hinges) const {
     for (Hinge& h : hinges) {
       const std::size_t k = static_cast<std::size_t>(h.joint);
@@ -296,8 +335,9 @@ class Path {
 
   // The thrust by virtual work of the mechanism at the moved ring: each body's velocity per unit rate
   // of d, the loads' work -sum F v_y and the vertical reactions' V_left vL.y + V_right vR.y balanced by
-  // the supports' H (vR - vL).x.
-  double thrust_by_work(const Mechanism& mech, double V_left, double V_right) const {
+  // the supports' H (vR - vL).x and (with a finite strength) the work the crushing blocks dissipate,
+  // N^2 / (2 f_c) per unit of relative rotation at each hinge (N its joint's normal force in `st`).
+  double thrust_by_work(const Mechanism& mech, const ThrustState& st, double V_left, double V_right) const {
     const std::vector<Hinge>& h = mech.hinges;
     double work = 0;
     std::size_t body = 0;
@@ -307,7 +347,31 @@ class Path {
       for (std::size_t i = 0; i < body; ++i) v += mech.rates[i] * perp(p - h[i].point);
       work -= f * v.y();
     });
+    if (std::isfinite(compressive_strength_))
+      for (std::size_t i = 0; i < h.size(); ++i) {
+        if (h[i].face == Face::axis) continue;
+        const std::size_t j = static_cast<std::size_t>(h[i].joint);
+        const double N = limit_detail::joint_normal_force(moved_.joints[j], st.force[j]);
+        work -= N * N / (2 * compressive_strength_) * std::abs(mech.rates[i]);
+      }
     return (work + V_left * vL_.y() + V_right * vR_.y()) / (vR_.x() - vL_.x());
+  }
+
+  // The points the blocks turn about at the contacts of `st` (on the moved ring): a pin's, a face's; with
+  // a finite compressive strength f_c the stress block's inner edge, N / f_c inside the face (the
+  // neutral axis, where the crushing block's strain rate vanishes: the flow rule of the condition
+  // |M| <= N (h/2 - N / (2 f_c))), while the resultant crosses at the block's centre, N / (2 f_c) inside.
+  std::vector<Hinge> turning_points(const ThrustState& st) const {
+    std::vector<Hinge> out = st.hinges;
+    if (!std::isfinite(compressive_strength_)) return out;
+    for (Hinge& h : out) {
+      if (h.face == Face::axis) continue;
+      const Joint& j = moved_.joints[static_cast<std::size_t>(h.joint)];
+      const double depth = limit_detail::joint_normal_force(j, st.force[static_cast<std::size_t>(h.joint)]) / compressive_strength_;
+      const Vec inwards = (j.extrados - j.intrados).normalized();
+      h.point = h.face == Face::intrados ? Vec(j.intrados + depth * inwards) : Vec(j.extrados - depth * inwards);
+    }
+    return out;
   }
 
   const Ring& ring0_;
@@ -565,6 +629,13 @@ bool same_places(const std::vector<Hinge>& a, const std::vector<Hinge>& b, doubl
   });
 }
 
+// Whether the hinges of b are those of a slid along the same faces, by at most kNewHingeReach L each.
+bool slid_along(const std::vector<Hinge>& a, const std::vector<Hinge>& b, double L) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [&](const Hinge& x, const Hinge& y) {
+    return x.face == y.face && (x.point - y.point).norm() <= kNewHingeReach * L;
+  });
+}
+
 // The hinges at collapse that can roll on: those on a face, but not on a springing's joint.
 std::vector<Hinge> rolling_hinges(const Ring& ring, const std::vector<Hinge>& hinges) {
   std::vector<Hinge> out;
@@ -621,7 +692,14 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
   double change = 0;  // no refinement: nothing moved
   bool other_start = false;  // the last refinement changed the state at d = 0
   for (int refinement = 0; r.status == SpreadStatus::success && refinement < kMostSpreadRefinements; ++refinement) {
-    const std::vector<Hinge> rolling = rolling_hinges(r.ring, r.path.back().hinges);
+    std::vector<Hinge> rolling = rolling_hinges(r.ring, r.path.back().hinges);
+    if (std::isfinite(limit.compressive_strength)) {
+      // With a finite strength the hinges at d = 0 stay where they formed, each locked in the corner its
+      // opened joint makes, until the thrust line's contact moves past it: the capacity follows where
+      // they formed, which the joints next to them resolve (its change halves with each halving).
+      const std::vector<Hinge> first = rolling_hinges(r.ring, r.path.front().hinges);
+      rolling.insert(rolling.end(), first.begin(), first.end());
+    }
     if (rolling.empty() || r.d_max == 0 || (refinement > 0 && coarsest_next_to(r.ring, rolling) <= kSpreadJointSpacing * r.ring.span &&
                             change <= kSpreadCapacityTolerance))
       break;
@@ -637,7 +715,8 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
     // A finer ring that resolves the state at d = 0 into other contacts (a pointed arch's thrust line
     // grazing its extrados over several of the new joints, and a path from there no nearer the arch's)
     // starts another path: the last ring's stands, its capacity checked against the finer one's.
-    if (!same_places(finer.path.front().hinges, r.path.front().hinges, r.ring.span)) {
+    if (!same_places(finer.path.front().hinges, r.path.front().hinges, r.ring.span) &&
+        !(std::isfinite(limit.compressive_strength) && slid_along(finer.path.front().hinges, r.path.front().hinges, r.ring.span))) {
       other_start = true;
       break;
     }
