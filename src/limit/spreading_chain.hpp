@@ -104,7 +104,7 @@ int sliding_joint(const Ring& ring, const ThrustState& st, double friction);
 bool same_hinges(const std::vector<Hinge>& a, const std::vector<Hinge>& b);
 
 // `hinges` with each one's point taken from the hinge of `points` at the same joint and face (kept where
-// there is none): where a hinge turns now, its stress block's centre with a finite compressive strength.
+// there is none): where a hinge turns now, its stress block's inner edge with a finite compressive strength.
 std::vector<Hinge> with_points_of(std::vector<Hinge> hinges, const std::vector<Hinge>& points);
 
 // The relative rotations of `to` taken from those of `from` (phi): a hinge that stays on its joint keeps
