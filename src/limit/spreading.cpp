@@ -36,6 +36,7 @@ struct State {
   // about (with a finite compressive strength the stress block's inner edge, turning_points), and at
   // the resultant's point (the stress block's centre).
   std::vector<Hinge> contacts, resultants;
+  std::vector<Vec> force;  // N/m, each joint's (ThrustState::force)
   // Each hinge's relative rotation rate per unit rate of d, to start the next increment from: the
   // mechanism's (none where it left a hinge out: the next placement is found from phi alone).
   Eigen::VectorXd rates;
@@ -133,7 +134,7 @@ class Path {
       const Outcome o = evaluate(placement(hinges, bodies), d, warm, to);
       if (o != Outcome::admissible) return o;
       const std::vector<Hinge> contacts = on_ring0(hinges.size() == 4 ? to.contacts : to.mechanism.hinges);
-      const bool own = same_hinges(on_ring0(to.mechanism.hinges), hinges);
+      const bool own = same_hinges(on_ring0(to.mechanism.hinges), hinges) || grazed_beside(hinges, to);
       // Four hinges in balance: the thrust line passes through each (the mechanism may leave one out
       // whose rate would close it: it turns with the others, its joint still open).
       if (own || (hinges.size() == 4 && same_hinges(on_ring0(to.contacts), hinges))) {
@@ -190,6 +191,31 @@ class Path {
   }
 
   int rolls() const { return rolls_; }
+
+  // With a finite strength: whether the contacts of `to` are its hinges (each at its own joint) and others
+  // beside them on their faces (within kNewHingeReach): the thrust line passes through the hinges and
+  // grazes the stress blocks' offset curve beside one, the moment its contact moves on. Then `to` is
+  // settled on the hinges alone: its mechanism and virtual work are made again on them.
+  bool grazed_beside(const std::vector<Hinge>& hinges, State& to) const {
+    if (!std::isfinite(compressive_strength_) || to.contacts.size() <= hinges.size()) return false;
+    const auto s = [&](const Hinge& h) { return ring0_.joints[static_cast<std::size_t>(h.joint)].s; };
+    std::vector<Hinge> kept;
+    for (const Hinge& c : to.contacts) {
+      const bool at_hinge = std::any_of(hinges.begin(), hinges.end(), [&](const Hinge& h) { return h.joint == c.joint && h.face == c.face; });
+      const bool beside = std::any_of(hinges.begin(), hinges.end(), [&](const Hinge& h) {
+        return h.face == c.face && std::abs(s(h) - s(c)) <= kNewHingeReach * ring0_.span;
+      });
+      if (at_hinge) kept.push_back(c);
+      else if (!beside) return false;
+    }
+    if (!same_hinges(kept, hinges)) return false;
+    Mechanism mech = choose_mechanism(moved_, kept, vL_, vR_);
+    if (!same_hinges(mech.hinges, hinges)) return false;
+    to.mechanism = std::move(mech);
+    to.step.H_work = thrust_by_work(to.mechanism, to.force, to.step.V_left, to.step.V_right);
+    to.step.hinges = with_points_of(to.mechanism.hinges, to.resultants);
+    return true;
+  }
 
   // New hinges that no balance holds: the loads move the blocks on at fixed springings. If the chain
   // with `contacts` as its hinges (where the blocks would come to rest) has no thrust line inside it
@@ -282,6 +308,7 @@ class Path {
     s.sliding = sliding_joint(moved_, st, friction_);
     s.contacts = std::move(turning);
     s.resultants = st.hinges;
+    s.force = st.force;
     s.at = std::move(at);
     s.answer = a;
     s.mechanism = std::move(mech);
@@ -290,7 +317,7 @@ class Path {
     step.H = a.H;
     step.V_left = st.V_left;
     step.V_right = st.V_right;
-    step.H_work = thrust_by_work(s.mechanism, st, st.V_left, st.V_right);
+    step.H_work = thrust_by_work(s.mechanism, st.force, st.V_left, st.V_right);
     const std::size_t cj = static_cast<std::size_t>(ring0_.crown_joint());
     step.crown_drop = ring0_.joints[cj].extrados.y() - moved_.joints[cj].extrados.y();
     step.potential = 0;
@@ -336,8 +363,9 @@ class Path {
   // The thrust by virtual work of the mechanism at the moved ring: each body's velocity per unit rate
   // of d, the loads' work -sum F v_y and the vertical reactions' V_left vL.y + V_right vR.y balanced by
   // the supports' H (vR - vL).x and (with a finite strength) the work the crushing blocks dissipate,
-  // N^2 / (2 f_c) per unit of relative rotation at each hinge (N its joint's normal force in `st`).
-  double thrust_by_work(const Mechanism& mech, const ThrustState& st, double V_left, double V_right) const {
+  // N^2 / (2 f_c) per unit of relative rotation at each hinge (N its joint's normal force from `force`,
+  // ThrustState::force).
+  double thrust_by_work(const Mechanism& mech, const std::vector<Vec>& force, double V_left, double V_right) const {
     const std::vector<Hinge>& h = mech.hinges;
     double work = 0;
     std::size_t body = 0;
@@ -351,7 +379,7 @@ class Path {
       for (std::size_t i = 0; i < h.size(); ++i) {
         if (h[i].face == Face::axis) continue;
         const std::size_t j = static_cast<std::size_t>(h[i].joint);
-        const double N = limit_detail::joint_normal_force(moved_.joints[j], st.force[j]);
+        const double N = limit_detail::joint_normal_force(moved_.joints[j], force[j]);
         work -= N * N / (2 * compressive_strength_) * std::abs(mech.rates[i]);
       }
     return (work + V_left * vL_.y() + V_right * vR_.y()) / (vR_.x() - vL_.x());
