@@ -15,6 +15,7 @@
 
 #include "limit/limit_internal.hpp"
 #include "limit/spreading_chain.hpp"
+#include "limit/spreading_crushing.hpp"
 
 namespace ogive {
 namespace {
@@ -32,11 +33,8 @@ struct State {
   Mechanism mechanism;
   SpreadStep step;
   int sliding = -1;  // the joint whose resultant leaves the friction cone (sliding_joint), or -1
-  // Every joint where the program's thrust line touches a face (or a pin), at the point its blocks turn
-  // about (with a finite compressive strength the stress block's inner edge, turning_points), and at
-  // the resultant's point (the stress block's centre).
-  std::vector<Hinge> contacts, resultants;
-  std::vector<Vec> force;  // N/m, each joint's (ThrustState::force)
+  std::vector<Hinge> contacts, resultants;  // where the thrust line touches: turning points; resultants' points
+  std::vector<Vec> force;                   // N/m, each joint's (ThrustState::force)
   // Each hinge's relative rotation rate per unit rate of d, to start the next increment from: the
   // mechanism's (none where it left a hinge out: the next placement is found from phi alone).
   Eigen::VectorXd rates;
@@ -54,19 +52,9 @@ constexpr int kRollJoints = 2;
 // hinges (a ring whose joints alternate at the same d; not seen on the tested arches).
 constexpr int kMostRolls = 20;
 
-// With a finite compressive strength the blocks turn about points that move with the normal forces: a
-// state is placed again about its own points until they move by at most this much of the span (each
-// placement moves them by a fraction of the last move: they agree after two to four), at most
-// kMostReplacements times.
+// With a finite strength a state is placed again about its own turning points until they agree to this (of L).
 constexpr double kPointsAgree = 1e-12;
-constexpr int kMostReplacements = 30;
-
-// The most that a hinge of `a` lies from the same joint's hinge of `b` (m; the same joints and faces).
-double farthest_apart(const std::vector<Hinge>& a, const std::vector<Hinge>& b) {
-  double most = 0;
-  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) most = std::max(most, (a[i].point - b[i].point).norm());
-  return most;
-}
+constexpr int kMostReplacements = 30;  // at most (they agree after two to four)
 
 class Path {
  public:
@@ -145,12 +133,7 @@ class Path {
         else
           to.rates = Eigen::VectorXd::Zero(4);
         if (!own) to.step.hinges = to.resultants;  // all four, where they are now
-        // With a finite compressive strength a hinge turns about its stress block's inner edge, which
-        // moves with the joint's normal force: the blocks are placed again about the state's own points
-        // until they agree, so that the state at d is one (not the last state's points carried on).
-        // Without one the contacts' points are the hinges' own face points.
-        std::vector<Hinge> own_points =
-            with_points_of(hinges, own ? on_ring0(to.mechanism.hinges) : on_ring0(to.contacts));
+        std::vector<Hinge> own_points = with_points_of(hinges, own ? on_ring0(to.mechanism.hinges) : on_ring0(to.contacts));
         if (std::isfinite(compressive_strength_) && farthest_apart(own_points, hinges) > kPointsAgree * ring0_.span) {
           if (++replacements > kMostReplacements) break;
           hinges = std::move(own_points);
@@ -192,25 +175,11 @@ class Path {
 
   int rolls() const { return rolls_; }
 
-  // With a finite strength: whether the contacts of `to` are its hinges (each at its own joint) and others
-  // beside them on their faces (within kNewHingeReach): the thrust line passes through the hinges and
-  // grazes the stress blocks' offset curve beside one, the moment its contact moves on. Then `to` is
-  // settled on the hinges alone: its mechanism and virtual work are made again on them.
+  // Whether `to` is settled on `hinges` alone, its other contacts grazing beside them (grazed_mechanism).
   bool grazed_beside(const std::vector<Hinge>& hinges, State& to) const {
-    if (!std::isfinite(compressive_strength_) || to.contacts.size() <= hinges.size()) return false;
-    const auto s = [&](const Hinge& h) { return ring0_.joints[static_cast<std::size_t>(h.joint)].s; };
-    std::vector<Hinge> kept;
-    for (const Hinge& c : to.contacts) {
-      const bool at_hinge = std::any_of(hinges.begin(), hinges.end(), [&](const Hinge& h) { return h.joint == c.joint && h.face == c.face; });
-      const bool beside = std::any_of(hinges.begin(), hinges.end(), [&](const Hinge& h) {
-        return h.face == c.face && std::abs(s(h) - s(c)) <= kNewHingeReach * ring0_.span;
-      });
-      if (at_hinge) kept.push_back(c);
-      else if (!beside) return false;
-    }
-    if (!same_hinges(kept, hinges)) return false;
-    Mechanism mech = choose_mechanism(moved_, kept, vL_, vR_);
-    if (!same_hinges(mech.hinges, hinges)) return false;
+    if (!std::isfinite(compressive_strength_)) return false;
+    Mechanism mech = grazed_mechanism(ring0_, moved_, hinges, to.contacts, vL_, vR_, kNewHingeReach * ring0_.span);
+    if (!mech.found()) return false;
     to.mechanism = std::move(mech);
     to.step.H_work = thrust_by_work(to.mechanism, to.force, to.step.V_left, to.step.V_right);
     to.step.hinges = with_points_of(to.mechanism.hinges, to.resultants);
@@ -254,12 +223,7 @@ class Path {
     };
     std::vector<std::size_t> kept;
     for (std::size_t k = 0; k < hinges.size(); ++k) {
-      // With a finite strength the thrust line touches the stress blocks' offset curve, which it grazes
-      // over a stretch of the face near collapse: its contact can jump a few hundredths of the span
-      // along it at once, further than two of the refined ring's joints. Such a contact is no new hinge
-      // (further than kNewHingeReach): two hinges on one face so near each other cannot both hold the
-      // thrust line (the chord between them lies outside the voussoirs between), so it is this hinge,
-      // rolled there.
+      // With a finite strength: within kNewHingeReach along the grazed offset curve (spreading.hpp).
       const bool rolled = std::any_of(contacts.begin(), contacts.end(), [&](const Hinge& c) {
         if (std::isfinite(compressive_strength_))
           return c.face == hinges[k].face && std::abs(s(c) - s(hinges[k])) <= kNewHingeReach * ring0_.span;
@@ -302,7 +266,7 @@ class Path {
     if (a.outcome == LimitLp::Outcome::infeasible) return Outcome::inadmissible;
     if (a.outcome != LimitLp::Outcome::optimal) return Outcome::lp_failure;
     const ThrustState st = thrust_state(moved_, a.H, a.V, a.M, live_factor_, 1e-9, compressive_strength_);
-    std::vector<Hinge> turning = turning_points(st);
+    std::vector<Hinge> turning = turning_points(moved_, st, compressive_strength_);
     Mechanism mech = choose_mechanism(moved_, turning, vL_, vR_);
     if (!mech.found()) return Outcome::snap_through;
     s.sliding = sliding_joint(moved_, st, friction_);
@@ -362,9 +326,7 @@ class Path {
 
   // The thrust by virtual work of the mechanism at the moved ring: each body's velocity per unit rate
   // of d, the loads' work -sum F v_y and the vertical reactions' V_left vL.y + V_right vR.y balanced by
-  // the supports' H (vR - vL).x and (with a finite strength) the work the crushing blocks dissipate,
-  // N^2 / (2 f_c) per unit of relative rotation at each hinge (N its joint's normal force from `force`,
-  // ThrustState::force).
+  // the supports' H (vR - vL).x and (with a finite strength) the crushing blocks' dissipation.
   double thrust_by_work(const Mechanism& mech, const std::vector<Vec>& force, double V_left, double V_right) const {
     const std::vector<Hinge>& h = mech.hinges;
     double work = 0;
@@ -375,31 +337,8 @@ class Path {
       for (std::size_t i = 0; i < body; ++i) v += mech.rates[i] * perp(p - h[i].point);
       work -= f * v.y();
     });
-    if (std::isfinite(compressive_strength_))
-      for (std::size_t i = 0; i < h.size(); ++i) {
-        if (h[i].face == Face::axis) continue;
-        const std::size_t j = static_cast<std::size_t>(h[i].joint);
-        const double N = limit_detail::joint_normal_force(moved_.joints[j], force[j]);
-        work -= N * N / (2 * compressive_strength_) * std::abs(mech.rates[i]);
-      }
+    if (std::isfinite(compressive_strength_)) work -= crushing_dissipation(moved_, mech, force, compressive_strength_);
     return (work + V_left * vL_.y() + V_right * vR_.y()) / (vR_.x() - vL_.x());
-  }
-
-  // The points the blocks turn about at the contacts of `st` (on the moved ring): a pin's, a face's; with
-  // a finite compressive strength f_c the stress block's inner edge, N / f_c inside the face (the
-  // neutral axis, where the crushing block's strain rate vanishes: the flow rule of the condition
-  // |M| <= N (h/2 - N / (2 f_c))), while the resultant crosses at the block's centre, N / (2 f_c) inside.
-  std::vector<Hinge> turning_points(const ThrustState& st) const {
-    std::vector<Hinge> out = st.hinges;
-    if (!std::isfinite(compressive_strength_)) return out;
-    for (Hinge& h : out) {
-      if (h.face == Face::axis) continue;
-      const Joint& j = moved_.joints[static_cast<std::size_t>(h.joint)];
-      const double depth = limit_detail::joint_normal_force(j, st.force[static_cast<std::size_t>(h.joint)]) / compressive_strength_;
-      const Vec inwards = (j.extrados - j.intrados).normalized();
-      h.point = h.face == Face::intrados ? Vec(j.intrados + depth * inwards) : Vec(j.extrados - depth * inwards);
-    }
-    return out;
   }
 
   const Ring& ring0_;
@@ -657,13 +596,6 @@ bool same_places(const std::vector<Hinge>& a, const std::vector<Hinge>& b, doubl
   });
 }
 
-// Whether the hinges of b are those of a slid along the same faces, by at most kNewHingeReach L each.
-bool slid_along(const std::vector<Hinge>& a, const std::vector<Hinge>& b, double L) {
-  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [&](const Hinge& x, const Hinge& y) {
-    return x.face == y.face && (x.point - y.point).norm() <= kNewHingeReach * L;
-  });
-}
-
 // The hinges at collapse that can roll on: those on a face, but not on a springing's joint.
 std::vector<Hinge> rolling_hinges(const Ring& ring, const std::vector<Hinge>& hinges) {
   std::vector<Hinge> out;
@@ -721,13 +653,8 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
   bool other_start = false;  // the last refinement changed the state at d = 0
   for (int refinement = 0; r.status == SpreadStatus::success && refinement < kMostSpreadRefinements; ++refinement) {
     std::vector<Hinge> rolling = rolling_hinges(r.ring, r.path.back().hinges);
-    if (std::isfinite(limit.compressive_strength)) {
-      // With a finite strength the hinges at d = 0 stay where they formed, each locked in the corner its
-      // opened joint makes, until the thrust line's contact moves past it: the capacity follows where
-      // they formed, which the joints next to them resolve (its change halves with each halving).
-      const std::vector<Hinge> first = rolling_hinges(r.ring, r.path.front().hinges);
-      rolling.insert(rolling.end(), first.begin(), first.end());
-    }
+    if (std::isfinite(limit.compressive_strength))  // the capacity follows the hinges at d = 0 (spreading.hpp)
+      for (const Hinge& h : rolling_hinges(r.ring, r.path.front().hinges)) rolling.push_back(h);
     if (rolling.empty() || r.d_max == 0 || (refinement > 0 && coarsest_next_to(r.ring, rolling) <= kSpreadJointSpacing * r.ring.span &&
                             change <= kSpreadCapacityTolerance))
       break;
@@ -742,9 +669,10 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
     change = std::abs(finer.d_max - r.d_max) / std::max(finer.d_max, kSpreadCapacityFloor * r.ring.span / sides);
     // A finer ring that resolves the state at d = 0 into other contacts (a pointed arch's thrust line
     // grazing its extrados over several of the new joints, and a path from there no nearer the arch's)
-    // starts another path: the last ring's stands, its capacity checked against the finer one's.
+    // starts another path: the last ring's stands, its capacity checked against the finer one's (with a
+    // finite strength hinges at d = 0 that only slid along their faces are that state resolved further).
     if (!same_places(finer.path.front().hinges, r.path.front().hinges, r.ring.span) &&
-        !(std::isfinite(limit.compressive_strength) && slid_along(finer.path.front().hinges, r.path.front().hinges, r.ring.span))) {
+        !(std::isfinite(limit.compressive_strength) && slid_along(finer.path.front().hinges, r.path.front().hinges, kNewHingeReach * r.ring.span))) {
       other_start = true;
       break;
     }
