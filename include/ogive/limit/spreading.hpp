@@ -72,11 +72,17 @@
 // depth at the face is the rotation times the current N / f_c, not its history). The program's thrust
 // line touches the stress blocks' offset curve, which it grazes over a stretch of the face: its contacts
 // can jump further along a face than two refined joints at once, so a contact within 0.05 L of a hinge
-// on its face is that hinge rolled, whatever the joints between. A hinge stays where it formed at d = 0,
-// held by the corner its opened joint makes, until the contact moves past it: the capacity follows where
-// it formed, so the refinement halves the voussoirs next to the hinges at d = 0 as well as those at
-// collapse, and a finer ring whose hinges at d = 0 only slid along their faces (by at most 0.05 L) goes
-// on refining from there (that is the limit analysis' minimum-thrust state resolved further).
+// on its face is that hinge rolled, whatever the joints between, and a state whose thrust line passes
+// through its hinges and touches the face beside one as well (the moment the contact moves on) is settled
+// on its hinges. Near collapse the contact jumps along the graze to a joint where no hinge holds a line,
+// and the path ends there (thrust_leaves_arch); a hinge rolled instead to the nearest joint whose
+// three-hinge line still fits would go 0.5 % to 1.8 % further on the semicircle at 2 to 0.5 MPa
+// (benchmarks/crushing/spread_check.py), through states whose least-thrust line touches elsewhere: the
+// capacity given is the lower. A hinge stays where it formed at d = 0, held by the corner its opened
+// joint makes, until the contact moves past it: the capacity follows where it formed, so the refinement
+// halves the voussoirs next to the hinges at d = 0 as well as those at collapse, and a finer ring whose
+// hinges at d = 0 only slid along their faces (by at most 0.05 L) goes on refining from there (that is
+// the limit analysis' minimum-thrust state resolved further).
 //
 // Friction (LimitOptions::friction > 0): the program is the one without friction, and every state's
 // resultant at every joint is checked against Coulomb's cone, |shear| <= friction * normal force. The
