@@ -106,8 +106,9 @@ void add_spread_analysis_options(CLI::App& cmd, SpreadText& t) {
       ->check(finite_number())
       ->capture_default_str();
   add_compressive_strength_option(cmd, t.compressive_strength,
-                                  "the rigid voussoirs' joints crush: each hinge turns about its stress block's centre, "
-                                  "N / (2 f_c) inside its face; omitted: infinite strength");
+                                  "the rigid voussoirs' joints crush: each hinge's resultant crosses its stress block's "
+                                  "centre, N / (2 f_c) inside its face, and its blocks turn about the block's inner "
+                                  "edge, N / f_c inside; omitted: infinite strength");
   cmd.add_option("--friction", t.friction,
                  "friction coefficient of the joints (> 0): the path ends where a joint's resultant leaves the "
                  "friction cone (collapse sliding)")

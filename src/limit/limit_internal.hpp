@@ -2,6 +2,7 @@
 // linear programs (src/limit/limit_lp.cpp, the only file that includes the LP library).
 #pragma once
 
+#include <algorithm>
 #include <compare>
 #include <functional>
 #include <limits>
@@ -56,6 +57,12 @@ void attach_walls(const Scene& scene, const std::vector<double>& fractions, Ring
 // The thickest arch whose springing joints the scene's walls carry whole (as wide as the thinnest
 // wall): where t_min's search stops; infinity without walls.
 double thickest_on_walls(const Scene& scene);
+// The normal force (N/m, compression positive, 0 for tension) of the force F across `joint` (F of the
+// part left of it on the part right of it; the joint's intrados to extrados d, its normal (d.y, -d.x)).
+inline double joint_normal_force(const Joint& joint, const Eigen::Vector2d& F) {
+  const Eigen::Vector2d d = joint.extrados - joint.intrados;
+  return std::max(0.0, (F.x() * d.y() - F.y() * d.x()) / d.norm());
+}
 // Half the arch's loads (dead plus live at factor 1; the walls' not counted): LimitResult::V.
 double arch_half_load(const Ring& ring);
 // The least wall thickness of the scene on the joints `fractions`, under dead + load_factor * live,

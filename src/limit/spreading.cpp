@@ -16,6 +16,7 @@
 
 #include "limit/limit_internal.hpp"
 #include "limit/spreading_chain.hpp"
+#include "limit/spreading_crushing.hpp"
 #include "limit/spreading_walls.hpp"
 
 namespace ogive {
@@ -35,7 +36,9 @@ struct State {
   SpreadStep step;
   int sliding = -1;  // the joint whose resultant leaves the friction cone (sliding_joint), or -1
   Tipping tipping;   // on walls: the bed whose resultant leaves its wall (none: the walls carry the state)
-  std::vector<Hinge> contacts;  // every joint where the program's thrust line touches a face (or a pin)
+  std::vector<Hinge> contacts, resultants;  // where the thrust line touches: turning points; resultants' points
+  std::vector<Vec> force;                   // N/m, each joint's (ThrustState::force)
+  Vec crossing_left = Vec::Zero(), crossing_right = Vec::Zero();  // m, where the springings' reactions cross
   // Each hinge's relative rotation rate per unit rate of d, to start the next increment from: the
   // mechanism's (none where it left a hinge out: the next placement is found from phi alone).
   Eigen::VectorXd rates;
@@ -52,6 +55,10 @@ constexpr int kRollJoints = 2;
 // Hinges that roll more often than this at one movement have found no state whose contacts are its
 // hinges (a ring whose joints alternate at the same d; not seen on the tested arches).
 constexpr int kMostRolls = 20;
+
+// With a finite strength a state is placed again about its own turning points until they agree to this (of L).
+constexpr double kPointsAgree = 1e-12;
+constexpr int kMostReplacements = 30;  // at most (they agree after two to four)
 
 class Path {
  public:
@@ -93,6 +100,7 @@ class Path {
     Eigen::VectorXd phi = from.phi + from.rates * dd;
     const std::vector<int>* warm = &from.answer.basis;
     std::vector<std::vector<Hinge>> seen;
+    int replacements = 0;
     for (int roll = 0; roll <= kMostRolls; ++roll) {
       std::vector<Rigid> bodies;
       if (!close_chain(hinges, vL_.at(d), vR_.at(d), ring0_.span, phi, bodies)) return Outcome::snap_through;
@@ -121,7 +129,7 @@ class Path {
       const Outcome o = evaluate(placement(hinges, bodies), d, warm, to);
       if (o != Outcome::admissible) return o;
       const std::vector<Hinge> contacts = on_ring0(hinges.size() == 4 ? to.contacts : to.mechanism.hinges);
-      const bool own = same_hinges(on_ring0(to.mechanism.hinges), hinges);
+      const bool own = same_hinges(on_ring0(to.mechanism.hinges), hinges) || grazed_beside(hinges, to);
       // Four hinges in balance: the thrust line passes through each (the mechanism may leave one out
       // whose rate would close it: it turns with the others, its joint still open).
       if (own || (hinges.size() == 4 && same_hinges(on_ring0(to.contacts), hinges))) {
@@ -132,10 +140,16 @@ class Path {
           to.rates = Eigen::Map<const Eigen::VectorXd>(to.mechanism.rates.data(), static_cast<Eigen::Index>(hinges.size()));
         else
           to.rates = Eigen::VectorXd::Zero(4);
-        if (!own) to.step.hinges = to.contacts;  // all four, where they are now
-        // With a finite compressive strength a hinge follows its stress block's centre as the joint's
-        // normal force changes (else the contacts' points are the hinges' own face points).
-        to.hinges = with_points_of(std::move(hinges), own ? on_ring0(to.mechanism.hinges) : on_ring0(to.contacts));
+        if (!own) to.step.hinges = to.resultants;  // all four, where they are now
+        std::vector<Hinge> own_points = with_points_of(hinges, own ? on_ring0(to.mechanism.hinges) : on_ring0(to.contacts));
+        if (std::isfinite(compressive_strength_) && farthest_apart(own_points, hinges) > kPointsAgree * ring0_.span) {
+          if (++replacements > kMostReplacements) break;
+          hinges = std::move(own_points);
+          warm = &to.answer.basis;
+          --roll;
+          continue;
+        }
+        to.hinges = std::move(own_points);
         to.phi = std::move(phi);
         return o;
       }
@@ -170,6 +184,17 @@ class Path {
   int rolls() const { return rolls_; }
   // On walls, where the last state a wall does not carry leaves it (after the bisection: the collapse's).
   const Tipping& tipping() const { return tipping_; }
+
+  // Whether `to` is settled on `hinges` alone, its other contacts grazing beside them (grazed_mechanism).
+  bool grazed_beside(const std::vector<Hinge>& hinges, State& to) const {
+    if (!std::isfinite(compressive_strength_)) return false;
+    Mechanism mech = grazed_mechanism(ring0_, moved_, hinges, to.contacts, vL_.twist, vR_.twist, kNewHingeReach * ring0_.span);
+    if (!mech.found()) return false;
+    to.mechanism = std::move(mech);
+    to.step.H_work = thrust_by_work(to, to.step.V_left, to.step.V_right);
+    to.step.hinges = with_points_of(to.mechanism.hinges, to.resultants);
+    return true;
+  }
 
   // New hinges that no balance holds: the loads move the blocks on at fixed springings. If the chain
   // with `contacts` as its hinges (where the blocks would come to rest) has no thrust line inside it
@@ -208,7 +233,10 @@ class Path {
     };
     std::vector<std::size_t> kept;
     for (std::size_t k = 0; k < hinges.size(); ++k) {
+      // With a finite strength: within kNewHingeReach along the grazed offset curve (spreading.hpp).
       const bool rolled = std::any_of(contacts.begin(), contacts.end(), [&](const Hinge& c) {
+        if (std::isfinite(compressive_strength_))
+          return c.face == hinges[k].face && std::abs(s(c) - s(hinges[k])) <= kNewHingeReach * ring0_.span;
         return c.face == hinges[k].face && std::abs(c.joint - hinges[k].joint) <= kRollJoints;
       });
       if (!rolled && phi(static_cast<Eigen::Index>(k)) != 0) kept.push_back(k);
@@ -250,11 +278,16 @@ class Path {
     if (a.outcome == LimitLp::Outcome::infeasible) return Outcome::inadmissible;
     if (a.outcome != LimitLp::Outcome::optimal) return Outcome::lp_failure;
     const ThrustState st = thrust_state(moved_, a.H, a.V, a.M, live_factor_, 1e-9, compressive_strength_);
-    Mechanism mech = choose_mechanism(moved_, st.hinges, vL_.twist, vR_.twist);
+    std::vector<Hinge> turning = turning_points(moved_, st, compressive_strength_);
+    Mechanism mech = choose_mechanism(moved_, turning, vL_.twist, vR_.twist);
     if (!mech.found()) return Outcome::snap_through;
     s.sliding = sliding_joint(moved_, st, friction_);
     s.tipping = walls_ ? walls_->tipping(at, a.H, a.V, a.M, live_factor_) : Tipping{};
-    s.contacts = st.hinges;
+    s.contacts = std::move(turning);
+    s.resultants = st.hinges;
+    s.force = st.force;
+    s.crossing_left = st.crossing.front();
+    s.crossing_right = st.crossing.back();
     s.at = std::move(at);
     s.answer = a;
     s.mechanism = std::move(mech);
@@ -263,14 +296,14 @@ class Path {
     step.H = a.H;
     step.V_left = st.V_left;
     step.V_right = st.V_right;
-    step.H_work = thrust_by_work(s.mechanism, st.V_left, st.V_right, st.crossing.front(), st.crossing.back());
+    step.H_work = thrust_by_work(s, st.V_left, st.V_right);
     step.span_increase = (moved_.joints.back().intrados.x() - moved_.joints.front().intrados.x()) -
                          (ring0_.joints.back().intrados.x() - ring0_.joints.front().intrados.x());
     const std::size_t cj = static_cast<std::size_t>(ring0_.crown_joint());
     step.crown_drop = ring0_.joints[cj].extrados.y() - moved_.joints[cj].extrados.y();
     step.potential = 0;
     for_each_load(moved_, [&](std::size_t, double f, const Vec& p) { step.potential += f * p.y(); });
-    step.hinges = s.mechanism.hinges;
+    step.hinges = with_points_of(s.mechanism.hinges, st.hinges);  // where the resultants cross
     return Outcome::admissible;
   }
 
@@ -281,7 +314,7 @@ class Path {
  private:
   // The hinges of the moved ring with their points on the ring at d = 0: a face's point, or with a
   // finite compressive strength the point as far inside the face (along the joint, in its fraction of
-  // the joint's length) as the stress block's centre on the moved ring.
+  // the joint's length) as the hinge's point on the moved ring (where its blocks turn: turning_points).
   std::vector<Hinge> on_ring0(std::vector<Hinge> hinges) const {
     for (Hinge& h : hinges) {
       const std::size_t k = static_cast<std::size_t>(h.joint);
@@ -311,8 +344,10 @@ class Path {
   // The thrust by virtual work of the mechanism at the moved ring: each body's velocity per unit rate
   // of d, the loads' work -sum F v_y and the vertical reactions' V_left vL.y + V_right vR.y balanced by
   // the supports' H (vR - vL).x, each springing's velocity at the point its reaction crosses the
-  // springing joint (pL, pR: the program's; the same everywhere on a translating springing).
-  double thrust_by_work(const Mechanism& mech, double V_left, double V_right, const Vec& pL, const Vec& pR) const {
+  // springing joint (the state's crossings: the program's; the same everywhere on a translating
+  // springing), and (with a finite strength) the crushing blocks' dissipation.
+  double thrust_by_work(const State& s, double V_left, double V_right) const {
+    const Mechanism& mech = s.mechanism;
     const std::vector<Hinge>& h = mech.hinges;
     double work = 0;
     std::size_t body = 0;
@@ -322,7 +357,8 @@ class Path {
       for (std::size_t i = 0; i < body; ++i) v += mech.rates[i] * perp(p - h[i].point);
       work -= f * v.y();
     });
-    const Vec vl = vL_.twist.at(pL), vr = vR_.twist.at(pR);
+    if (std::isfinite(compressive_strength_)) work -= crushing_dissipation(moved_, mech, s.force, compressive_strength_);
+    const Vec vl = vL_.twist.at(s.crossing_left), vr = vR_.twist.at(s.crossing_right);
     return (work + V_left * vl.y() + V_right * vr.y()) / (vr.x() - vl.x());
   }
 
@@ -345,46 +381,6 @@ class Path {
 };
 
 }  // namespace
-
-const char* to_string(SpreadCollapse c) {
-  switch (c) {
-    case SpreadCollapse::thrust_leaves_arch: return "thrust_leaves_arch";
-    case SpreadCollapse::snap_through: return "snap_through";
-    case SpreadCollapse::sliding: return "sliding";
-    case SpreadCollapse::wall_tips: return "wall_tips";
-  }
-  return "?";
-}
-
-const char* to_string(SpreadStatus s) {
-  switch (s) {
-    case SpreadStatus::success: return "success";
-    case SpreadStatus::inadmissible: return "inadmissible";
-    case SpreadStatus::no_mechanism: return "no_mechanism";
-    case SpreadStatus::lp_failure: return "lp_failure";
-    case SpreadStatus::not_collapsed: return "not_collapsed";
-    case SpreadStatus::unsettled: return "unsettled";
-    case SpreadStatus::not_converged: return "not_converged";
-  }
-  return "?";
-}
-
-bool SpreadOptions::is_valid(std::string* why) const {
-  auto bad = [&](const char* m) {
-    if (why) *why = m;
-    return false;
-  };
-  if (!(left_share >= 0) || !std::isfinite(left_share)) return bad("left_share must be finite and >= 0");
-  if (!(right_share >= 0) || !std::isfinite(right_share)) return bad("right_share must be finite and >= 0");
-  if (!(left_share + right_share > 0)) return bad("left_share + right_share must be > 0 (the span must grow)");
-  if (!std::isfinite(left_settlement_share)) return bad("left_settlement_share must be finite");
-  if (!std::isfinite(right_settlement_share)) return bad("right_settlement_share must be finite");
-  if (!(increment_ratio >= kLeastIncrementRatio && increment_ratio <= 0.1))
-    return bad("increment_ratio must lie in [1e-4, 0.1] (finer increments take longer without moving the capacity)");
-  if (steps < 1 || steps > 100000) return bad("steps must be in [1, 100000]");
-  if (!(stop_ratio >= 0)) return bad("stop_ratio must be >= 0 (infinity: to collapse)");
-  return true;
-}
 
 // The shape of a state on the path, for drawing: its program solved again to have the moved ring and
 // its thrust line.
@@ -587,32 +583,6 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
   return r;
 }
 
-// Whether two rings' hinges are at the same places (joints of one ring need not have the other's numbers).
-bool same_places(const std::vector<Hinge>& a, const std::vector<Hinge>& b, double L) {
-  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [&](const Hinge& x, const Hinge& y) {
-    return x.face == y.face && (x.point - y.point).norm() <= 1e-9 * L;
-  });
-}
-
-// The hinges at collapse that can roll on: those on a face, but not on a springing's joint.
-std::vector<Hinge> rolling_hinges(const Ring& ring, const std::vector<Hinge>& hinges) {
-  std::vector<Hinge> out;
-  const int last = static_cast<int>(ring.joints.size()) - 1;
-  for (const Hinge& h : hinges)
-    if (h.face != Face::axis && h.joint > 0 && h.joint < last) out.push_back(h);
-  return out;
-}
-
-// The longest arc length (m) of the two voussoirs on each side of each hinge.
-double coarsest_next_to(const Ring& ring, const std::vector<Hinge>& hinges) {
-  double most = 0;
-  const int n = static_cast<int>(ring.voussoirs.size());
-  for (const Hinge& h : hinges)
-    for (int k = std::max(h.joint - 2, 0); k < std::min(h.joint + 2, n); ++k)
-      most = std::max(most, ring.joints[static_cast<std::size_t>(k + 1)].s - ring.joints[static_cast<std::size_t>(k)].s);
-  return most;
-}
-
 // The capacity depends on where the ring has joints for the hinges to roll to (the hinges at collapse
 // sit where the thrust line grazes a face; a joint nearer that point lets the path go on): the path is
 // followed again on a ring whose voussoirs next to the hinges at collapse are halved, until they are
@@ -652,7 +622,9 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
   double change = 0;  // no refinement: nothing moved
   bool other_start = false;  // the last refinement changed the state at d = 0
   for (int refinement = 0; r.status == SpreadStatus::success && refinement < kMostSpreadRefinements; ++refinement) {
-    const std::vector<Hinge> rolling = rolling_hinges(r.ring, r.path.back().hinges);
+    std::vector<Hinge> rolling = rolling_hinges(r.ring, r.path.back().hinges);
+    if (std::isfinite(limit.compressive_strength))  // the capacity follows the hinges at d = 0 (spreading.hpp)
+      for (const Hinge& h : rolling_hinges(r.ring, r.path.front().hinges)) rolling.push_back(h);
     if (rolling.empty() || r.d_max == 0 || (refinement > 0 && coarsest_next_to(r.ring, rolling) <= kSpreadJointSpacing * r.ring.span &&
                             change <= kSpreadCapacityTolerance))
       break;
@@ -668,8 +640,10 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
     change = std::abs(finer.d_max - r.d_max) / std::max(finer.d_max, kSpreadCapacityFloor * r.ring.span / sides);
     // A finer ring that resolves the state at d = 0 into other contacts (a pointed arch's thrust line
     // grazing its extrados over several of the new joints, and a path from there no nearer the arch's)
-    // starts another path: the last ring's stands, its capacity checked against the finer one's.
-    if (!same_places(finer.path.front().hinges, r.path.front().hinges, r.ring.span)) {
+    // starts another path: the last ring's stands, its capacity checked against the finer one's (with a
+    // finite strength hinges at d = 0 that only slid along their faces are that state resolved further).
+    if (!same_places(finer.path.front().hinges, r.path.front().hinges, r.ring.span) &&
+        !(std::isfinite(limit.compressive_strength) && slid_along(finer.path.front().hinges, r.path.front().hinges, kNewHingeReach * r.ring.span))) {
       other_start = true;
       break;
     }

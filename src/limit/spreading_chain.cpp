@@ -279,4 +279,30 @@ bool balance(const Ring& ring0, const std::vector<Hinge>& hinges, const Rigid& u
   return false;
 }
 
+// Whether two rings' hinges are at the same places (joints of one ring need not have the other's numbers).
+bool same_places(const std::vector<Hinge>& a, const std::vector<Hinge>& b, double L) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [&](const Hinge& x, const Hinge& y) {
+    return x.face == y.face && (x.point - y.point).norm() <= 1e-9 * L;
+  });
+}
+
+// The hinges at collapse that can roll on: those on a face, but not on a springing's joint.
+std::vector<Hinge> rolling_hinges(const Ring& ring, const std::vector<Hinge>& hinges) {
+  std::vector<Hinge> out;
+  const int last = static_cast<int>(ring.joints.size()) - 1;
+  for (const Hinge& h : hinges)
+    if (h.face != Face::axis && h.joint > 0 && h.joint < last) out.push_back(h);
+  return out;
+}
+
+// The longest arc length (m) of the two voussoirs on each side of each hinge.
+double coarsest_next_to(const Ring& ring, const std::vector<Hinge>& hinges) {
+  double most = 0;
+  const int n = static_cast<int>(ring.voussoirs.size());
+  for (const Hinge& h : hinges)
+    for (int k = std::max(h.joint - 2, 0); k < std::min(h.joint + 2, n); ++k)
+      most = std::max(most, ring.joints[static_cast<std::size_t>(k + 1)].s - ring.joints[static_cast<std::size_t>(k)].s);
+  return most;
+}
+
 }  // namespace ogive::spreading_detail

@@ -130,7 +130,7 @@ int sliding_joint(const Ring& ring, const ThrustState& st, double friction);
 bool same_hinges(const std::vector<Hinge>& a, const std::vector<Hinge>& b);
 
 // `hinges` with each one's point taken from the hinge of `points` at the same joint and face (kept where
-// there is none): where a hinge turns now, its stress block's centre with a finite compressive strength.
+// there is none): where a hinge turns now, its stress block's inner edge with a finite compressive strength.
 std::vector<Hinge> with_points_of(std::vector<Hinge> hinges, const std::vector<Hinge>& points);
 
 // The relative rotations of `to` taken from those of `from` (phi): a hinge that stays on its joint keeps
@@ -169,5 +169,13 @@ double free_work(const Ring& ring0, const std::vector<Hinge>& hinges, const std:
 // in balance to round-off (a symmetric one) is left as it is.
 bool balance(const Ring& ring0, const std::vector<Hinge>& hinges, const Rigid& uL, const Rigid& uR,
              Eigen::VectorXd& phi, std::vector<Rigid>& bodies);
+
+// The refinement of the spreading path's ring (analyse_spreading): whether two rings' hinges are at the
+// same places (to 1e-9 of the span L; joints of one ring need not have the other's numbers); the hinges
+// at collapse that can roll on (on a face, not on a springing's joint); the longest arc length (m) of
+// the two voussoirs on each side of each hinge.
+bool same_places(const std::vector<Hinge>& a, const std::vector<Hinge>& b, double L);
+std::vector<Hinge> rolling_hinges(const Ring& ring, const std::vector<Hinge>& hinges);
+double coarsest_next_to(const Ring& ring, const std::vector<Hinge>& hinges);
 
 }  // namespace ogive::spreading_detail

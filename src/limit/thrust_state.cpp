@@ -61,7 +61,7 @@ ThrustState thrust_state(const Ring& ring, double H, double V_left, double M_lef
     }
     if (std::isfinite(compressive_strength)) {
       // The stress block N / f_c deep: its centre, N / (2 f_c) inside the face, is where the joint turns.
-      const double h = d.norm(), N = std::max(0.0, (F.x() * d.y() - F.y() * d.x()) / h);
+      const double h = d.norm(), N = limit_detail::joint_normal_force(joint, F);
       const double inside = N / (2 * compressive_strength * h);
       const Eigen::Vector2d& at = st.crossing.back();
       if (u - inside <= hinge_tolerance) st.hinges.push_back({static_cast<int>(j), Face::intrados, at});

@@ -55,6 +55,35 @@
 // state at d = 0 (a pointed arch's thrust line grazing its extrados over several new joints) is not
 // taken: the last ring's path stands (the limit analysis' ring when it is the first).
 //
+// Crushing (LimitOptions::compressive_strength f_c finite): the program at each movement is the crushing
+// one (each joint's resultant N / (2 f_c) clear of its faces). Where a hinge's resultant crosses and
+// where its blocks turn are two points. For the joint's condition Phi = |M| - N h/2 + N^2 / (2 f_c) <= 0
+// the associated flow turns the blocks relatively about the point N / f_c inside the face (the stress
+// block's inner edge, the neutral axis: the block's material crushes, the faces interpenetrating by the
+// rotation times the block's depth, and the rest of the joint opens), while the resultant crosses at the
+// block's centre, N / (2 f_c) inside. Turned about the centre, half the block would open and carry no
+// stress. So the blocks turn about the inner edges: the placement (the chain's closure too) turns each
+// hinge's blocks about its inner edge, taken to the ring at d = 0 at the same fraction of its joint, and
+// the virtual work of the mechanism on those points balances the loads, the supports' H and the blocks'
+// dissipation, N^2 / (2 f_c) per unit of relative rotation (SpreadStep::H_work; equal to the program's H,
+// as the work of the joint's stress block on a rotation about its inner edge is that dissipation). The
+// edge moves with N: each state is placed about its own edges (again until they agree to 1e-12 L), so
+// the state at d is one, whatever the increments (a finite rotation about the current edge: the crushing
+// depth at the face is the rotation times the current N / f_c, not its history). The program's thrust
+// line touches the stress blocks' offset curve, which it grazes over a stretch of the face: its contacts
+// can jump further along a face than two refined joints at once, so a contact within 0.05 L of a hinge
+// on its face is that hinge rolled, whatever the joints between, and a state whose thrust line passes
+// through its hinges and touches the face beside one as well (the moment the contact moves on) is settled
+// on its hinges. Near collapse the contact jumps along the graze to a joint where no hinge holds a line,
+// and the path ends there (thrust_leaves_arch); a hinge rolled instead to the nearest joint whose
+// three-hinge line still fits would go 0.5 % to 1.8 % further on the semicircle at 2 to 0.5 MPa
+// (benchmarks/crushing/spread_check.py), through states whose least-thrust line touches elsewhere: the
+// capacity given is the lower. A hinge stays where it formed at d = 0, held by the corner its opened
+// joint makes, until the contact moves past it: the capacity follows where it formed, so the refinement
+// halves the voussoirs next to the hinges at d = 0 as well as those at collapse, and a finer ring whose
+// hinges at d = 0 only slid along their faces (by at most 0.05 L) goes on refining from there (that is
+// the limit analysis' minimum-thrust state resolved further).
+//
 // Friction (LimitOptions::friction > 0): the program is the one without friction, and every state's
 // resultant at every joint is checked against Coulomb's cone, |shear| <= friction * normal force. The
 // state of a mechanism is its hinges' own (three fix it), and a Coulomb joint inside its cone does not
