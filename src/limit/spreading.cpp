@@ -168,7 +168,8 @@ class Path {
   }
 
   int rolls() const { return rolls_; }
-  // On walls, where the last state a wall does not carry leaves it (after the bisection: the collapse's).
+  // On walls, where the last state a wall does not carry leaves it or slides (after the bisection: the
+  // collapse's).
   const Tipping& tipping() const { return tipping_; }
 
   // New hinges that no balance holds: the loads move the blocks on at fixed springings. If the chain
@@ -253,7 +254,7 @@ class Path {
     Mechanism mech = choose_mechanism(moved_, st.hinges, vL_.twist, vR_.twist);
     if (!mech.found()) return Outcome::snap_through;
     s.sliding = sliding_joint(moved_, st, friction_);
-    s.tipping = walls_ ? walls_->tipping(at, a.H, a.V, a.M, live_factor_) : Tipping{};
+    s.tipping = walls_ ? walls_->tipping(at, a.H, a.V, a.M, live_factor_, friction_) : Tipping{};
     s.contacts = st.hinges;
     s.at = std::move(at);
     s.answer = a;
@@ -338,7 +339,7 @@ class Path {
 
   Outcome tips(const Tipping& t) {
     tipping_ = t;
-    return Outcome::wall_tips;
+    return t.slides ? Outcome::sliding : Outcome::wall_tips;
   }
   int rolls_ = 0;
   Vec snap_point_ = Vec::Constant(std::numeric_limits<double>::quiet_NaN());
@@ -479,8 +480,9 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
 
   State current;
   const Outcome first = path.start(current);
-  if (first == Outcome::sliding) return slides_at_once(std::move(r), base, current.sliding);
-  if (first == Outcome::wall_tips) return walls->tips_at_once(std::move(r), current.step, path.tipping());
+  if (first == Outcome::sliding && current.sliding >= 0) return slides_at_once(std::move(r), base, current.sliding);
+  if (first == Outcome::wall_tips || first == Outcome::sliding)  // a wall's bed gives way
+    return walls->tips_at_once(std::move(r), current.step, path.tipping());
   if (first != Outcome::admissible) {
     if (first == Outcome::snap_through) {  // admissible, but nothing moves the springings apart
       r.status = SpreadStatus::no_mechanism;
