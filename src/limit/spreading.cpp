@@ -168,8 +168,7 @@ class Path {
   }
 
   int rolls() const { return rolls_; }
-  // On walls, where the last state a wall does not carry leaves it or slides (after the bisection: the
-  // collapse's).
+  // On walls, where the last state a wall does not carry gives way (after the bisection: the collapse's).
   const Tipping& tipping() const { return tipping_; }
 
   // New hinges that no balance holds: the loads move the blocks on at fixed springings. If the chain
@@ -477,12 +476,12 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
   const double L = ring0.span;
   const double sides = walls ? walls->span_rate() : spread.left_share + spread.right_share;
   Path path(ring0, limit, spread, walls ? &*walls : nullptr);
+  r.span_rate = sides;
 
   State current;
   const Outcome first = path.start(current);
   if (first == Outcome::sliding && current.sliding >= 0) return slides_at_once(std::move(r), base, current.sliding);
-  if (first == Outcome::wall_tips || first == Outcome::sliding)  // a wall's bed gives way
-    return walls->tips_at_once(std::move(r), current.step, path.tipping());
+  if (first == Outcome::wall_tips || first == Outcome::sliding) return walls->tips_at_once(std::move(r), current.step, path.tipping());
   if (first != Outcome::admissible) {
     if (first == Outcome::snap_through) {  // admissible, but nothing moves the springings apart
       r.status = SpreadStatus::no_mechanism;

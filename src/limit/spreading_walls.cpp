@@ -168,6 +168,21 @@ SpreadResult SpreadWalls::tips_at_once(SpreadResult r, const SpreadStep& step, c
 
 namespace ogive {
 
+SpreadOptions leaning_walls(const Scene& scene, SpreadOptions spread) {
+  if (!scene.has_walls()) return spread;
+  const double L = scene.span();
+  for (const bool right : {false, true}) {
+    const std::optional<Wall>& wall = right ? scene.right_wall : scene.left_wall;
+    bool leans = false;
+    if (wall) {
+      const WallOutline o = wall_outline(*scene.curve, scene.thickness, *wall, right);
+      leans = o.top_y - o.base_y > 1e-9 * L || o.wedge_area > 1e-9 * L * L;  // well above the ring's least block
+    }
+    if (!leans) (right ? spread.right_share : spread.left_share) = 0;
+  }
+  return spread;
+}
+
 double spread_capacity_ratio(const SpreadResult& r, const SpreadOptions& spread) {
   if (!std::isfinite(r.d_max) || r.path.empty()) return std::numeric_limits<double>::quiet_NaN();
   const bool walls = std::isfinite(r.left_wall_rotation) || std::isfinite(r.right_wall_rotation);

@@ -3,7 +3,6 @@
 
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <string>
 #include <stdexcept>
 
@@ -119,15 +118,6 @@ CriterionResult spreading(const Scene& scene, const SpreadRun& o, const SpreadRe
   return judged(c, spread_capacity_ratio(sr, o.spread), need);
 }
 
-// Whether a wall has blocks to turn: some height below its springing joint, or a wedge under a sloping one.
-bool leans(const Scene& scene, bool right) {
-  const std::optional<Wall>& wall = right ? scene.right_wall : scene.left_wall;
-  if (!wall) return false;
-  const WallOutline o = wall_outline(*scene.curve, scene.thickness, *wall, right);
-  const double L = scene.span();
-  return o.top_y - o.base_y > 1e-9 * L || o.wedge_area > 1e-9 * L * L;  // well above the ring's least block
-}
-
 // The spreading path's movement for `scene`: on walls, the walls lean (each side with a wall by its
 // share; a side without one stays where it is).
 SpreadRun spread_run(const Scene& scene, const AssessmentOptions& options) {
@@ -136,8 +126,7 @@ SpreadRun spread_run(const Scene& scene, const AssessmentOptions& options) {
   // The walls' beds would crush too, which the path does not follow (spreading.hpp).
   if (std::isfinite(options.limit.compressive_strength))
     run.unassessed = "the spreading path on walls takes no finite compressive strength (the walls' beds would crush too)";
-  if (!leans(scene, false)) run.spread.left_share = 0;
-  if (!leans(scene, true)) run.spread.right_share = 0;
+  run.spread = leaning_walls(scene, options.spread);
   if (!(run.spread.left_share + run.spread.right_share > 0))
     run.unassessed = "no wall with some height under a moving springing to lean";
   return run;

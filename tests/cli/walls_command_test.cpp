@@ -95,7 +95,6 @@ TEST_CASE("cli: bad wall input gets one line and exit 2") {
   check_refused({"limit", "--curve", "segmental", "--wall-height", "0", "--wall-thickness", "3"});  // below the joint
   for (const char* command : {"profile", "check", "curve", "bench"})
     check_refused({command, "--wall-height", "5", "--wall-thickness", "2"});
-  check_refused({"draw", "--wall-height", "5", "--wall-thickness", "2", "--spread-stage", "0.5", "--output", "x.svg"});
 }
 
 TEST_CASE("cli: assess and report on walls") {

@@ -234,6 +234,9 @@ struct SpreadResult {
   double right_wall_rotation = std::numeric_limits<double>::quiet_NaN();
   double left_wall_top_displacement = std::numeric_limits<double>::quiet_NaN();
   double right_wall_top_displacement = std::numeric_limits<double>::quiet_NaN();
+  // m per unit of d: the span's rate of increase at d = 0 (left_share + right_share without walls), by
+  // which increment_ratio and stop_ratio measure the movement; NaN where there is no path.
+  double span_rate = std::numeric_limits<double>::quiet_NaN();
   int increments = 0;             // increments taken (each one or more programs, plus the bisection's)
   int rolls = 0;                  // times the hinges rolled to other joints (each one program more)
   // d = 0, about `steps` states between, and the last admissible one (SpreadOptions::whole_path false:
@@ -248,6 +251,12 @@ struct SpreadResult {
 // springings not in proportion to d) the springings' intrados points' own distance at collapse less L
 // (the path's last SpreadStep::span_increase), over L. NaN without a collapse (d_max NaN).
 double spread_capacity_ratio(const SpreadResult& r, const SpreadOptions& spread);
+
+// The movement `spread` on the walls of `scene` (unchanged without walls): each side whose wall has
+// something to turn (some height below its springing joint, or a wedge under a sloping one: at least
+// 1e-9 of L, of L^2) leans by its share, the other side stands (share 0). The shares may then both be 0
+// (no wall to lean): not a valid movement.
+SpreadOptions leaning_walls(const Scene& scene, SpreadOptions spread);
 
 // The mechanism path of `scene` (as analyse_limit takes it) under the movement of `spread`. Throws
 // std::invalid_argument for invalid options or scene, and on walls for settlement shares, a finite
