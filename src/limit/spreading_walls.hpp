@@ -1,7 +1,7 @@
 // The walls under a spreading arch (spreading.hpp), private to the limit module: the walls turn about
 // their bases' outer toes as rigid bodies, carrying the springing joints on their tops by exact rigid
 // motions; the arch's ring without the walls, on which the path is followed; and whether the walls carry
-// each state (the resultant down each wall inside every bed).
+// each state (the resultant down each wall inside every bed, and with friction inside its cone).
 #pragma once
 
 #include <limits>
