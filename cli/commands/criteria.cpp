@@ -45,7 +45,7 @@ void add_criteria_options(CLI::App& cmd, CriteriaText& t) {
       ->capture_default_str();
   cmd.add_option("--require-spread", t.spread,
                  "the least spreading capacity: the span's increase at collapse over the span, both springings "
-                 "moving outwards, > 0, or none")
+                 "moving outwards (on walls: the walls leaning about their toes), > 0, or none")
       ->capture_default_str();
   cmd.add_option("--require-thrust", t.thrust,
                  "where the scene's own line of thrust (its --section's) must stay: section (|e| <= 300 % of the "

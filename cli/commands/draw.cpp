@@ -85,31 +85,35 @@ void add_limit_drawing(const Scene& scene, double compressive_strength, DrawingO
 }
 
 // The options a spreading stage does not take: it starts from the arch at d = 0, both springings moving
-// apart, vertical loads only.
+// apart (on walls, the walls leaning), vertical loads only.
 constexpr auto kStageMoves = springing_movements("the rigid voussoirs' springings move apart from d = 0");
 constexpr Inapplicable kNotForSpreadStage[] = {
     {"--horizontal-acceleration", "the mechanism of rigid voussoirs carries vertical loads only"},
-    {"--wall-height", "the spreading mechanism stands on the ground, not on walls"},
-    {"--left-wall-height", "the spreading mechanism stands on the ground, not on walls"},
-    {"--right-wall-height", "the spreading mechanism stands on the ground, not on walls"},
 };
 
 // The arch of rigid voussoirs on spreading springings (ogive spread's mechanism with its defaults: both
-// springings moving, the weight on the axis) at `fraction` of the way from d = 0 to collapse: its
-// voussoirs, thrust line and hinges; a legend line alone where there is no path (the arch too thin).
+// springings moving, the weight on the axis; on walls, each wall leaning about its toe, a springing
+// without one standing) at `fraction` of the way from d = 0 to collapse (of the walls' rotation on
+// walls): its voussoirs, thrust line and hinges, and the leaning walls where they have turned; a legend
+// line alone where there is no path (the arch too thin).
 void add_spread_drawing(const Scene& scene, double fraction, DrawingOptions& drawing) {
   LimitOptions limit;
   limit.weight = WeightModel::axis;
-  SpreadOptions spread;
+  SpreadOptions spread = leaning_walls(scene, {});
+  // No wall with anything to turn (no height under horizontal springing joints): the path says so, as
+  // spread's row does.
+  if (!(spread.left_share + spread.right_share > 0)) spread = {};
   SpreadResult r = analyse_spreading(scene, limit, spread);
   const double L = scene.span();
-  const double sides = spread.left_share + spread.right_share;
   if (r.status == SpreadStatus::success && fraction < 1) {
-    spread.stop_ratio = fraction * sides * r.d_max / L;
+    spread.stop_ratio = fraction * r.span_rate * r.d_max / L;
     r = analyse_spreading(scene, limit, spread);
   }
-  const double increase = r.path.empty() ? 0 : sides * r.path.back().d / L;
+  // The span's own increase (on walls not in proportion to d), as spread prints it.
+  const double increase = r.path.empty() ? 0 : r.path.back().span_increase / L;
   if (std::optional<SpreadStageDrawing> stage = spread_stage_drawing(r, increase)) {
+    const double d = r.path.back().d;  // on walls each leaning wall's rotation (its share is 1)
+    add_leaning_walls(*stage, scene, spread.left_share * d, spread.right_share * d);
     drawing.spread_stages.push_back(std::move(*stage));
     return;
   }
@@ -458,7 +462,7 @@ Run add_draw_options(CLI::App& cmd) {
   cmd.add_option("--spread-stage", to.spread_stage,
                  "also draw the arch of rigid voussoirs on spreading springings (ogive spread's mechanism, its "
                  "defaults) this far from d = 0 (0) to collapse (1), where its voussoirs have moved, with its thrust "
-                 "line and hinges; in [0, 1]")
+                 "line and hinges (on walls, the walls leaning about their toes); in [0, 1]")
       ->check(finite_number());
   cmd.add_option("--output-dir", to.output_dir,
                  "an existing directory: one SVG per scene, named after the curve and the options that vary");

@@ -111,7 +111,7 @@ void add_spread_analysis_options(CLI::App& cmd, SpreadText& t) {
                                   "edge, N / f_c inside; omitted: infinite strength");
   cmd.add_option("--friction", t.friction,
                  "friction coefficient of the joints (> 0): the path ends where a joint's resultant leaves the "
-                 "friction cone (collapse sliding)")
+                 "friction cone (collapse sliding; on walls also a wall's resultant at one of its beds)")
       ->check(finite_number());
   cmd.add_flag("--path", t.path,
                "instead of the summary, the whole curve: the elastic arch at d = 0, the cracking arch, the mechanism "
@@ -126,13 +126,16 @@ struct SpreadSetup {
 };
 
 // On walls the walls' rotation moves the springings: no settlement share, and a moving side needs its
-// wall; the walls' beds would slide or crush too, which the path does not follow.
+// wall; the walls' beds would crush too, which the path does not follow.
 void check_on_walls(const CLI::App& cmd, const SpreadSetup& s) {
-  for (const char* flag : {"--left-settlement-share", "--right-settlement-share", "--friction", "--compressive-strength"})
+  for (const char* flag : {"--left-settlement-share", "--right-settlement-share"})
     if (given(cmd, flag))
       throw UsageError(fmt::format("{}: does not apply to spread on walls (the walls' rotation about their toes moves "
-                                   "the springings; their beds neither slide nor crush in the path)",
+                                   "the springings)",
                                    flag));
+  if (given(cmd, "--compressive-strength"))
+    throw UsageError("--compressive-strength: does not apply to spread on walls (the walls' beds would crush too, which "
+                     "the path does not follow)");
   const bool both = given(cmd, "--wall-height");
   if (s.left_moves && !both && !given(cmd, "--left-wall-height"))
     throw UsageError("--moving: the left springing moves, but it stands on no wall (give --left-wall-height or --moving right)");
@@ -253,13 +256,12 @@ std::string summary_row(const Columns& columns, const SceneParameters& p, const 
     no_lean();
     return row.take();
   }
-  // On walls the span grows by the walls' rotation, not in proportion to d: the springings' own distance.
-  row.add(s.walls ? last.span_increase / L : (s.spread.left_share + s.spread.right_share) * r.d_max / L);
+  row.add(spread_capacity_ratio(r, s.spread));
   row.add(to_string(r.collapse));
   row.add(last.H).add(last.V_left).add(last.H / last.V_left).add(last.crown_drop / L);
   row.add(hinge_text(first.hinges, L)).add(hinge_text(last.hinges, L));
   row.add(r.message);
-  if (r.sliding_joint >= 0) row.add(r.sliding_point.x() / L);
+  if (r.collapse == SpreadCollapse::sliding && std::isfinite(r.sliding_point.x())) row.add(r.sliding_point.x() / L);
   else row.add(std::string_view{});
   for (const double lean : {r.left_wall_rotation, r.right_wall_rotation, r.left_wall_top_displacement,
                             r.right_wall_top_displacement})

@@ -182,7 +182,7 @@ class Path {
   }
 
   int rolls() const { return rolls_; }
-  // On walls, where the last state a wall does not carry leaves it (after the bisection: the collapse's).
+  // On walls, where the last state a wall does not carry gives way (after the bisection: the collapse's).
   const Tipping& tipping() const { return tipping_; }
 
   // Whether `to` is settled on `hinges` alone, its other contacts grazing beside them (grazed_mechanism).
@@ -282,7 +282,7 @@ class Path {
     Mechanism mech = choose_mechanism(moved_, turning, vL_.twist, vR_.twist);
     if (!mech.found()) return Outcome::snap_through;
     s.sliding = sliding_joint(moved_, st, friction_);
-    s.tipping = walls_ ? walls_->tipping(at, a.H, a.V, a.M, live_factor_) : Tipping{};
+    s.tipping = walls_ ? walls_->tipping(at, a.H, a.V, a.M, live_factor_, friction_) : Tipping{};
     s.contacts = std::move(turning);
     s.resultants = st.hinges;
     s.force = st.force;
@@ -374,7 +374,7 @@ class Path {
 
   Outcome tips(const Tipping& t) {
     tipping_ = t;
-    return Outcome::wall_tips;
+    return t.slides ? Outcome::sliding : Outcome::wall_tips;
   }
   int rolls_ = 0;
   Vec snap_point_ = Vec::Constant(std::numeric_limits<double>::quiet_NaN());
@@ -472,11 +472,12 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
   const double L = ring0.span;
   const double sides = walls ? walls->span_rate() : spread.left_share + spread.right_share;
   Path path(ring0, limit, spread, walls ? &*walls : nullptr);
+  r.span_rate = sides;
 
   State current;
   const Outcome first = path.start(current);
-  if (first == Outcome::sliding) return slides_at_once(std::move(r), base, current.sliding);
-  if (first == Outcome::wall_tips) return walls->tips_at_once(std::move(r), current.step, path.tipping());
+  if (first == Outcome::sliding && current.sliding >= 0) return slides_at_once(std::move(r), base, current.sliding);
+  if (first == Outcome::wall_tips || first == Outcome::sliding) return walls->tips_at_once(std::move(r), current.step, path.tipping());
   if (first != Outcome::admissible) {
     if (first == Outcome::snap_through) {  // admissible, but nothing moves the springings apart
       r.status = SpreadStatus::no_mechanism;

@@ -130,17 +130,20 @@ bool all_open(const Ring& ring0, const std::vector<Hinge>& hinges, const Eigen::
   return true;
 }
 
+double cone_excess(const Joint& joint, const Vec& F, double friction) {
+  const double size = F.norm();
+  if (!(size > 0)) return 0;
+  const Vec d = (joint.extrados - joint.intrados).normalized();
+  const Vec n(d.y(), -d.x());
+  return (std::abs(F.dot(d)) - friction * F.dot(n)) / size;
+}
+
 int sliding_joint(const Ring& ring, const ThrustState& st, double friction) {
   if (!(friction > 0)) return -1;
   int worst = -1;
-  double most = 1e-12;
+  double most = kConeRoundOff;
   for (std::size_t j = 0; j < ring.joints.size(); ++j) {
-    const Vec& F = st.force[j];
-    const double size = F.norm();
-    if (!(size > 0)) continue;
-    const Vec d = (ring.joints[j].extrados - ring.joints[j].intrados).normalized();
-    const Vec n(d.y(), -d.x());
-    const double excess = (std::abs(F.dot(d)) - friction * F.dot(n)) / size;
+    const double excess = cone_excess(ring.joints[j], st.force[j], friction);
     if (excess > most) {
       most = excess;
       worst = static_cast<int>(j);

@@ -126,6 +126,10 @@ bool all_open(const Ring& ring0, const std::vector<Hinge>& hinges, const Eigen::
 // the joint, n its normal towards the part after it), by more than round-off of the force; -1 when every
 // joint keeps inside (or friction is 0: no sliding check).
 int sliding_joint(const Ring& ring, const ThrustState& st, double friction);
+// How far the resultant F at `joint` leans outside Coulomb's cone, (|F . d| - friction (F . n)) / |F|
+// (as sliding_joint: > kConeRoundOff outside it); 0 for no force.
+double cone_excess(const Joint& joint, const Vec& F, double friction);
+inline constexpr double kConeRoundOff = 1e-12;
 
 bool same_hinges(const std::vector<Hinge>& a, const std::vector<Hinge>& b);
 

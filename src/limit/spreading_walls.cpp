@@ -61,7 +61,7 @@ double SpreadWalls::span_rate() const {
   return right_.twist.at(arch_.joints.back().intrados).x() - left_.twist.at(arch_.joints.front().intrados).x();
 }
 
-Tipping SpreadWalls::tipping(const Placement& at, double H, double V, double M, double live_factor) {
+Tipping SpreadWalls::tipping(const Placement& at, double H, double V, double M, double live_factor, double friction) {
   const int first = system_.left_springing(), last = system_.right_springing();
   Placement whole;
   whole.left = at.left;
@@ -78,19 +78,24 @@ Tipping SpreadWalls::tipping(const Placement& at, double H, double V, double M, 
     M_base += l.moment;
   }
   const ThrustState st = thrust_state(moved_, H, V_base, M_base, live_factor);
-  const auto leaves = [&](int j) {
-    const Joint& b = moved_.joints[static_cast<std::size_t>(j)];
+  // Whether bed j gives way: tips (the resultant leaves it), else slides (it leaves the friction cone).
+  const auto gives_way = [&](int j, bool right) -> std::optional<Tipping> {
+    const std::size_t k = static_cast<std::size_t>(j);
+    const Joint& b = moved_.joints[k];
     const Vec e = b.extrados - b.intrados;
-    const double u = (st.crossing[static_cast<std::size_t>(j)] - b.intrados).dot(e) / e.squaredNorm();
+    const double u = (st.crossing[k] - b.intrados).dot(e) / e.squaredNorm();
     // The normal force, N > 0 in compression (the bed's normal towards the next part of the chain).
-    const double N = limit_detail::cross(st.force[static_cast<std::size_t>(j)], e);
-    return !(u >= -1e-9 && u <= 1 + 1e-9 && N > 0);
+    const double N = limit_detail::cross(st.force[k], e);
+    const double y = system_.joints[k].intrados.y();
+    if (!(u >= -1e-9 && u <= 1 + 1e-9 && N > 0)) return Tipping{j, right, false, y};
+    if (friction > 0 && cone_excess(b, st.force[k], friction) > kConeRoundOff) return Tipping{j, right, true, y};
+    return std::nullopt;
   };
   const int count = static_cast<int>(system_.joints.size());
   for (int j = 0; j < first; ++j)
-    if (leaves(j)) return {j, false, system_.joints[static_cast<std::size_t>(j)].intrados.y()};
+    if (const auto t = gives_way(j, false)) return *t;
   for (int j = count - 1; j > last; --j)
-    if (leaves(j)) return {j, true, system_.joints[static_cast<std::size_t>(j)].intrados.y()};
+    if (const auto t = gives_way(j, true)) return *t;
   return {};
 }
 
@@ -108,10 +113,10 @@ double SpreadWalls::top_displacement(bool right, double d) const {
 }
 
 void check_spread_on_walls(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread) {
-  if (limit.friction > 0 || std::isfinite(limit.compressive_strength))
+  if (std::isfinite(limit.compressive_strength))
     throw std::invalid_argument(
-        "friction, compressive_strength: the spreading analysis on walls takes neither (the walls' beds would slide or "
-        "crush too)");
+        "compressive_strength: the spreading analysis on walls takes no finite strength (the walls' beds would crush "
+        "too)");
   if (spread.left_settlement_share != 0 || spread.right_settlement_share != 0)
     throw std::invalid_argument(
         "left_settlement_share, right_settlement_share: on walls the springings move by the walls' rotation alone");
@@ -132,11 +137,17 @@ std::vector<Hinge> SpreadWalls::arch_hinges(std::vector<Hinge> hinges) const {
 }
 
 void SpreadWalls::at_collapse(SpreadResult& r, const Tipping& t) const {
-  if (r.collapse == SpreadCollapse::wall_tips) {
+  const bool slides = r.collapse == SpreadCollapse::sliding && r.sliding_joint < 0;
+  if (r.collapse == SpreadCollapse::wall_tips || slides) {
     r.tipping_wall = t.right ? 1 : 0;
     r.tipping_bed_y = t.y;
-    r.message = fmt::format("the {} wall tips at its bed at y = {:.6g} L: the resultant down it leaves the bed",
-                            t.right ? "right" : "left", t.y / arch_.span);
+    r.message = slides ? fmt::format("the {} wall slides at its bed at y = {:.6g} L: the resultant down it leaves the "
+                                     "bed's friction cone",
+                                     t.right ? "right" : "left", t.y / arch_.span)
+                       : fmt::format("the {} wall tips at its bed at y = {:.6g} L: the resultant down it leaves the bed",
+                                     t.right ? "right" : "left", t.y / arch_.span);
+    // The bed turns with its wall, a rigid body about the toe.
+    if (slides) r.sliding_point = (t.right ? right_ : left_).at(r.d_max)(system_.joints[static_cast<std::size_t>(t.bed)].axis);
   }
   r.left_wall_rotation = rotation(false, r.d_max);
   r.right_wall_rotation = rotation(true, r.d_max);
@@ -147,10 +158,35 @@ void SpreadWalls::at_collapse(SpreadResult& r, const Tipping& t) const {
 SpreadResult SpreadWalls::tips_at_once(SpreadResult r, const SpreadStep& step, const Tipping& t) const {
   r.path.push_back(step);
   r.status = SpreadStatus::success;
-  r.collapse = SpreadCollapse::wall_tips;
+  r.collapse = t.slides ? SpreadCollapse::sliding : SpreadCollapse::wall_tips;
   r.d_max = 0;
   at_collapse(r, t);
   return r;
 }
 
 }  // namespace ogive::spreading_detail
+
+namespace ogive {
+
+SpreadOptions leaning_walls(const Scene& scene, SpreadOptions spread) {
+  if (!scene.has_walls()) return spread;
+  const double L = scene.span();
+  for (const bool right : {false, true}) {
+    const std::optional<Wall>& wall = right ? scene.right_wall : scene.left_wall;
+    bool leans = false;
+    if (wall) {
+      const WallOutline o = wall_outline(*scene.curve, scene.thickness, *wall, right);
+      leans = o.top_y - o.base_y > 1e-9 * L || o.wedge_area > 1e-9 * L * L;  // well above the ring's least block
+    }
+    if (!leans) (right ? spread.right_share : spread.left_share) = 0;
+  }
+  return spread;
+}
+
+double spread_capacity_ratio(const SpreadResult& r, const SpreadOptions& spread) {
+  if (!std::isfinite(r.d_max) || r.path.empty()) return std::numeric_limits<double>::quiet_NaN();
+  const bool walls = std::isfinite(r.left_wall_rotation) || std::isfinite(r.right_wall_rotation);
+  return walls ? r.path.back().span_increase / r.ring.span : (spread.left_share + spread.right_share) * r.d_max / r.ring.span;
+}
+
+}  // namespace ogive

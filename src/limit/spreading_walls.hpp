@@ -1,7 +1,7 @@
 // The walls under a spreading arch (spreading.hpp), private to the limit module: the walls turn about
 // their bases' outer toes as rigid bodies, carrying the springing joints on their tops by exact rigid
 // motions; the arch's ring without the walls, on which the path is followed; and whether the walls carry
-// each state (the resultant down each wall inside every bed).
+// each state (the resultant down each wall inside every bed, and with friction inside its cone).
 #pragma once
 
 #include <limits>
@@ -14,17 +14,19 @@
 namespace ogive::spreading_detail {
 
 // Where a state's resultant leaves a wall: the ring's joint (a bed of the ring with the walls), which
-// wall, and the bed's height at d = 0 (m, y as the ring's).
+// wall, the bed's height at d = 0 (m, y as the ring's), and whether the wall slides there (with
+// friction: the resultant leaves the bed's friction cone) rather than tips (it leaves the bed).
 struct Tipping {
   int bed = -1;  // -1: the walls carry the state
   bool right = false;
+  bool slides = false;
   double y = std::numeric_limits<double>::quiet_NaN();
   bool tips() const { return bed >= 0; }
 };
 
 // The checks of analyse_spreading on walls: no settlement share, a wall under each moving springing, no
-// friction nor finite compressive strength (the walls' beds would slide or crush too, which the path
-// does not follow). Throws std::invalid_argument naming the field.
+// finite compressive strength (the walls' beds would crush too, which the path does not follow).
+// Throws std::invalid_argument naming the field.
 void check_spread_on_walls(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread);
 
 class SpreadWalls {
@@ -51,8 +53,10 @@ class SpreadWalls {
   // springings', the walls': Placement) with the arch ring's reactions (H, V, M at the left springing,
   // as LimitLp::Answer) under live_factor times its live load: the resultant of the arch's reaction,
   // the blocks' weights and the top loads above each bed (where the walls have carried them) crosses
-  // the bed between its faces in compression, to round-off (1e-9 of the bed). The lowest bed it leaves.
-  Tipping tipping(const Placement& at, double H, double V, double M, double live_factor);
+  // the bed between its faces in compression, to round-off (1e-9 of the bed), and (friction > 0) inside
+  // its friction cone, |shear| <= friction * normal (to cone_excess' round-off). The lowest bed of the
+  // left wall, then of the right one, that fails either (where a bed fails both, the wall tips).
+  Tipping tipping(const Placement& at, double H, double V, double M, double live_factor, double friction);
 
   // A wall's outward rotation (rad) at movement d and the outward horizontal displacement of its top's
   // outer corner (m); NaN for a side without a wall.
@@ -61,12 +65,13 @@ class SpreadWalls {
 
   // The system's hinges (on the ring with the walls) on the arch's ring: those in the walls left out.
   std::vector<Hinge> arch_hinges(std::vector<Hinge> hinges) const;
-  // Into r at collapse (r.d_max, r.collapse set): each wall's lean, and with collapse wall_tips (where
-  // `t` says) which wall and bed, and the message.
+  // Into r at collapse (r.d_max, r.collapse set): each wall's lean, and with collapse wall_tips, or
+  // sliding at a wall's bed (r.sliding_joint -1: no joint of the arch), which wall and bed (where `t`
+  // says), the message, and for a slide the bed's axis point at collapse (r.sliding_point).
   void at_collapse(SpreadResult& r, const Tipping& t) const;
   // The path when the least-work state at d = 0 (`step`) already leaves a wall at `t` (the walls stand
   // under another state of the arch, not the one the movement starts from): that state, and the wall
-  // tips at once.
+  // tips (or slides) at once.
   SpreadResult tips_at_once(SpreadResult r, const SpreadStep& step, const Tipping& t) const;
 
  private:

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -65,6 +66,23 @@ std::pair<const char*, const char*> criterion_words(Criterion c) {
   return {"?", ""};
 }
 
+// Beside the spreading capacity on walls: each wall's lean at the collapse of the spreading path, the
+// numbers a surveyor measures (its rotation about its base's outer toe, its top's outward displacement).
+std::string walls_lean(const Assessment& a) {
+  const SpreadResult& sr = a.spreading;
+  const Outcome o = a[Criterion::spread_capacity_ratio].outcome;
+  if ((o != Outcome::pass && o != Outcome::fail) || !(std::isfinite(sr.left_wall_rotation) || std::isfinite(sr.right_wall_rotation)))
+    return "";
+  std::string s = "<table id=\"walls-lean\">\n<tr><th>the walls' lean at the spreading collapse</th><th>rotation "
+                  "outwards</th><th>top's outward displacement</th></tr>\n";
+  for (const auto& [side, rotation, top] : {std::tuple{"left wall", sr.left_wall_rotation, sr.left_wall_top_displacement},
+                                            std::tuple{"right wall", sr.right_wall_rotation, sr.right_wall_top_displacement}})
+    if (std::isfinite(rotation)) s += row(side, cell(rotation, 1, "rad") + cell(top, 0.001, "mm"));
+  return s + fmt::format("</table>\n<p class=\"note\">The walls turn outwards about their bases' outer toes, the arch "
+                         "of rigid voussoirs following them to collapse ({}{}{}).</p>\n",
+                         to_string(sr.collapse), sr.message.empty() ? "" : ": ", escaped(sr.message));
+}
+
 std::string verdict_section(const Assessment& a, const ReportOptions& o) {
   static constexpr const char* kWord[] = {"PASS", "FAIL", "NOT ASSESSED"};
   const char* verdict = to_string(a.verdict);
@@ -87,7 +105,7 @@ std::string verdict_section(const Assessment& a, const ReportOptions& o) {
                         fmt::format("<td class=\"{0}\">{0}{1}{2}</td>", to_string(r.outcome), r.reason.empty() ? "" : ": ",
                                     escaped(r.reason)));
   }
-  s += "</table>\n";
+  s += "</table>\n" + walls_lean(a);
   if (!a.warnings.empty() || !o.warnings.empty()) {
     s += "<ul id=\"warnings\">\n";
     for (const auto* list : {&a.warnings, &o.warnings})
@@ -134,8 +152,10 @@ std::string assumptions_section(const Scene& scene, const ReportOptions& o) {
        "unlimited compressive strength, no sliding.</li>\n";
   s += "<li>The fill is a dead load on the extrados, with neither stiffness nor passive resistance; point and live "
        "loads act on the arch where given, not spread by the fill.</li>\n";
-  s += "<li>Left out: the walls or piers under the springings (taken as rigid unless moved), crushing and sliding "
-       "of the masonry, the vault's three-dimensional action.</li>\n";
+  s += scene.has_walls() ? "<li>Left out: crushing and sliding of the masonry (of the walls too), the vault's "
+                           "three-dimensional action.</li>\n"
+                         : "<li>Left out: the walls or piers under the springings (taken as rigid unless moved), "
+                           "crushing and sliding of the masonry, the vault's three-dimensional action.</li>\n";
   s += fmt::format("<li>ogive {}{}{}.</li>\n", kVersion, o.date.empty() ? "" : ", ", escaped(o.date));
   return s + "</ul></section>\n";
 }

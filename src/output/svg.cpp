@@ -184,11 +184,9 @@ void draw_walls(std::string& body, const Scene& scene, const Frame& frame, Box& 
   for (bool right : {false, true}) {
     const std::optional<Wall>& wall = right ? scene.right_wall : scene.left_wall;
     if (!wall) continue;
-    const WallOutline o = wall_outline(*scene.curve, scene.thickness, *wall, right);
-    const Eigen::Vector2d I = o.joint.intrados, E = o.joint.extrados;
-    const std::vector<PlanePoint> outline = {
-        frame.at(o.inner_x, o.base_y), frame.at(o.outer_x, o.base_y), frame.at(o.outer_x, std::max(o.top_y, E.y())),
-        frame.at(E.x(), E.y()),        frame.at(I.x(), I.y()),        frame.at(o.inner_x, o.top_y)};
+    std::vector<PlanePoint> outline;
+    for (const PlanePoint& c : wall_corners(wall_outline(*scene.curve, scene.thickness, *wall, right)))
+      outline.push_back(frame.at(c.x, c.y));
     for (PlanePoint q : outline) drawn.add(q);
     path(body, right ? "wall-right" : "wall-left", {outline},
          fmt::format("fill=\"#e8e2d6\" stroke=\"black\" stroke-width=\"{}\"", frame.stroke).c_str());

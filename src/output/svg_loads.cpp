@@ -8,6 +8,7 @@
 #include <tuple>
 #include <vector>
 
+#include <Eigen/Geometry>
 #include <fmt/format.h>
 
 #include "ogive/core/wall_resultant.hpp"
@@ -282,6 +283,13 @@ void draw_spread_stage(std::string& body, const SpreadStageDrawing& stage, const
   if (!line.empty())
     path(body, "spread-stage-thrust-line", {line},
          fmt::format("fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"", stage.colour, 2 * frame.stroke).c_str());
+  for (std::size_t k = 0; k < stage.walls.size(); ++k) {
+    std::vector<PlanePoint> wall;
+    for (const PlanePoint& c : stage.walls[k]) drawn.add(wall.emplace_back(frame.at(c.x, c.y)));
+    body += fmt::format("<path id=\"spread-stage-wall-{0}\" fill=\"{1}\" fill-opacity=\"0.15\" stroke=\"{1}\" "
+                        "stroke-width=\"{2}\" d=\"{3} Z\"/>\n",
+                        stage.right_walls[k] ? "right" : "left", stage.colour, frame.stroke, path_data({wall}));
+  }
   hinge_circles(body, "spread-stage-hinges", stage.hinges, frame, 0.45 * frame.font,
                 fmt::format("fill=\"white\" stroke=\"{}\" stroke-width=\"{}\"", stage.colour, 1.5 * frame.stroke));
 }
@@ -305,6 +313,29 @@ std::optional<SpreadStageDrawing> spread_stage_drawing(const SpreadResult& r, do
                             span_increase_ratio, r.stopped ? "" : " (collapse)", last.H / last.V_left,
                             last.crown_drop / r.ring.span, last.hinges.size());
   return stage;
+}
+
+std::vector<PlanePoint> wall_corners(const WallOutline& o) {
+  const Eigen::Vector2d I = o.joint.intrados, E = o.joint.extrados;
+  return {{o.inner_x, o.base_y}, {o.outer_x, o.base_y}, {o.outer_x, std::max(o.top_y, E.y())},
+          {E.x(), E.y()},        {I.x(), I.y()},        {o.inner_x, o.top_y}};
+}
+
+void add_leaning_walls(SpreadStageDrawing& stage, const Scene& scene, double left_rotation, double right_rotation) {
+  for (const auto& [right, theta] : {std::pair{false, left_rotation}, std::pair{true, right_rotation}}) {
+    const std::optional<Wall>& wall = right ? scene.right_wall : scene.left_wall;
+    if (!wall || !(theta != 0)) continue;
+    const WallOutline o = wall_outline(*scene.curve, scene.thickness, *wall, right);
+    // Outwards: the left wall counter-clockwise, the right one clockwise, about the outer toe.
+    const Eigen::Rotation2Dd turn(right ? -theta : theta);
+    const Eigen::Vector2d toe(o.outer_x, o.base_y);
+    std::vector<PlanePoint>& turned = stage.walls.emplace_back();
+    for (const PlanePoint& c : wall_corners(o)) {
+      const Eigen::Vector2d p = toe + turn * (Eigen::Vector2d(c.x, c.y) - toe);
+      turned.push_back({p.x(), p.y()});
+    }
+    stage.right_walls.push_back(right);
+  }
 }
 
 std::vector<ExtraThrustLine> limit_thrust_lines(const LimitResult& r) {

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -96,8 +97,13 @@ CriterionResult acceleration(const LimitResult& lr, double need) {
   return judged(c, lr.horizontal_load_factor(), need);
 }
 
-CriterionResult spreading(const Scene& scene, const SpreadOptions& o,
-                          const SpreadResult& sr, double need) {
+// The spreading path's options: the movement, and why there is no path where there can be none.
+struct SpreadRun {
+  SpreadOptions spread;
+  std::string unassessed;  // empty: the path runs
+};
+
+CriterionResult spreading(const Scene& scene, const SpreadRun& o, const SpreadResult& sr, double need) {
   const Criterion c = Criterion::spread_capacity_ratio;
   if (!required(need)) return not_required(c);
   if (scene.horizontal_acceleration != 0) {
@@ -105,15 +111,25 @@ CriterionResult spreading(const Scene& scene, const SpreadOptions& o,
     r.reason = "the spreading mechanism carries vertical loads only: no horizontal acceleration";
     return r;
   }
-  if (scene.has_walls()) {
-    CriterionResult r = result(c, Outcome::not_assessed, need);
-    r.reason = "the spreading path does not take walls (the springings' movement would come from the walls' lean)";
-    return r;
-  }
+  if (!o.unassessed.empty()) return unassessed(c, need, o.unassessed);
   if (sr.status == SpreadStatus::inadmissible) return judged(c, 0, need);  // t < t_min: no path at all
   if (sr.status != SpreadStatus::success)
     return unassessed(c, need, fmt::format("spreading {}: {}", to_string(sr.status), sr.message));
-  return judged(c, (o.left_share + o.right_share) * sr.d_max / scene.span(), need);
+  return judged(c, spread_capacity_ratio(sr, o.spread), need);
+}
+
+// The spreading path's movement for `scene`: on walls, the walls lean (each side with a wall by its
+// share; a side without one stays where it is).
+SpreadRun spread_run(const Scene& scene, const AssessmentOptions& options) {
+  SpreadRun run{options.spread, {}};
+  if (!scene.has_walls()) return run;
+  // The walls' beds would crush too, which the path does not follow (spreading.hpp).
+  if (std::isfinite(options.limit.compressive_strength))
+    run.unassessed = "the spreading path on walls takes no finite compressive strength (the walls' beds would crush too)";
+  run.spread = leaning_walls(scene, options.spread);
+  if (!(run.spread.left_share + run.spread.right_share > 0))
+    run.unassessed = "no wall with some height under a moving springing to lean";
+  return run;
 }
 
 CriterionResult thrust_line(const Solution& sol, const ThrustLineSummary& line, ThrustRequirement req) {
@@ -252,13 +268,14 @@ Assessment assess(const Scene& scene, const AssessmentOptions& options) {
   LimitOptions limit = options.limit;
   limit.horizontal_load_factor = required(need.horizontal_load_factor);
   a.limit = analyse_limit(scene, limit);
-  if (required(need.spread_capacity_ratio) && scene.horizontal_acceleration == 0 && !scene.has_walls())
-    a.spreading = analyse_spreading(scene, options.limit, options.spread);
+  const SpreadRun spread = spread_run(scene, options);
+  if (required(need.spread_capacity_ratio) && scene.horizontal_acceleration == 0 && spread.unassessed.empty())
+    a.spreading = analyse_spreading(scene, options.limit, spread.spread);
 
   a.criteria = {geometric_factor(scene, a.limit, need.geometric_safety_factor),
                 load_factor(a.limit, need.load_factor),
                 acceleration(a.limit, need.horizontal_load_factor),
-                spreading(scene, options.spread, a.spreading, need.spread_capacity_ratio),
+                spreading(scene, spread, a.spreading, need.spread_capacity_ratio),
                 thrust_line(a.solution, line, need.thrust)};
   decide(a);
   add_warnings(a, scene, line);

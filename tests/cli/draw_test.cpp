@@ -316,6 +316,63 @@ TEST_CASE("draw --limit: under a horizontal acceleration the collapse line of a_
   CHECK(read_text(dir / "still.svg").find("thrust-line-horizontal") == std::string::npos);
 }
 
+TEST_CASE("draw --spread-stage on walls: the arch on its walls, each turned about its toe as spread turns it") {
+  TempDir dir("ogive_test_draw_spread_stage_walls");
+  const std::vector<std::string> walls = {"--wall-height", "10", "--wall-thickness", "3"};
+  std::vector<std::string> spread = {"spread", "--columns",
+                                     "status,spread_capacity_ratio,left_wall_rotation_collapse,right_wall_rotation_collapse"};
+  spread.insert(spread.end(), walls.begin(), walls.end());
+  const Run collapse = run_command(spread);
+  REQUIRE(collapse.status == 0);
+  REQUIRE(column(collapse.out, "status") == "success");
+  const double capacity = std::stod(column(collapse.out, "spread_capacity_ratio"));
+  const std::string file = dir / "stage.svg";
+  std::vector<std::string> draw = {"draw", "--spread-stage", "1", "--output", file};
+  draw.insert(draw.end(), walls.begin(), walls.end());
+  REQUIRE(run_command(draw).status == 0);
+  CHECK(xmllint_accepts(file));
+  const std::string svg = read_text(file);
+  const double L = 10, t = 0.8;  // the default span and thickness
+  const auto ring = svg_path_points(svg, "spread-stage");
+  REQUIRE(ring.size() == 1);
+  const auto& left_springing = ring[0].front();
+  const auto& right_springing = ring[0][ring[0].size() / 2 - 1];
+  // The springings' intrados corners, L - t apart at d = 0, as far apart as spread's capacity says.
+  CHECK(std::abs((right_springing.first - left_springing.first - (L - t)) / L - capacity) <= 1e-9);
+  for (const bool right : {false, true}) {
+    CAPTURE(right);
+    const char* side = right ? "right" : "left";
+    const auto plumb = svg_path_points(svg, std::string("wall-") + side);
+    const auto turned = svg_path_points(svg, std::string("spread-stage-wall-") + side);
+    REQUIRE(plumb.size() == 1);
+    REQUIRE(turned.size() == 1);
+    REQUIRE(turned[0].size() == plumb[0].size());
+    // The toe (the base's outer corner, second) stays; every corner keeps its distance from it.
+    const auto& toe = plumb[0][1];
+    CHECK(std::abs(turned[0][1].first - toe.first) <= 1e-9 * L);
+    CHECK(std::abs(turned[0][1].second - toe.second) <= 1e-9 * L);
+    const auto from_toe = [&](const std::pair<double, double>& p) { return std::hypot(p.first - toe.first, p.second - toe.second); };
+    for (std::size_t k = 0; k < plumb[0].size(); ++k) CHECK(std::abs(from_toe(turned[0][k]) - from_toe(plumb[0][k])) <= 1e-9 * L);
+    // The base turned outwards by spread's rotation at collapse.
+    const double theta = std::stod(column(collapse.out, std::string(side) + "_wall_rotation_collapse"));
+    const auto& inner = turned[0][0];
+    const double angle = std::atan2(inner.second - toe.second, std::abs(inner.first - toe.first));
+    CHECK(std::abs(angle - theta) <= 1e-9);
+    // The arch stands on it: the springing joint's intrados point on the wall's top (fifth corner) is
+    // the ring's springing corner.
+    const auto& springing = right ? right_springing : left_springing;
+    CHECK(std::abs(turned[0][4].first - springing.first) <= 1e-9 * L);
+    CHECK(std::abs(turned[0][4].second - springing.second) <= 1e-9 * L);
+  }
+  // A wall on one side only: that wall leans, the other springing stays on the ground.
+  std::vector<std::string> one = {"draw", "--spread-stage", "0.5", "--left-wall-height", "10", "--left-wall-thickness",
+                                  "3", "--output", "-"};
+  const Run lopsided = run_command(one);
+  REQUIRE(lopsided.status == 0);
+  CHECK(lopsided.out.find("id=\"spread-stage-wall-left\"") != std::string::npos);
+  CHECK(lopsided.out.find("id=\"spread-stage-wall-right\"") == std::string::npos);
+}
+
 TEST_CASE("draw --spread-stage: the spread mechanism's ring where it has moved, its thrust line and hinges") {
   TempDir dir("ogive_test_draw_spread_stage");
   // The semicircle, t/L = 0.1: ogive spread's capacity and hinges at collapse are the stage's at 1.

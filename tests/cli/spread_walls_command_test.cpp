@@ -63,7 +63,7 @@ TEST_CASE("cli: spread on walls refuses what has no meaning there, one line and 
   const std::vector<std::string> walls = {"spread", "--wall-height", "10", "--wall-thickness", "2.5"};
   for (const std::vector<std::string> extra :
        {std::vector<std::string>{"--left-settlement-share", "0.5"}, {"--right-settlement-share", "-1"},
-        {"--friction", "0.6"}, {"--compressive-strength", "10MPa"}}) {
+        {"--compressive-strength", "10MPa"}}) {
     std::vector<std::string> args = walls;
     args.insert(args.end(), extra.begin(), extra.end());
     check_refused(args);
@@ -78,3 +78,31 @@ TEST_CASE("cli: spread on walls refuses what has no meaning there, one line and 
   check_refused({"spread", "--left-wall-height", "10", "--left-wall-thickness", "2.5"});
   check_refused({"spread", "--left-wall-height", "10", "--left-wall-thickness", "2.5", "--moving", "right"});
 }
+
+TEST_CASE("cli: spread on walls with friction: the walls' beds slide as well as tip") {
+  // The segmental arch's sloping springing joint puts a wedge of wall over the highest bed, whose
+  // horizontal face carries the thrust as shear: with friction 0.6 the walls slide there first.
+  const std::vector<std::string> scene = {"spread", "--curve", "segmental", "--thickness-ratio", "0.1", "--wall-height",
+                                          "5", "--wall-thickness", "3"};
+  auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = scene;
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_command(args);
+  };
+  const std::string columns = "status,collapse,spread_capacity_ratio,sliding_joint,left_wall_rotation_collapse,message";
+  const Run sliding = with({"--friction", "0.6", "--columns", columns});
+  const Run frictionless = with({"--columns", columns});
+  REQUIRE(sliding.status == 0);
+  REQUIRE(frictionless.status == 0);
+  CHECK(column(sliding.out, "collapse") == "sliding");
+  CHECK(column(sliding.out, "message").find("the left wall slides at its bed") == 0);
+  CHECK(std::stod(column(sliding.out, "sliding_joint")) < 0);  // the left wall's bed, outside the span
+  CHECK(column(frictionless.out, "collapse") == "wall_tips");
+  CHECK(std::stod(column(sliding.out, "spread_capacity_ratio")) < std::stod(column(frictionless.out, "spread_capacity_ratio")));
+  // A friction never reached: the frictionless path's rows, to the byte (but the friction column).
+  const Run generous = with({"--friction", "5", "--path", "--steps", "5", "--columns", "part,spread_ratio,wall_rotation,H_over_V,hinges,collapse"});
+  const Run plain = with({"--path", "--steps", "5", "--columns", "part,spread_ratio,wall_rotation,H_over_V,hinges,collapse"});
+  REQUIRE(generous.status == 0);
+  CHECK(generous.out == plain.out);
+}
+

@@ -95,7 +95,6 @@ TEST_CASE("cli: bad wall input gets one line and exit 2") {
   check_refused({"limit", "--curve", "segmental", "--wall-height", "0", "--wall-thickness", "3"});  // below the joint
   for (const char* command : {"profile", "check", "curve", "bench"})
     check_refused({command, "--wall-height", "5", "--wall-thickness", "2"});
-  check_refused({"draw", "--wall-height", "5", "--wall-thickness", "2", "--spread-stage", "0.5", "--output", "x.svg"});
 }
 
 TEST_CASE("cli: assess and report on walls") {
@@ -106,16 +105,45 @@ TEST_CASE("cli: assess and report on walls") {
   CHECK(column(thin.out, "verdict") == "fail");
   CHECK(column(thin.out, "geometric_safety_factor") == "0");
   CHECK(column(thin.out, "message").find("thinner than b_min") != std::string::npos);
-  // Walls that stand: the arch's t / t_min on them, as limit gives it; the spreading path takes no walls.
+  // Walls that stand: the arch's t / t_min on them, as limit gives it; the spreading capacity is the
+  // walls' lean to collapse, spread's span increase (not d times the shares: the walls turn).
   const Run thick = run_command({"assess", "--curve", "semicircular", "--thickness-ratio", "0.1", "--wall-height", "10",
                                  "--wall-thickness", "2", "--require-spread", "0.01", "--columns",
-                                 "geometric_safety_factor,thickness_min_ratio,spread_capacity_ratio_outcome,message"});
+                                 "geometric_safety_factor,thickness_min_ratio,spread_capacity_ratio,"
+                                 "spread_capacity_ratio_outcome,message"});
   CHECK(thick.status == 0);  // a verdict: t / t_min = 1.86 fails the default 2, whatever the spreading
   const Run lim = run_command({"limit", "--curve", "semicircular", "--thickness-ratio", "0.1", "--wall-height", "10",
                                "--wall-thickness", "2", "--columns", "thickness_min_ratio"});
   CHECK(column(thick.out, "thickness_min_ratio") == column(lim.out, "thickness_min_ratio"));
-  CHECK(column(thick.out, "spread_capacity_ratio_outcome") == "not_assessed");
-  CHECK(column(thick.out, "message").find("does not take walls") != std::string::npos);
+  const Run spread = run_command({"spread", "--curve", "semicircular", "--thickness-ratio", "0.1", "--weight", "voussoir",
+                                  "--wall-height", "10", "--wall-thickness", "2", "--columns",
+                                  "spread_capacity_ratio,left_wall_rotation_collapse,left_wall_top_displacement_collapse"});
+  REQUIRE(spread.status == 0);
+  CHECK(column(thick.out, "spread_capacity_ratio") == column(spread.out, "spread_capacity_ratio"));
+  CHECK(column(thick.out, "spread_capacity_ratio_outcome") == "pass");  // 0.033 >= 0.01
+  CHECK(column(thick.out, "message").find("spread") == std::string::npos);
+  // Asked for more than the walls give: the spreading criterion fails, with its margin.
+  const Run more = run_command({"assess", "--curve", "semicircular", "--thickness-ratio", "0.1", "--wall-height", "10",
+                                "--wall-thickness", "2", "--require-geometric-factor", "1.5", "--require-spread", "0.05",
+                                "--columns", "verdict,governing,margin"});
+  CHECK(column(more.out, "verdict") == "fail");
+  CHECK(column(more.out, "governing") == "spread_capacity_ratio");
+  CHECK(close(std::stod(column(more.out, "margin")), std::stod(column(spread.out, "spread_capacity_ratio")) / 0.05, kExact));
+  // A wall on one side only: that wall leans, the other springing stands on the ground.
+  const Run one = run_command({"assess", "--curve", "semicircular", "--thickness-ratio", "0.1", "--left-wall-height",
+                               "10", "--left-wall-thickness", "2.5", "--require-spread", "0.01", "--columns",
+                               "spread_capacity_ratio,spread_capacity_ratio_outcome"});
+  const Run one_spread = run_command({"spread", "--curve", "semicircular", "--thickness-ratio", "0.1", "--weight",
+                                      "voussoir", "--left-wall-height", "10", "--left-wall-thickness", "2.5", "--moving",
+                                      "left", "--columns", "spread_capacity_ratio"});
+  CHECK(column(one.out, "spread_capacity_ratio_outcome") == "pass");
+  CHECK(column(one.out, "spread_capacity_ratio") == column(one_spread.out, "spread_capacity_ratio"));
+  // With a finite compressive strength the path takes no walls: not assessed, and says why.
+  const Run crushing = run_command({"assess", "--curve", "semicircular", "--thickness-ratio", "0.1", "--wall-height",
+                                    "10", "--wall-thickness", "2", "--require-spread", "0.01", "--compressive-strength",
+                                    "20MPa", "--columns", "spread_capacity_ratio_outcome,message"});
+  CHECK(column(crushing.out, "spread_capacity_ratio_outcome") == "not_assessed");
+  CHECK(column(crushing.out, "message").find("no finite compressive strength") != std::string::npos);
   // The report draws the walls, the elastic resultant down them, and gives b_min beside each wall.
   const Run page = run_command({"report", "--curve", "semicircular", "--thickness-ratio", "0.1", "--wall-height", "10",
                                 "--wall-thickness", "2", "--output", "-"});
@@ -123,6 +151,17 @@ TEST_CASE("cli: assess and report on walls") {
   for (const char* part : {"id=\"wall-left\"", "id=\"wall-right\"", "wall-resultant-left", "wall-resultant-right",
                            "least wall thickness b<sub>min</sub>"})
     CHECK(page.out.find(part) != std::string::npos);
+  // Where the report gives the spreading capacity on walls, it gives the walls' lean at collapse too.
+  CHECK(page.out.find("id=\"walls-lean\"") == std::string::npos);  // not required: no capacity, no lean
+  const Run spreading = run_command({"report", "--curve", "semicircular", "--thickness-ratio", "0.1", "--wall-height",
+                                     "10", "--wall-thickness", "2", "--require-spread", "0.01", "--output", "-"});
+  REQUIRE(spreading.status == 0);
+  const std::size_t lean = spreading.out.find("id=\"walls-lean\"");
+  REQUIRE(lean != std::string::npos);
+  const std::string rotation = column(spread.out, "left_wall_rotation_collapse");
+  const std::string top = column(spread.out, "left_wall_top_displacement_collapse");
+  CHECK(spreading.out.find("data-value=\"" + rotation + "\"", lean) != std::string::npos);
+  CHECK(spreading.out.find("data-value=\"" + top + "\"", lean) != std::string::npos);
 }
 
 TEST_CASE("cli: a wall's refusal names the option the value came by") {

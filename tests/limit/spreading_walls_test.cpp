@@ -11,6 +11,7 @@
 
 #include <Eigen/Geometry>
 
+#include "ogive/geometry/curve_families.hpp"
 #include "ogive/limit/limit.hpp"
 #include "ogive/limit/spreading.hpp"
 #include "support/scenes.hpp"
@@ -214,9 +215,9 @@ TEST_CASE("spreading walls: walls thinner than b_min leave no path, and misuse t
   SpreadOptions settling;
   settling.left_settlement_share = 0.5;
   CHECK_THROWS_AS(analyse_spreading(scene, {}, settling), std::invalid_argument);
-  LimitOptions friction;
-  friction.friction = 0.6;
-  CHECK_THROWS_AS(analyse_spreading(scene, friction, {}), std::invalid_argument);
+  LimitOptions crushing;
+  crushing.compressive_strength = 10e6;  // the walls' beds would crush too: not taken
+  CHECK_THROWS_AS(analyse_spreading(scene, crushing, {}), std::invalid_argument);
   Scene one = scene;
   one.left_wall.reset();
   CHECK_THROWS_AS(analyse_spreading(one, {}, {}), std::invalid_argument);  // the left springing has no wall to turn
@@ -224,3 +225,83 @@ TEST_CASE("spreading walls: walls thinner than b_min leave no path, and misuse t
   right_only.left_share = 0;
   CHECK(analyse_spreading(one, {}, right_only).status == SpreadStatus::success);
 }
+
+namespace {
+
+// The segmental arch (rise L/4) of span 10 m at t/L = 0.1 on walls h_w = L/2, b_w = 0.3 L: its springing
+// joint is radial, sloping, so each wall's highest bed lies under a wedge and carries the arch's thrust
+// H as shear on its horizontal face, with the arch's V and the wedge's weight as normal force.
+Scene segmental_on_walls() {
+  Scene s;
+  s.curve = make_segmental(10.0, 0.25);
+  s.thickness = 1.0;
+  s.left_wall = s.right_wall = Wall{5.0, 3.0, s.material.density, 0.0, 0.5};
+  return s;
+}
+
+LimitOptions with_friction(double mu) {
+  LimitOptions o;
+  o.friction = mu;
+  return o;
+}
+
+}  // namespace
+
+TEST_CASE("spreading walls: with friction a wall slides at its highest bed, where H / N reaches the friction") {
+  const Scene scene = segmental_on_walls();
+  const double mu = 0.6;
+  const SpreadResult r = analyse_spreading(scene, with_friction(mu), {});
+  const SpreadResult frictionless = analyse_spreading(scene, {}, {});
+  REQUIRE(r.status == SpreadStatus::success);
+  REQUIRE(frictionless.status == SpreadStatus::success);
+  CHECK(r.collapse == SpreadCollapse::sliding);
+  CHECK(r.sliding_joint == -1);  // no joint of the arch: a wall's bed
+  CHECK(r.tipping_wall == 0);    // the symmetric system: the left wall, checked first
+  CHECK(r.message.find("the left wall slides at its bed") == 0);
+  // The frictionless walls tip later: the slip comes first.
+  CHECK(frictionless.collapse == SpreadCollapse::wall_tips);
+  CHECK(r.d_max < frictionless.d_max);
+  // The bed is the wall's highest, at the lower end of the springing joint, and it turned with the wall
+  // about the toe: its axis point where the wall's rigid rotation by theta puts it.
+  const WallOutline o = wall_outline(*scene.curve, scene.thickness, *scene.left_wall, false);
+  CHECK(close(r.tipping_bed_y, o.top_y, kSamePoint));
+  const Eigen::Vector2d toe(o.outer_x, o.base_y), bed(0.5 * (o.inner_x + o.outer_x), o.top_y);
+  const Eigen::Vector2d moved = turned(bed, toe, r.left_wall_rotation);
+  const double L = scene.span();
+  CHECK(std::abs(r.sliding_point.x() - moved.x()) <= kSamePoint * L);
+  CHECK(std::abs(r.sliding_point.y() - moved.y()) <= kSamePoint * L);
+  // By hand, at collapse: on the turned horizontal bed the resultant's shear and normal force are the
+  // arch's reaction (H, V_left) with the wedge's weight, resolved along the bed turned by theta. The
+  // last state inside the cone has |shear| / normal at the friction, to the collapse's location.
+  const SpreadStep& last = r.path.back();
+  const double theta = r.left_wall_rotation;
+  const double wedge = scene.left_wall->density * scene.material.gravity * o.wedge_area;
+  const Eigen::Vector2d F(-last.H, -(last.V_left + wedge));  // on the wall below the bed, from above
+  const Eigen::Vector2d along(std::cos(theta), std::sin(theta)), normal(-std::sin(theta), std::cos(theta));
+  const double ratio = std::abs(F.dot(along)) / -F.dot(normal);
+  CHECK(ratio <= mu * (1 + kExact));
+  CHECK(ratio >= mu * (1 - kLocatedCollapse));
+}
+
+TEST_CASE("spreading walls: a friction the walls and the arch never use gives the frictionless path, to the byte") {
+  for (const Scene& scene : {segmental_on_walls(), on_walls(0.1, 1.0, 0.25)}) {
+    SpreadOptions o;
+    o.steps = 20;
+    const SpreadResult a = analyse_spreading(scene, {}, o);
+    const SpreadResult b = analyse_spreading(scene, with_friction(5.0), o);
+    REQUIRE(a.status == SpreadStatus::success);
+    REQUIRE(b.status == SpreadStatus::success);
+    CHECK(b.collapse == a.collapse);
+    CHECK(b.d_max == a.d_max);
+    CHECK(b.left_wall_rotation == a.left_wall_rotation);
+    CHECK(b.left_wall_top_displacement == a.left_wall_top_displacement);
+    CHECK(b.message == a.message);
+    REQUIRE(b.path.size() == a.path.size());
+    for (std::size_t k = 0; k < a.path.size(); ++k) {
+      CHECK(b.path[k].d == a.path[k].d);
+      CHECK(b.path[k].H == a.path[k].H);
+      CHECK(b.path[k].span_increase == a.path[k].span_increase);
+    }
+  }
+}
+

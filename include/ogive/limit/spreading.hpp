@@ -124,8 +124,12 @@
 // arch's thrust line to keep a wall's resultant inside, a state the arch's hinges do not make. At d = 0
 // the walls must stand (walls thinner than b_min: inadmissible, as analyse_limit says); for two walls
 // leaning alike under a symmetric arch the least-work state there is the system's minimum-thrust one
-// (the least H through the crown's highest point makes the least moment about each toe). Neither
-// friction nor a finite compressive strength is taken on walls (the beds would slide or crush too).
+// (the least H through the crown's highest point makes the least moment about each toe). With friction
+// the walls' beds are checked as the arch's joints are: the resultant down a wall must keep inside each
+// bed's cone, |shear| <= friction * normal force; the first state where it leaves one ends the path,
+// collapse sliding (sliding_joint -1: no joint of the arch; tipping_wall and tipping_bed_y say which wall
+// and bed, sliding_point where the bed's axis point is then). The path up to it is the frictionless
+// one, to the byte. A finite compressive strength is not taken on walls (the beds would crush too).
 // The span's increase (SpreadStep::span_increase) is the springings' intrados points' horizontal
 // distance less L; increment_ratio, stop_ratio and the bisection of the collapse (kSpreadTolerance)
 // measure it by its rate at d = 0.
@@ -137,7 +141,7 @@
 //                  line, or fewer than three remain that open, or their rotations would close one; or a
 //                  new hinge snaps (above; SpreadResult::message says where);
 //   sliding      - (with friction) a joint's resultant leaves the friction cone
-//                  (SpreadResult::sliding_joint);
+//                  (SpreadResult::sliding_joint), or on walls a wall's resultant leaves a bed's;
 //   wall_tips    - (on walls) the resultant down a wall leaves one of its beds: the wall tips about that
 //                  bed's edge (SpreadResult::tipping_wall, tipping_bed_y).
 //
@@ -243,12 +247,13 @@ struct SpreadResult {
   SpreadCollapse collapse = SpreadCollapse::thrust_leaves_arch;
   double d_max = std::numeric_limits<double>::quiet_NaN();  // m (rad on walls), the movement parameter at collapse
   bool stopped = false;  // the path stopped at SpreadOptions::stop_ratio before collapse (d_max is NaN)
-  // collapse == sliding: the joint of `ring` that slides, and where its axis point is at collapse (m);
-  // -1 and NaN otherwise.
+  // collapse == sliding: the joint of `ring` that slides (-1 for a wall's bed), and where its axis point
+  // (or the bed's) is at collapse (m); -1 and NaN otherwise.
   int sliding_joint = -1;
   Eigen::Vector2d sliding_point = Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
-  // collapse == wall_tips: the wall (0 left, 1 right) whose resultant leaves a bed, and the bed's height
-  // (m, y as the ring's at d = 0; the base at the springing's axis height less h_w); -1 and NaN otherwise.
+  // collapse == wall_tips (or sliding at a wall's bed): the wall (0 left, 1 right) whose resultant leaves
+  // a bed (or its friction cone), and the bed's height (m, y as the ring's at d = 0; the base at the
+  // springing's axis height less h_w); -1 and NaN otherwise.
   int tipping_wall = -1;
   double tipping_bed_y = std::numeric_limits<double>::quiet_NaN();
   // On walls, each wall's lean at collapse (at d_max): its rotation outwards (rad; the left wall's
@@ -258,6 +263,9 @@ struct SpreadResult {
   double right_wall_rotation = std::numeric_limits<double>::quiet_NaN();
   double left_wall_top_displacement = std::numeric_limits<double>::quiet_NaN();
   double right_wall_top_displacement = std::numeric_limits<double>::quiet_NaN();
+  // m per unit of d: the span's rate of increase at d = 0 (left_share + right_share without walls), by
+  // which increment_ratio and stop_ratio measure the movement; NaN where there is no path.
+  double span_rate = std::numeric_limits<double>::quiet_NaN();
   int increments = 0;             // increments taken (each one or more programs, plus the bisection's)
   int rolls = 0;                  // times the hinges rolled to other joints (each one program more)
   // d = 0, about `steps` states between, and the last admissible one (SpreadOptions::whole_path false:
@@ -267,9 +275,21 @@ struct SpreadResult {
   SpreadShape shape;              // path.back()'s voussoirs and thrust line (a success's)
 };
 
+// The spreading capacity of a path that collapsed (`r` of analyse_spreading under `spread`): the span's
+// increase at collapse over L, (left_share + right_share) d_max / L; on walls (whose rotation moves the
+// springings not in proportion to d) the springings' intrados points' own distance at collapse less L
+// (the path's last SpreadStep::span_increase), over L. NaN without a collapse (d_max NaN).
+double spread_capacity_ratio(const SpreadResult& r, const SpreadOptions& spread);
+
+// The movement `spread` on the walls of `scene` (unchanged without walls): each side whose wall has
+// something to turn (some height below its springing joint, or a wedge under a sloping one: at least
+// 1e-9 of L, of L^2) leans by its share, the other side stands (share 0). The shares may then both be 0
+// (no wall to lean): not a valid movement.
+SpreadOptions leaning_walls(const Scene& scene, SpreadOptions spread);
+
 // The mechanism path of `scene` (as analyse_limit takes it) under the movement of `spread`. Throws
-// std::invalid_argument for invalid options or scene, and on walls for settlement shares, friction, a
-// finite compressive strength, or a moving springing without a wall of some height.
+// std::invalid_argument for invalid options or scene, and on walls for settlement shares, a finite
+// compressive strength, or a moving springing without a wall of some height.
 SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread);
 
 }  // namespace ogive

@@ -5,7 +5,8 @@
 //   #verdict    PASS, FAIL or NOT ASSESSED, the governing criterion with its value, required value and
 //               margin, every criterion's row, and the warnings in words (#warnings: the line of thrust
 //               leaving the section, t below t_min, a load factor below 1, and the caller's, e.g. the
-//               defaults it used)
+//               defaults it used); on walls, with a spreading capacity passed or failed, each wall's
+//               lean at that collapse (#walls-lean: rotation, rad, and its top's displacement, mm)
 //   #drawing    the scene drawn (svg.hpp) with its elastic (or cracked-section) line of thrust, the limit
 //               analysis' minimum and maximum thrust lines and, with a live or point load, the collapse
 //               mechanism

@@ -42,7 +42,8 @@
 //   #spread-stage  DrawingOptions::spread_stages: the rigid voussoirs of the spreading mechanism where
 //               they have moved (to scale, not exaggerated), the ring outlined as one piece (a joint
 //               that has opened is a notch), with the stage's line of thrust
-//               (#spread-stage-thrust-line) and its hinges (#spread-stage-hinges)
+//               (#spread-stage-thrust-line) and its hinges (#spread-stage-hinges); on walls each leaning
+//               wall where it has turned about its base's outer toe (#spread-stage-wall-left, -right)
 //   #title      the caption given in DrawingOptions::title wrapped to the page, below it H/V, H and V (or
 //               the status and message of an unsolved scene), each springing's support and movement, and
 //               the legend (the line of thrust is "elastic" or "cracked-section" after the scene's
@@ -99,6 +100,8 @@ struct SpreadStageDrawing {
   std::vector<std::vector<PlanePoint>> voussoirs;  // m, each voussoir's outline (its four corners)
   std::vector<PlanePoint> thrust_line;              // m, one point per joint
   std::vector<PlanePoint> hinges;                   // m
+  std::vector<std::vector<PlanePoint>> walls;       // m, each leaning wall's outline where it has turned
+  std::vector<bool> right_walls;                    // for each of walls: the right one (else the left)
   std::string label;                                // legend text
   std::string colour = "#1f618d";                   // SVG colour
 };
@@ -107,6 +110,16 @@ struct SpreadStageDrawing {
 // increase (span_increase_ratio, the caller's: the path knows d, not the shares) and H/V; nothing unless
 // the result is a success.
 std::optional<SpreadStageDrawing> spread_stage_drawing(const SpreadResult& result, double span_increase_ratio);
+
+// A wall's outline (m): the base's inner and outer corners, the top's outer corner, the springing
+// joint's extrados and intrados points, the highest bed's inner corner (the wedge under a sloping
+// springing joint included).
+std::vector<PlanePoint> wall_corners(const WallOutline& wall);
+
+// Into `stage`, each wall of `scene` that leans (a rotation != 0, rad, outwards: the left wall
+// counter-clockwise, the right one clockwise) turned as a rigid body about its base's outer toe, as the
+// spreading path turns it (spreading.hpp, Walls).
+void add_leaning_walls(SpreadStageDrawing& stage, const Scene& scene, double left_rotation, double right_rotation);
 
 struct DrawingOptions {
   std::string title;      // caption, e.g. the scene's parameters; plain text (escaped here), wrapped to the page

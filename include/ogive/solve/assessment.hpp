@@ -11,7 +11,10 @@
 //                            where the scene has a point or live load: otherwise not_applicable);
 //   horizontal_load_factor   the horizontal acceleration of collapse a_c (a fraction of g) >= required;
 //   spread_capacity_ratio    the span's increase at collapse on spreading springings, over the span (both
-//                            springings moving outwards), >= required;
+//                            springings moving outwards; on walls, the walls leaning outwards about their
+//                            toes, a side without a wall standing still, and the increase the springings'
+//                            own: spread_capacity_ratio() of spreading.hpp), >= required (not assessed on
+//                            walls with a finite compressive strength);
 //   max_thrust_eccentricity  the largest |e| of the scene's own line of thrust (elastic or no-tension
 //                            section, solve()'s), in per cent of the kern, <= 300 (inside the section) or
 //                            <= 100 (inside the kern).
