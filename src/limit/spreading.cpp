@@ -622,9 +622,12 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
   int increments = r.increments, rolls = r.rolls;
   double change = 0;  // no refinement: nothing moved
   bool other_start = false;  // the last refinement changed the state at d = 0
+  // With a finite strength, and on walls, the capacity follows the hinges at d = 0 (spreading.hpp): they
+  // are refined next to as well, and a finer ring that only slides them along their faces resolves them.
+  const bool follows_start = std::isfinite(limit.compressive_strength) || scene.has_walls();
   for (int refinement = 0; r.status == SpreadStatus::success && refinement < kMostSpreadRefinements; ++refinement) {
     std::vector<Hinge> rolling = rolling_hinges(r.ring, r.path.back().hinges);
-    if (std::isfinite(limit.compressive_strength))  // the capacity follows the hinges at d = 0 (spreading.hpp)
+    if (follows_start)
       for (const Hinge& h : rolling_hinges(r.ring, r.path.front().hinges)) rolling.push_back(h);
     if (rolling.empty() || r.d_max == 0 || (refinement > 0 && coarsest_next_to(r.ring, rolling) <= kSpreadJointSpacing * r.ring.span &&
                             change <= kSpreadCapacityTolerance))
@@ -644,7 +647,7 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
     // starts another path: the last ring's stands, its capacity checked against the finer one's (with a
     // finite strength hinges at d = 0 that only slid along their faces are that state resolved further).
     if (!same_places(finer.path.front().hinges, r.path.front().hinges, r.ring.span) &&
-        !(std::isfinite(limit.compressive_strength) && slid_along(finer.path.front().hinges, r.path.front().hinges, kNewHingeReach * r.ring.span))) {
+        !(follows_start && slid_along(finer.path.front().hinges, r.path.front().hinges, kNewHingeReach * r.ring.span))) {
       other_start = true;
       break;
     }
