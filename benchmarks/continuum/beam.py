@@ -10,7 +10,7 @@ shooting (scipy's DOP853), with two optional terms that ogive does not have:
 
 With the held face (strip.csv's finest mesh at nu 0.2, held.csv's row), the self-weight's own stress
 (weight=True) and on the equilateral arch kink_joint (the joint that the bar's own coupling gives a kinked
-axis) it is ogive's `--beam-model curved` (H/V within 3e-7 of ogive's); without them, ogive's curved bar's
+axis, and the pointed crown's wedge, wedge.csv) it is ogive's `--beam-model curved` (H/V within 3e-7 of ogive's); without them, ogive's curved bar's
 section law alone.
 Units: the span L = 1 and E I = 1 (the compliances below are scaled accordingly); nu the section's.
 """
@@ -167,13 +167,26 @@ def h_over_v(kind, t, supports="clamped", nu=0.2, held=None, joint=None, weight=
     return y0[3] / y0[4]
 
 
-def kink_joint(arch, t, nu=0.2):
+def crown_wedge(theta_c):
+    """A pointed crown's wedge (ogive's crown_wedge), per E and t^2: wedge.csv's nu = 0 column at the
+    crown tangent's angle (radians), which must be one of its nodes here (the equilateral arch's 30 deg)."""
+    import csv
+    import os
+    rows = csv.DictReader(open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "wedge.csv")))
+    found = [float(r["a_nu_0"]) for r in rows if abs(float(r["theta_c_deg"]) - math.degrees(theta_c)) < 1e-6]
+    return found[0]
+
+
+def kink_joint(arch, t, nu=0.2, wedge=True):
     """The crown joint that the curved bar's own coupling gives a kinked axis: the bar's eps and psi' gain
     coupling kappa M and coupling kappa N (coupling = a_N (1 + 6 nu / 5) as t/R -> 0), and over the crown's
     turn, where kappa is a Dirac delta, their integrals are the half joint (0, -a_N (1 + 6 nu / 5) sin
     theta_c, 0): psi jumps by a_N coupling' int N dtheta = a_N coupling' Fx sin theta_c (Fy = 0 at the
-    crown), Ux by a_N coupling' M int cos theta dtheta, the same. No constant of its own."""
-    return (0.0, -t * t / 12 * (1 + 1.2 * nu) * math.sin(arch.theta(arch.S)), 0.0)
+    crown), Ux by a_N coupling' M int cos theta dtheta, the same. With `wedge` the pointed crown's wedge
+    too, a = crown_wedge t / 12 (scaled: per E and t^2, E = 12 / t^3)."""
+    theta_c = arch.theta(arch.S)
+    a = crown_wedge(abs(theta_c)) * t / 12 if wedge else 0.0
+    return (a, -t * t / 12 * (1 + 1.2 * nu) * math.sin(theta_c), 0.0)
 
 
 def segment_compliance(kind, t, length, joint, nu=0.2):

@@ -143,6 +143,11 @@ SystemMatrix ArchModel::kink_jump(double theta1, double theta2) const {
   K(kUy, kM) = f * dcos;
   K(kPsi, kFx) = f * dsin;
   K(kPsi, kFy) = f * dcos;
+  // The crown's wedge turns each leg's crown section against the symmetry line by crown_wedge M / (E t^2),
+  // M~ t~ / 12 scaled (E = 12 / t~^3 with E I = 1 and the span 1): over the half turn theta_c to 0 that,
+  // over the whole turn twice that.
+  const double t = std::sqrt(12.0 * a_N_), theta_c = std::abs(crown_kink_angle_);
+  if (theta_c > 0) K(kPsi, kM) = crown_wedge(theta_c) * t / 12.0 * std::abs(theta2 - theta1) / theta_c;
   return K;
 }
 

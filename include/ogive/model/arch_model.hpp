@@ -151,6 +151,8 @@ class ArchModel {
   // y+ = y- + kink_jump(theta1, theta2) y- with f = a_N (1 + 6 nu / 5) (coupling' as t/R -> 0):
   //   Ux~, Uy~ jump by f M~ (sin theta2 - sin theta1, cos theta1 - cos theta2)
   //   psi~    jumps by f (Fx~ (sin theta2 - sin theta1) + Fy~ (cos theta1 - cos theta2))
+  //           and by crown_wedge(theta_c) t~ / 12 M~ |theta2 - theta1| / theta_c  (the wedge's joint:
+  //           each leg's crown section against the symmetry line, curved_section.hpp)
   // (the integrals of the bar's coupling over the turn at constant forces: kappa ds = d theta). Over the
   // half the turn from the crown's tangent to the symmetry line's (0) enters the crown's conditions; over
   // the whole arch kink() is the crown's knot, its turn from theta_c to -theta_c taken in two halves on

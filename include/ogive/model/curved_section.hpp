@@ -54,4 +54,22 @@ struct HeldFace {
 };
 HeldFace held_face(double nu);
 
+// A pointed crown's wedge: where the two legs meet at a point, the body between the beam's radial crown
+// section (through the axis' crown point) and the crown's vertical line is not a bar's section; within
+// about a depth of the crown it makes the crown a joint between the legs: each leg's crown section turns
+// against the crown's symmetry line, per unit width, by
+//   crown_wedge(theta_c) M / (E t^2)
+// (M the crown's moment, t the depth there; the two legs against each other by twice that) beyond the
+// bar's own turn and its kink's coupling. Negative (the wedge stiffens the crown), zero as theta_c -> 0 (a
+// smooth crown), of order t / L against the legs' bending, as a held face's end zone. Plane elasticity's:
+// the crown's last 4 t of pointed arches at t/L 0.02 with their pointed crown less the beam's radial one
+// (CalculiX, 4 to 16 quadratic elements through the depth, extrapolated; benchmarks/continuum wedge:
+// wedge.csv), at nu = 0: with nu the wedge's own turn does not change (within 0.2 % at nu 0.2), while the
+// radial crown of that measurement, a rigid line, stops the section's Poisson strain as the beam's crown
+// does not. Tabulated over theta_c (radians, the crown tangent's angle to the horizontal) from 0 to 75
+// degrees (-0.418 at 30, the equilateral arch; -15.5 at 75), interpolated by quadratics; theta_c in
+// [0, pi / 2). Beyond 75 degrees the last three nodes' quadratic, an extrapolation: the wedge is longer
+// than the depth there and the measurement's 4 t no longer holds its zone.
+double crown_wedge(double theta_c);
+
 }  // namespace ogive
