@@ -126,16 +126,13 @@ struct SpreadSetup {
 };
 
 // On walls the walls' rotation moves the springings: no settlement share, and a moving side needs its
-// wall; the walls' beds would crush too, which the path does not follow.
+// wall.
 void check_on_walls(const CLI::App& cmd, const SpreadSetup& s) {
   for (const char* flag : {"--left-settlement-share", "--right-settlement-share"})
     if (given(cmd, flag))
       throw UsageError(fmt::format("{}: does not apply to spread on walls (the walls' rotation about their toes moves "
                                    "the springings)",
                                    flag));
-  if (given(cmd, "--compressive-strength"))
-    throw UsageError("--compressive-strength: does not apply to spread on walls (the walls' beds would crush too, which "
-                     "the path does not follow)");
   const bool both = given(cmd, "--wall-height");
   if (s.left_moves && !both && !given(cmd, "--left-wall-height"))
     throw UsageError("--moving: the left springing moves, but it stands on no wall (give --left-wall-height or --moving right)");
