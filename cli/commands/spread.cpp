@@ -108,7 +108,8 @@ void add_spread_analysis_options(CLI::App& cmd, SpreadText& t) {
   add_compressive_strength_option(cmd, t.compressive_strength,
                                   "the rigid voussoirs' joints crush: each hinge's resultant crosses its stress block's "
                                   "centre, N / (2 f_c) inside its face, and its blocks turn about the block's inner "
-                                  "edge, N / f_c inside; omitted: infinite strength");
+                                  "edge, N / f_c inside; on walls each wall's resultant must also cross its beds "
+                                  "N / (2 f_c) inside their faces; omitted: infinite strength");
   cmd.add_option("--friction", t.friction,
                  "friction coefficient of the joints (> 0): the path ends where a joint's resultant leaves the "
                  "friction cone (collapse sliding; on walls also a wall's resultant at one of its beds)")
