@@ -108,7 +108,8 @@ void add_spread_analysis_options(CLI::App& cmd, SpreadText& t) {
   add_compressive_strength_option(cmd, t.compressive_strength,
                                   "the rigid voussoirs' joints crush: each hinge's resultant crosses its stress block's "
                                   "centre, N / (2 f_c) inside its face, and its blocks turn about the block's inner "
-                                  "edge, N / f_c inside; omitted: infinite strength");
+                                  "edge, N / f_c inside; on walls each wall's resultant must also cross its beds "
+                                  "N / (2 f_c) inside their faces; omitted: infinite strength");
   cmd.add_option("--friction", t.friction,
                  "friction coefficient of the joints (> 0): the path ends where a joint's resultant leaves the "
                  "friction cone (collapse sliding; on walls also a wall's resultant at one of its beds)")
@@ -126,16 +127,13 @@ struct SpreadSetup {
 };
 
 // On walls the walls' rotation moves the springings: no settlement share, and a moving side needs its
-// wall; the walls' beds would crush too, which the path does not follow.
+// wall.
 void check_on_walls(const CLI::App& cmd, const SpreadSetup& s) {
   for (const char* flag : {"--left-settlement-share", "--right-settlement-share"})
     if (given(cmd, flag))
       throw UsageError(fmt::format("{}: does not apply to spread on walls (the walls' rotation about their toes moves "
                                    "the springings)",
                                    flag));
-  if (given(cmd, "--compressive-strength"))
-    throw UsageError("--compressive-strength: does not apply to spread on walls (the walls' beds would crush too, which "
-                     "the path does not follow)");
   const bool both = given(cmd, "--wall-height");
   if (s.left_moves && !both && !given(cmd, "--left-wall-height"))
     throw UsageError("--moving: the left springing moves, but it stands on no wall (give --left-wall-height or --moving right)");

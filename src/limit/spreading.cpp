@@ -282,7 +282,7 @@ class Path {
     Mechanism mech = choose_mechanism(moved_, turning, vL_.twist, vR_.twist);
     if (!mech.found()) return Outcome::snap_through;
     s.sliding = sliding_joint(moved_, st, friction_);
-    s.tipping = walls_ ? walls_->tipping(at, a.H, a.V, a.M, live_factor_, friction_) : Tipping{};
+    s.tipping = walls_ ? walls_->tipping(at, a.H, a.V, a.M, live_factor_, friction_, compressive_strength_) : Tipping{};
     s.contacts = std::move(turning);
     s.resultants = st.hinges;
     s.force = st.force;
@@ -592,7 +592,7 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
 SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread) {
   std::string why;
   if (!spread.is_valid(&why)) throw std::invalid_argument("SpreadOptions: " + why);
-  if (scene.has_walls()) check_spread_on_walls(scene, limit, spread);
+  if (scene.has_walls()) check_spread_on_walls(scene, spread);
   // The ring and the path are those without friction (the cone is checked on each state); the state at
   // d = 0 with friction, and whether there is one, is limit's with it.
   LimitOptions frictionless = limit;

@@ -38,6 +38,13 @@ Vec top_corner(const Vec& toe, const Joint& springing) {
   return {toe.x(), std::max(springing.intrados.y(), springing.extrados.y())};
 }
 
+// Why a wall gives way at a bed where it does not slide (SpreadResult::message).
+const char* tipping_reason(const Tipping& t) {
+  if (t.crushes) return "the normal force down it exceeds f_c b_w";
+  return t.stress_block ? "the resultant down it comes within N / (2 f_c) of the bed's edge (its stress block leaves the bed)"
+                        : "the resultant down it leaves the bed";
+}
+
 }  // namespace
 
 SpreadWalls::SpreadWalls(const Ring& system, const SpreadOptions& spread) : system_(system), arch_(without_walls(system)) {
@@ -61,7 +68,8 @@ double SpreadWalls::span_rate() const {
   return right_.twist.at(arch_.joints.back().intrados).x() - left_.twist.at(arch_.joints.front().intrados).x();
 }
 
-Tipping SpreadWalls::tipping(const Placement& at, double H, double V, double M, double live_factor, double friction) {
+Tipping SpreadWalls::tipping(const Placement& at, double H, double V, double M, double live_factor, double friction,
+                             double compressive_strength) {
   const int first = system_.left_springing(), last = system_.right_springing();
   Placement whole;
   whole.left = at.left;
@@ -78,7 +86,8 @@ Tipping SpreadWalls::tipping(const Placement& at, double H, double V, double M, 
     M_base += l.moment;
   }
   const ThrustState st = thrust_state(moved_, H, V_base, M_base, live_factor);
-  // Whether bed j gives way: tips (the resultant leaves it), else slides (it leaves the friction cone).
+  // Whether bed j gives way: tips (the resultant leaves it, or with a finite strength its stress block)
+  // or crushes, else slides (it leaves the friction cone).
   const auto gives_way = [&](int j, bool right) -> std::optional<Tipping> {
     const std::size_t k = static_cast<std::size_t>(j);
     const Joint& b = moved_.joints[k];
@@ -87,8 +96,12 @@ Tipping SpreadWalls::tipping(const Placement& at, double H, double V, double M, 
     // The normal force, N > 0 in compression (the bed's normal towards the next part of the chain).
     const double N = limit_detail::cross(st.force[k], e);
     const double y = system_.joints[k].intrados.y();
-    if (!(u >= -1e-9 && u <= 1 + 1e-9 && N > 0)) return Tipping{j, right, false, y};
-    if (friction > 0 && cone_excess(b, st.force[k], friction) > kConeRoundOff) return Tipping{j, right, true, y};
+    // The stress block's half depth as a fraction of the bed: N / (2 f_c b_w) (0 without a strength).
+    const double inside = N > 0 ? N / (2 * compressive_strength * e.squaredNorm()) : 0.0;
+    const bool block = std::isfinite(compressive_strength);
+    if (inside > 0.5) return Tipping{j, right, false, true, block, y};
+    if (!(u >= inside - 1e-9 && u <= 1 - inside + 1e-9 && N > 0)) return Tipping{j, right, false, false, block, y};
+    if (friction > 0 && cone_excess(b, st.force[k], friction) > kConeRoundOff) return Tipping{j, right, true, false, block, y};
     return std::nullopt;
   };
   const int count = static_cast<int>(system_.joints.size());
@@ -112,11 +125,7 @@ double SpreadWalls::top_displacement(bool right, double d) const {
   return (top.y() - toe.y()) * std::sin(theta);  // the corner above the toe, turned outwards by theta
 }
 
-void check_spread_on_walls(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread) {
-  if (std::isfinite(limit.compressive_strength))
-    throw std::invalid_argument(
-        "compressive_strength: the spreading analysis on walls takes no finite strength (the walls' beds would crush "
-        "too)");
+void check_spread_on_walls(const Scene& scene, const SpreadOptions& spread) {
   if (spread.left_settlement_share != 0 || spread.right_settlement_share != 0)
     throw std::invalid_argument(
         "left_settlement_share, right_settlement_share: on walls the springings move by the walls' rotation alone");
@@ -144,8 +153,8 @@ void SpreadWalls::at_collapse(SpreadResult& r, const Tipping& t) const {
     r.message = slides ? fmt::format("the {} wall slides at its bed at y = {:.6g} L: the resultant down it leaves the "
                                      "bed's friction cone",
                                      t.right ? "right" : "left", t.y / arch_.span)
-                       : fmt::format("the {} wall tips at its bed at y = {:.6g} L: the resultant down it leaves the bed",
-                                     t.right ? "right" : "left", t.y / arch_.span);
+                       : fmt::format("the {} wall {} at its bed at y = {:.6g} L: {}", t.right ? "right" : "left",
+                                     t.crushes ? "crushes" : "tips", t.y / arch_.span, tipping_reason(t));
     // The bed turns with its wall, a rigid body about the toe.
     if (slides) r.sliding_point = (t.right ? right_ : left_).at(r.d_max)(system_.joints[static_cast<std::size_t>(t.bed)].axis);
   }

@@ -15,19 +15,21 @@ namespace ogive::spreading_detail {
 
 // Where a state's resultant leaves a wall: the ring's joint (a bed of the ring with the walls), which
 // wall, the bed's height at d = 0 (m, y as the ring's), and whether the wall slides there (with
-// friction: the resultant leaves the bed's friction cone) rather than tips (it leaves the bed).
+// friction: the resultant leaves the bed's friction cone) rather than tips (it leaves the bed; with a
+// finite strength it comes within N / (2 f_c) of the bed's edge), or crushes (N > f_c b_w).
 struct Tipping {
   int bed = -1;  // -1: the walls carry the state
   bool right = false;
   bool slides = false;
+  bool crushes = false;
+  bool stress_block = false;  // a finite strength: the resultant kept N / (2 f_c) inside the bed's faces
   double y = std::numeric_limits<double>::quiet_NaN();
   bool tips() const { return bed >= 0; }
 };
 
-// The checks of analyse_spreading on walls: no settlement share, a wall under each moving springing, no
-// finite compressive strength (the walls' beds would crush too, which the path does not follow).
+// The checks of analyse_spreading on walls: no settlement share, a wall under each moving springing.
 // Throws std::invalid_argument naming the field.
-void check_spread_on_walls(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread);
+void check_spread_on_walls(const Scene& scene, const SpreadOptions& spread);
 
 class SpreadWalls {
  public:
@@ -54,9 +56,12 @@ class SpreadWalls {
   // as LimitLp::Answer) under live_factor times its live load: the resultant of the arch's reaction,
   // the blocks' weights and the top loads above each bed (where the walls have carried them) crosses
   // the bed between its faces in compression, to round-off (1e-9 of the bed), and (friction > 0) inside
-  // its friction cone, |shear| <= friction * normal (to cone_excess' round-off). The lowest bed of the
-  // left wall, then of the right one, that fails either (where a bed fails both, the wall tips).
-  Tipping tipping(const Placement& at, double H, double V, double M, double live_factor, double friction);
+  // its friction cone, |shear| <= friction * normal (to cone_excess' round-off). With a finite
+  // compressive_strength f_c (Pa) the resultant must cross at least N / (2 f_c) inside each face (the
+  // centre of the stress block N / f_c deep), so N <= f_c b_w (else the bed crushes). The lowest bed of
+  // the left wall, then of the right one, that fails any (where a bed fails both, the wall tips).
+  Tipping tipping(const Placement& at, double H, double V, double M, double live_factor, double friction,
+                  double compressive_strength);
 
   // A wall's outward rotation (rad) at movement d and the outward horizontal displacement of its top's
   // outer corner (m); NaN for a side without a wall.

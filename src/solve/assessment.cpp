@@ -123,9 +123,6 @@ CriterionResult spreading(const Scene& scene, const SpreadRun& o, const SpreadRe
 SpreadRun spread_run(const Scene& scene, const AssessmentOptions& options) {
   SpreadRun run{options.spread, {}};
   if (!scene.has_walls()) return run;
-  // The walls' beds would crush too, which the path does not follow (spreading.hpp).
-  if (std::isfinite(options.limit.compressive_strength))
-    run.unassessed = "the spreading path on walls takes no finite compressive strength (the walls' beds would crush too)";
   run.spread = leaning_walls(scene, options.spread);
   if (!(run.spread.left_share + run.spread.right_share > 0))
     run.unassessed = "no wall with some height under a moving springing to lean";

@@ -62,12 +62,19 @@ TEST_CASE("cli: spread without walls prints no wall column unless asked") {
 TEST_CASE("cli: spread on walls refuses what has no meaning there, one line and exit 2") {
   const std::vector<std::string> walls = {"spread", "--wall-height", "10", "--wall-thickness", "2.5"};
   for (const std::vector<std::string> extra :
-       {std::vector<std::string>{"--left-settlement-share", "0.5"}, {"--right-settlement-share", "-1"},
-        {"--compressive-strength", "10MPa"}}) {
+       {std::vector<std::string>{"--left-settlement-share", "0.5"}, {"--right-settlement-share", "-1"}}) {
     std::vector<std::string> args = walls;
     args.insert(args.end(), extra.begin(), extra.end());
     check_refused(args);
   }
+  // A finite strength is taken: the walls' beds are checked with their stress blocks.
+  const Run crushing = run_command({"spread", "--curve", "semicircular", "--thickness-ratio", "0.1", "--weight", "voussoir",
+                                    "--wall-height", "10", "--wall-thickness", "2.5", "--compressive-strength", "2MPa",
+                                    "--columns", "status,collapse,message"});
+  CHECK(crushing.status == 0);
+  CHECK(column(crushing.out, "status") == "success");
+  CHECK(column(crushing.out, "collapse") == "wall_tips");
+  CHECK(column(crushing.out, "message").find("N / (2 f_c)") != std::string::npos);
   // A wall of no height under a horizontal springing joint has nothing to turn: that scene's row says so.
   const Run flat = run_command({"spread", "--wall-height", "0,10", "--wall-thickness", "2", "--columns", "status,message"});
   CHECK(flat.status == 3);

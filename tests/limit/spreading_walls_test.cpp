@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -216,14 +217,60 @@ TEST_CASE("spreading walls: walls thinner than b_min leave no path, and misuse t
   settling.left_settlement_share = 0.5;
   CHECK_THROWS_AS(analyse_spreading(scene, {}, settling), std::invalid_argument);
   LimitOptions crushing;
-  crushing.compressive_strength = 10e6;  // the walls' beds would crush too: not taken
-  CHECK_THROWS_AS(analyse_spreading(scene, crushing, {}), std::invalid_argument);
+  crushing.compressive_strength = 0.3e6;  // the base's N (about 757 kN/m) above f_c b_w = 750 kN/m: it crushes
+  CHECK(analyse_spreading(scene, crushing, {}).status == SpreadStatus::inadmissible);
   Scene one = scene;
   one.left_wall.reset();
   CHECK_THROWS_AS(analyse_spreading(one, {}, {}), std::invalid_argument);  // the left springing has no wall to turn
   SpreadOptions right_only;
   right_only.left_share = 0;
   CHECK(analyse_spreading(one, {}, right_only).status == SpreadStatus::success);
+}
+
+TEST_CASE("spreading walls: a strength nothing crushes at gives the uncrushable path") {
+  const Scene scene = on_walls(0.1, 1.0, 0.25);
+  LimitOptions strong;
+  strong.compressive_strength = 1e12;  // stress blocks of a micrometre
+  const SpreadResult rigid = spread_on(scene), r = analyse_spreading(scene, strong, {});
+  REQUIRE(rigid.status == SpreadStatus::success);
+  REQUIRE(r.status == SpreadStatus::success);
+  CHECK(r.collapse == rigid.collapse);
+  CHECK(r.tipping_wall == rigid.tipping_wall);
+  CHECK(close(spread_capacity_ratio(r, {}), spread_capacity_ratio(rigid, {}), kSpreadCapacityTolerance));
+  CHECK(close(r.left_wall_rotation, rigid.left_wall_rotation, kSpreadCapacityTolerance));
+}
+
+TEST_CASE("spreading walls: with a finite strength the wall tips where its base's stress block reaches the toe") {
+  // The semicircle of span 10 m on walls 10 m high and 2.5 m thick at f_c = 2 MPa: the walls govern.
+  const Scene scene = on_walls(0.1, 1.0, 0.25);
+  LimitOptions crushing;
+  crushing.compressive_strength = 2e6;
+  const SpreadResult rigid = spread_on(scene), r = analyse_spreading(scene, crushing, {});
+  REQUIRE(rigid.status == SpreadStatus::success);
+  REQUIRE(r.status == SpreadStatus::success);
+  REQUIRE(r.collapse == SpreadCollapse::wall_tips);
+  CHECK(r.tipping_wall == 0);
+  CHECK(r.message.find("N / (2 f_c)") != std::string::npos);
+  CHECK(r.left_wall_rotation < rigid.left_wall_rotation);  // it tips earlier
+  CHECK(spread_capacity_ratio(r, {}) < spread_capacity_ratio(rigid, {}));
+  for (const SpreadStep& s : r.path) CHECK(close(s.H, s.H_work, kStaticKinematic));
+  // By hand: the wall (turned by theta about its toe) balances about the centre of its base's stress
+  // block, N / (2 f_c) inside the toe along the turned base, N the resultant's component normal to it.
+  const Ring& ring = r.ring;
+  const double L = ring.span, theta = r.left_wall_rotation;
+  CHECK(close(r.tipping_bed_y, ring.joints.front().axis.y() - L, kExact));  // at the base
+  const Joint& springing = ring.joints.front();
+  const Wall& w = *scene.left_wall;
+  const Eigen::Vector2d toe(springing.intrados.x() - w.thickness, springing.axis.y() - w.height);
+  const SpreadStep& last = r.path.back();
+  const double weight = w.density * scene.material.gravity * w.thickness * w.height;
+  const double N = (last.V_left + weight) * std::cos(theta) - last.H * std::sin(theta);
+  const Eigen::Vector2d centre = turned(toe + Eigen::Vector2d(N / (2 * crushing.compressive_strength), 0), toe, theta);
+  const Eigen::Vector2d centroid = turned(toe + Eigen::Vector2d(0.5 * w.thickness, 0.5 * w.height), toe, theta);
+  const Eigen::Vector2d p = r.shape.thrust_line.front();
+  const double overturning = cross(p - centre, Eigen::Vector2d(-last.H, -last.V_left));
+  const double restoring = cross(centroid - centre, Eigen::Vector2d(0, -weight));
+  CHECK(std::abs(overturning + restoring) <= kLocatedCollapse * std::abs(restoring));
 }
 
 namespace {

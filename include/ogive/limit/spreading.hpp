@@ -132,7 +132,13 @@
 // bed's cone, |shear| <= friction * normal force; the first state where it leaves one ends the path,
 // collapse sliding (sliding_joint -1: no joint of the arch; tipping_wall and tipping_bed_y say which wall
 // and bed, sliding_point where the bed's axis point is then). The path up to it is the frictionless
-// one, to the byte. A finite compressive strength is not taken on walls (the beds would crush too).
+// one, to the byte. With a finite compressive strength f_c the arch's path is the crushing one (above)
+// and the walls' beds are checked with their stress blocks, as limit crushes them: the resultant down a
+// wall must cross each bed at least N / (2 f_c) inside its faces (N the bed's normal force; so N <= f_c
+// b_w); the first state where it comes nearer a face is the wall's collapse about that bed (wall_tips,
+// the message saying whether it tips or crushes). A wall still turns as a rigid body about its base's
+// outer toe: the crushing of the base under the toe (the wall would turn about the toe's stress block's
+// inner edge, N / f_c inside) is not followed, only checked at the beds.
 // The span's increase (SpreadStep::span_increase) is the springings' intrados points' horizontal
 // distance less L; increment_ratio, stop_ratio and the bisection of the collapse (kSpreadTolerance)
 // measure it by its rate at d = 0.
@@ -291,8 +297,8 @@ double spread_capacity_ratio(const SpreadResult& r, const SpreadOptions& spread)
 SpreadOptions leaning_walls(const Scene& scene, SpreadOptions spread);
 
 // The mechanism path of `scene` (as analyse_limit takes it) under the movement of `spread`. Throws
-// std::invalid_argument for invalid options or scene, and on walls for settlement shares, a finite
-// compressive strength, or a moving springing without a wall of some height.
+// std::invalid_argument for invalid options or scene, and on walls for settlement shares or a moving
+// springing without a wall of some height.
 SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, const SpreadOptions& spread);
 
 }  // namespace ogive
