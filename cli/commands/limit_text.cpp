@@ -31,7 +31,13 @@ void add_compressive_strength_option(CLI::App& cmd, std::string& text, const cha
 
 double compressive_strength_of(const std::string& text, const CLI::App& cmd) {
   if (!given(cmd, "--compressive-strength")) return std::numeric_limits<double>::infinity();
-  const double f_c = parse_number(with_units_resolved(text, "--compressive-strength", 0), "--compressive-strength");
+  const std::string in_pa = with_units_resolved(text, "--compressive-strength", 0);  // names a bad unit itself
+  double f_c = 0;
+  try {
+    f_c = parse_number(in_pa, "--compressive-strength");
+  } catch (const UsageError&) {  // name what was given, not its value in Pa
+    throw UsageError(fmt::format("--compressive-strength: one stress, Pa or with a unit (MPa, kPa, N/mm2), got {}", shown(text)));
+  }
   if (!(f_c > 0))
     throw UsageError(fmt::format("--compressive-strength: must be > 0 (Pa; omit it for infinite strength), got {}",
                                  shown(text)));

@@ -305,6 +305,9 @@ TEST_CASE("cli: --compressive-strength in Pa or with a unit of stress, bad value
     CHECK(r.err.find("--compressive-strength") != std::string::npos);
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
   }
+  // A list names what was given, not its value in Pa.
+  const Run list = with({"--compressive-strength", "3MPa,4MPa"});
+  CHECK(list.err.find("3MPa,4MPa") != std::string::npos);
   // Too weak for the arch's own weight: an answer (inadmissible), whose message says the joints crush.
   const Run weak = limit_cli({"--curve", "semicircular", "--compressive-strength", "1kPa", "--columns",
                               "status,H_min,message"});
