@@ -46,10 +46,26 @@ constexpr Subcommand kSubcommands[] = {
      add_assess_options},
 };
 
+// The flag of the hidden option (one the command does not take: hide_inapplicable) given on the command
+// line, the one given twice first; "" for none.
+std::string hidden_option_given(const CLI::App& where, const std::vector<std::string>& args) {
+  std::string once;
+  for (const CLI::Option* opt : where.get_options()) {
+    if (!opt->get_group().empty() || opt->get_lnames().empty()) continue;
+    const std::string flag = "--" + opt->get_lnames().front();
+    const auto times = std::count_if(args.begin(), args.end(), [&](const std::string& a) {
+      return a == flag || a.rfind(flag + "=", 0) == 0;
+    });
+    if (times > 1) return flag;
+    if (times == 1 && once.empty()) once = flag;
+  }
+  return once;
+}
+
 // The parse error in the user's words rather than the parser's: an unknown option or a stray value,
 // an option without its value or given twice, a missing subcommand; anything else as the parser says it.
 std::string parse_error_words(CLI::App& app, CLI::App* where, const std::vector<std::string>& names,
-                              const CLI::ParseError& e) {
+                              const std::vector<std::string>& args, const CLI::ParseError& e) {
   std::string what = e.what();
   std::replace(what.begin(), what.end(), '\n', ' ');
   if (dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr) {
@@ -69,7 +85,10 @@ std::string parse_error_words(CLI::App& app, CLI::App* where, const std::vector<
     }
   }
   if (dynamic_cast<const CLI::ArgumentMismatch*>(&e) != nullptr) {
-    const std::string option = what.substr(0, what.find(':'));
+    std::string option = what.substr(0, what.find(':'));
+    // CLI11 names a hidden option (one the command does not take) by "": the hidden option given,
+    // the one given twice first.
+    if (option.empty()) option = hidden_option_given(*where, args);
     if (what.find("missing") != std::string::npos) return option + ": needs a value (" + option + " VALUE)";
     if (what.find("At Most") != std::string::npos)
       return option + ": given more than once (several values are one list a,b,c or a range start:stop:count)";
@@ -79,9 +98,11 @@ std::string parse_error_words(CLI::App& app, CLI::App* where, const std::vector<
       dynamic_cast<const CLI::ConversionError*>(&e) != nullptr && what.rfind(prefix, 0) == 0) {
     const std::string rest = what.substr(prefix.size());
     const std::size_t eq = rest.find(" = ");
-    if (eq != std::string::npos)
-      return fmt::format("{}: a flag, given alone or as {}=true / {}=false, not '{}'", rest.substr(0, eq),
-                         rest.substr(0, eq), rest.substr(0, eq), rest.substr(eq + 3));
+    if (eq != std::string::npos) {
+      const std::string flag = eq == 0 ? hidden_option_given(*where, args) : rest.substr(0, eq);
+      return fmt::format("{}: a flag, given alone or as {}=true / {}=false, not '{}'", flag, flag, flag,
+                         rest.substr(eq + 3));
+    }
   }
   if (dynamic_cast<const CLI::RequiredError*>(&e) != nullptr && where == &app) {
     std::string list;
@@ -108,7 +129,7 @@ std::string parse_error_line(CLI::App& app, const std::vector<std::string>& args
     if (hint.empty() && std::find(names.begin(), names.end(), word.substr(0, word.find('='))) == names.end() &&
         (word.rfind("--", 0) == 0 || where == &app))
       hint = did_you_mean(word.substr(0, word.find('=')), names);
-  return "ogive: " + parse_error_words(app, where, names, e) + hint + "\n";
+  return "ogive: " + parse_error_words(app, where, names, args, e) + hint + "\n";
 }
 
 // Help or version: refused with status 2 when the command line holds arguments nobody takes (CLI11
@@ -164,6 +185,14 @@ std::string empty_assignment(const std::vector<std::string>& args) {
 // The options whose own check refuses an empty name, saying what the name should be.
 constexpr std::string_view kNamedFiles[] = {"--curve-file", "--loads-file", "--output", "--output-dir"};
 
+// The option's flag as written on the command line. CLI11's get_name() is empty for a hidden option
+// (an inapplicable one: hide_inapplicable), which a refusal must still name.
+std::string flag_of(const CLI::Option& opt) {
+  if (!opt.get_lnames().empty()) return "--" + opt.get_lnames().front();
+  if (!opt.get_snames().empty()) return "-" + opt.get_snames().front();
+  return opt.get_name();
+}
+
 // What CLI11 takes but a command line must not hold (one line, or ""): an option given twice (a flag
 // too: CLI11 counts flags), an empty value (it would be read as the default, or as not given), a value
 // left out after '='.
@@ -172,7 +201,7 @@ std::string refused_after_parse(const CLI::App& cmd, const std::vector<std::stri
     return fmt::format("{}: no value after '=' (write {}=VALUE or {} VALUE)", option, option, option);
   for (const CLI::Option* opt : cmd.get_options()) {
     if (opt->count() == 0) continue;
-    const std::string name = opt->get_name();
+    const std::string name = flag_of(*opt);
     if (opt->count() > 1) return fmt::format("{}: given more than once (give each option once)", name);
     if (opt->get_items_expected_min() == 0 ||
         std::find(std::begin(kNamedFiles), std::end(kNamedFiles), name) != std::end(kNamedFiles))

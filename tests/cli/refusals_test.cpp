@@ -48,12 +48,20 @@ TEST_CASE("refusals: a second sign, empty values, '=' without a value, an option
                                              {"thrust", "--method", ""},
                                              {"limit", "--thrust-line", ""},
                                              {"spread", "--moving", ""},
+                                             // options a command does not take are hidden, yet named
+                                             {"spread", "--wall-lean", ""},
+                                             {"limit", "--left-wall-lean", ""},
                                              {"thrust", "--columns", ""}})
     check_refused_saying(args, args[1] + ": the value must not be empty");
   check_refused_saying({"thrust", "--span=", "8"}, "--span: no value after '='");
   check_refused_saying({"thrust", "--plane-strain", "--plane-strain"}, "--plane-strain: given more than once");
   check_refused_saying({"thrust", "--crown-hinge", "--crown-hinge=false"}, "--crown-hinge: given more than once");
   check_refused_saying({"thrust", "--span", "8", "--span", "9"}, "--span: given more than once");
+  check_refused_saying({"spread", "--wall-lean", "0", "--wall-lean", "0"}, "--wall-lean: given more than once");
+  check_refused_saying({"spread", "--left-wall-lean", "0", "--wall-lean", "0", "--wall-lean", "0"},
+                       "--wall-lean: given more than once");
+  check_refused_saying({"spread", "--span", "8", "--wall-lean"}, "--wall-lean: needs a value");
+  check_refused_saying({"limit", "--plane-strain=maybe"}, "--plane-strain: a flag, given alone");
   // The file options keep their own words.
   check_refused_saying({"thrust", "--curve", "points", "--curve-file", ""}, "--curve-file: the name must not be empty");
   // A value after '=' is one, and an '=' inside a value is the value's.
