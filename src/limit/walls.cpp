@@ -205,68 +205,23 @@ namespace {
 constexpr double kWallTolerance = 1e-10;
 // The thickest wall tried, in spans.
 constexpr double kThickestWall = 1000.0;
-// A bed whose crossing lies this close to an edge (relative to the bed) is a hinge of the least wall.
-constexpr double kLeastWallHingeTolerance = 1e-6;
-
 // What the search keeps from one thickness to the next (per thread: one analysis at a time).
 struct WallWork {
   LpWorkspace workspace;
   RingScratch scratch;
   Ring ring;
   std::unique_ptr<LimitLp> lp;
-  std::vector<int> basis;
-  std::size_t basis_joints = 0;
 };
-
-// The margin (LimitLp::margin) of the scene with every wall b thick, on the joints `fractions`.
-struct WallMargin {
-  Scene scene;
-  const LimitOptions& options;
-  const std::vector<double>& fractions;
-  double load_factor;
-  WallWork& work;
-  int solves = 0;
-  bool failed = false;
-  double feasible_b = std::numeric_limits<double>::infinity();
-  std::vector<double> refinement;  // next to the hinges of the thinnest wall that stands so far
-
-  double operator()(double b) {
-    if (scene.left_wall) scene.left_wall->thickness = b;
-    if (scene.right_wall) scene.right_wall->thickness = b;
-    make_ring_at(scene, options, fractions, work.ring, work.scratch);
-    LimitLp& lp = programs_of(work.ring, options, work.workspace, work.lp);
-    const bool warm = !work.basis.empty() && work.basis_joints == work.ring.joints.size();
-    LimitLp::Answer a = lp.margin(load_factor, warm ? &work.basis : nullptr);
-    ++solves;
-    work.basis = a.basis;
-    work.basis_joints = work.ring.joints.size();
-    if (a.outcome == LimitLp::Outcome::infeasible) return -1.0;
-    if (a.outcome != LimitLp::Outcome::optimal) {
-      failed = true;
-      return -1.0;
-    }
-    if (a.margin >= 0 && b < feasible_b) {
-      feasible_b = b;
-      refinement.clear();
-      const ThrustState st = thrust_state(work.ring, a.H, a.V, a.M, a.load_factor, kLeastWallHingeTolerance,
-                                          options.compressive_strength);
-      add_refinement(work.ring, st.hinges, refinement);
-    }
-    return a.margin;
-  }
-};
-
-}  // namespace
-
-namespace {
 
 WallSearch search_wall_thickness(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions,
                                  double load_factor, double near) {
   thread_local WallWork work;
   work.scratch.forget();
-  work.basis.clear();
   WallSearch out;
-  WallMargin f{scene, options, fractions, load_factor, work, 0, false, std::numeric_limits<double>::infinity(), {}};
+  // The margin of the scene with every wall b thick, on the joints `fractions`.
+  ThicknessMargin f(
+      ThicknessMargin::Of::walls, scene, options, [&](double) { return fractions; }, load_factor, work.ring,
+      work.scratch, work.workspace, work.lp);
   // The least thickness that carries the springing joints: their horizontal widths.
   double least = 0;
   for (bool right : {false, true}) {
