@@ -118,25 +118,27 @@ bool kept_wall_fraction(double f) {
   return false;
 }
 
+namespace {
+
+// One side's wall on the ring: its beds and blocks (in chain order) after the ring's last joint and
+// voussoir on the right, before its first on the left, under the springing joint at that end.
+void attach_wall(const Scene& scene, const std::vector<double>& fractions, bool right, Ring& ring) {
+  const std::optional<Wall>& wall = right ? scene.right_wall : scene.left_wall;
+  if (!wall) return;
+  const Joint& j = right ? ring.joints.back() : ring.joints.front();
+  const WallOutline o = wall_outline(SpringingJoint{j.intrados, j.extrados, j.axis}, *wall, right);
+  const WallChain c = wall_chain(o, *wall, scene.material.gravity, ring.span, scene.curve->whole_length(),
+                                 wall_depths(fractions, right ? kRightWallCode : kLeftWallCode));
+  ring.joints.insert(right ? ring.joints.end() : ring.joints.begin(), c.beds.begin(), c.beds.end());
+  ring.voussoirs.insert(right ? ring.voussoirs.end() : ring.voussoirs.begin(), c.blocks.begin(), c.blocks.end());
+  (right ? ring.right_wall_joints : ring.left_wall_joints) = static_cast<int>(c.beds.size());
+}
+
+}  // namespace
+
 void attach_walls(const Scene& scene, const std::vector<double>& fractions, Ring& ring) {
   ring.left_wall_joints = ring.right_wall_joints = 0;
-  if (!scene.has_walls()) return;
-  const double L = ring.span, W = scene.curve->whole_length(), g = scene.material.gravity;
-  auto joint_of = [](const Joint& j) { return SpringingJoint{j.intrados, j.extrados, j.axis}; };
-  if (scene.right_wall) {
-    const WallOutline o = wall_outline(joint_of(ring.joints.back()), *scene.right_wall, true);
-    WallChain c = wall_chain(o, *scene.right_wall, g, L, W, wall_depths(fractions, kRightWallCode));
-    ring.joints.insert(ring.joints.end(), c.beds.begin(), c.beds.end());
-    ring.voussoirs.insert(ring.voussoirs.end(), c.blocks.begin(), c.blocks.end());
-    ring.right_wall_joints = static_cast<int>(c.beds.size());
-  }
-  if (scene.left_wall) {
-    const WallOutline o = wall_outline(joint_of(ring.joints.front()), *scene.left_wall, false);
-    WallChain c = wall_chain(o, *scene.left_wall, g, L, W, wall_depths(fractions, kLeftWallCode));
-    ring.joints.insert(ring.joints.begin(), c.beds.begin(), c.beds.end());
-    ring.voussoirs.insert(ring.voussoirs.begin(), c.blocks.begin(), c.blocks.end());
-    ring.left_wall_joints = static_cast<int>(c.beds.size());
-  }
+  for (const bool right : {true, false}) attach_wall(scene, fractions, right, ring);
 }
 
 void add_refinement(const Ring& ring, const std::vector<Hinge>& hinges, std::vector<double>& out) {
