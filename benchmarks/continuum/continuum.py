@@ -910,46 +910,62 @@ def figure(out=os.path.join(TOP, "docs", "figures", "continuum.png")):
     print(out)
 
 
+def check(ogive):
+    """The public check: the clamped semicircle at t/L 0.08 in plane stress, CalculiX's H/V on its three
+    meshes beside each beam model's."""
+    hv, err, values, order = continuum(make_arch("semicircular", 0.08 * SPAN))
+    print(f"clamped semicircle, t/L 0.08, plane stress: continuum H/V {hv:.5f} (+- {err:.0e}; meshes "
+          f"{', '.join(f'{v:.6f}' for v in values)}, order {order:.2f})")
+    for m in MODELS:
+        b, _ = ogive_hv(ogive, make_arch("semicircular", 0.8), 0.08, m)
+        print(f"  {m}: {b:.5f} ({100 * (b - hv) / hv:+.2f} %)")
+
+
+def reference_all(supports):
+    """CalculiX's H/V for every arch and t/L with each of the supports (plane stress), and the clamped
+    semicircle in plane strain, into reference.csv (the rows it lacks)."""
+    cases = [(a, s, "stress", r) for s in supports.split(",") for a in ARCHES for r in RATIOS]
+    cases += [("semicircular", "clamped", "strain", r) for r in RATIOS]
+    reference(cases)
+
+
+def first_sentence(function):
+    """A function's docstring up to its first full stop, on one line: its subcommand's help."""
+    words = " ".join(function.__doc__.split())
+    return words.split(". ")[0].rstrip(".") + "."
+
+
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("what", choices=["check", "reference", "table", "summary", "poisson", "ends", "spread", "crown", "strip",
-                                           "joint", "wedge", "trial", "figure"])
-    parser.add_argument("--ogive", default=os.path.join(TOP, "build", "ogive"))
-    parser.add_argument("--supports", default="clamped,pinned")
+    import textwrap  # here, with the dispatch it serves
+
+    # Each subcommand: its function and what it takes of the options (its help: the docstring's first
+    # sentence).
+    commands = {
+        "check": (check, lambda a: [a.ogive]),
+        "reference": (reference_all, lambda a: [a.supports]),
+        "table": (table, lambda a: [a.ogive]),
+        "summary": (summary, lambda a: []),
+        "poisson": (poisson, lambda a: [a.ogive]),
+        "ends": (ends, lambda a: [a.ogive]),
+        "spread": (spread, lambda a: [a.ogive]),
+        "crown": (crown, lambda a: [a.ogive]),
+        "strip": (strip, lambda a: [a.ogive]),
+        "joint": (joint, lambda a: [a.ogive]),
+        "wedge": (wedge, lambda a: []),
+        "trial": (trial, lambda a: [a.ogive]),
+        "figure": (figure, lambda a: []),
+    }
+    parser = argparse.ArgumentParser(
+        description=__doc__.split("\n\n")[0], formatter_class=argparse.RawDescriptionHelpFormatter,
+        epilog="subcommands:\n" + "\n".join(
+            textwrap.fill(first_sentence(f), 100, initial_indent=f"  {name:<10} ", subsequent_indent=" " * 13)
+            for name, (f, _) in commands.items()))
+    parser.add_argument("what", choices=list(commands), metavar="SUBCOMMAND", help="one of those below")
+    parser.add_argument("--ogive", default=os.path.join(TOP, "build", "ogive"), help="the ogive executable")
+    parser.add_argument("--supports", default="clamped,pinned", help="reference's supports")
     args = parser.parse_args()
-    if args.what == "check":
-        hv, err, values, order = continuum(make_arch("semicircular", 0.08 * SPAN))
-        print(f"clamped semicircle, t/L 0.08, plane stress: continuum H/V {hv:.5f} (+- {err:.0e}; meshes "
-              f"{', '.join(f'{v:.6f}' for v in values)}, order {order:.2f})")
-        for m in MODELS:
-            b, _ = ogive_hv(args.ogive, make_arch("semicircular", 0.8), 0.08, m)
-            print(f"  {m}: {b:.5f} ({100 * (b - hv) / hv:+.2f} %)")
-    elif args.what == "reference":
-        cases = [(a, s, "stress", r) for s in args.supports.split(",") for a in ARCHES for r in RATIOS]
-        cases += [("semicircular", "clamped", "strain", r) for r in RATIOS]
-        reference(cases)
-    elif args.what == "table":
-        table(args.ogive)
-    elif args.what == "summary":
-        summary()
-    elif args.what == "poisson":
-        poisson(args.ogive)
-    elif args.what == "spread":
-        spread(args.ogive)
-    elif args.what == "ends":
-        ends(args.ogive)
-    elif args.what == "crown":
-        crown(args.ogive)
-    elif args.what == "strip":
-        strip(args.ogive)
-    elif args.what == "joint":
-        joint(args.ogive)
-    elif args.what == "wedge":
-        wedge()
-    elif args.what == "trial":
-        trial(args.ogive)
-    else:
-        figure()
+    function, arguments = commands[args.what]
+    function(*arguments(args))
 
 
 if __name__ == "__main__":
