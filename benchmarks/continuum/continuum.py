@@ -912,13 +912,31 @@ def figure(out=os.path.join(TOP, "docs", "figures", "continuum.png")):
 
 def check(ogive):
     """The public check: the clamped semicircle at t/L 0.08 in plane stress, CalculiX's H/V on its three
-    meshes beside each beam model's."""
+    meshes beside each beam model's. It fails (exit status 1) when the continuum's H/V misses
+    reference.csv's, or ogive's curved bar misses continuum.csv's, by more than the reference's fe_error."""
+    def row_of(path):
+        key = ("semicircular", "clamped", "stress", "0.08")
+        return next(r for r in csv.DictReader(open(path)) if (r["arch"], r["supports"], r["plane"], r["t_over_L"]) == key)
+
+    stated, table_row = row_of(REFERENCE), row_of(TABLE)
+    # The reference's own error estimate (Richardson's step plus the finest mesh's difference): a continuum
+    # that moves by more is another reference, a curved bar that moves by more has changed against it.
+    fe_error = float(stated["fe_error"])
     hv, err, values, order = continuum(make_arch("semicircular", 0.08 * SPAN))
     print(f"clamped semicircle, t/L 0.08, plane stress: continuum H/V {hv:.5f} (+- {err:.0e}; meshes "
           f"{', '.join(f'{v:.6f}' for v in values)}, order {order:.2f})")
+    bars = {}
     for m in MODELS:
-        b, _ = ogive_hv(ogive, make_arch("semicircular", 0.8), 0.08, m)
-        print(f"  {m}: {b:.5f} ({100 * (b - hv) / hv:+.2f} %)")
+        bars[m], _ = ogive_hv(ogive, make_arch("semicircular", 0.8), 0.08, m)
+        print(f"  {m}: {bars[m]:.5f} ({100 * (bars[m] - hv) / hv:+.2f} %)")
+    misses = [f"{what} {got:.7f} is not within the reference's fe_error {fe_error:.1e} of {where}'s {want}"
+              for what, got, want, where in [("the continuum's H/V", hv, stated["H_over_V"], "reference.csv"),
+                                             ("the curved bar's H/V", bars["curved"], table_row["curved"], "continuum.csv")]
+              if not abs(got - float(want)) <= fe_error]
+    if misses:
+        sys.exit("continuum.py check: " + "; ".join(misses))
+    print(f"the continuum and the curved bar within the reference's fe_error {fe_error:.1e} of their stated H/V "
+          f"({stated['H_over_V']}, {table_row['curved']})")
 
 
 def reference_all(supports):
