@@ -910,46 +910,80 @@ def figure(out=os.path.join(TOP, "docs", "figures", "continuum.png")):
     print(out)
 
 
+def check(ogive):
+    """The public check: the clamped semicircle at t/L 0.08 in plane stress, CalculiX's H/V on its three
+    meshes beside each beam model's. It fails (exit status 1) when the continuum's H/V misses
+    reference.csv's, or ogive's curved bar misses continuum.csv's, by more than the reference's fe_error."""
+    def row_of(path):
+        key = ("semicircular", "clamped", "stress", "0.08")
+        return next(r for r in csv.DictReader(open(path)) if (r["arch"], r["supports"], r["plane"], r["t_over_L"]) == key)
+
+    stated, table_row = row_of(REFERENCE), row_of(TABLE)
+    # The reference's own error estimate (Richardson's step plus the finest mesh's difference): a continuum
+    # that moves by more is another reference, a curved bar that moves by more has changed against it.
+    fe_error = float(stated["fe_error"])
+    hv, err, values, order = continuum(make_arch("semicircular", 0.08 * SPAN))
+    print(f"clamped semicircle, t/L 0.08, plane stress: continuum H/V {hv:.5f} (+- {err:.0e}; meshes "
+          f"{', '.join(f'{v:.6f}' for v in values)}, order {order:.2f})")
+    bars = {}
+    for m in MODELS:
+        bars[m], _ = ogive_hv(ogive, make_arch("semicircular", 0.8), 0.08, m)
+        print(f"  {m}: {bars[m]:.5f} ({100 * (bars[m] - hv) / hv:+.2f} %)")
+    misses = [f"{what} {got:.7f} is not within the reference's fe_error {fe_error:.1e} of {where}'s {want}"
+              for what, got, want, where in [("the continuum's H/V", hv, stated["H_over_V"], "reference.csv"),
+                                             ("the curved bar's H/V", bars["curved"], table_row["curved"], "continuum.csv")]
+              if not abs(got - float(want)) <= fe_error]
+    if misses:
+        sys.exit("continuum.py check: " + "; ".join(misses))
+    print(f"the continuum and the curved bar within the reference's fe_error {fe_error:.1e} of their stated H/V "
+          f"({stated['H_over_V']}, {table_row['curved']})")
+
+
+def reference_all(supports):
+    """CalculiX's H/V for every arch and t/L with each of the supports (plane stress), and the clamped
+    semicircle in plane strain, into reference.csv (the rows it lacks)."""
+    cases = [(a, s, "stress", r) for s in supports.split(",") for a in ARCHES for r in RATIOS]
+    cases += [("semicircular", "clamped", "strain", r) for r in RATIOS]
+    reference(cases)
+
+
+def first_sentence(function):
+    """A function's docstring up to its first full stop, on one line: its subcommand's help."""
+    words = " ".join(function.__doc__.split())
+    return words.split(". ")[0].rstrip(".") + "."
+
+
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("what", choices=["check", "reference", "table", "summary", "poisson", "ends", "spread", "crown", "strip",
-                                           "joint", "wedge", "trial", "figure"])
-    parser.add_argument("--ogive", default=os.path.join(TOP, "build", "ogive"))
-    parser.add_argument("--supports", default="clamped,pinned")
+    import textwrap  # here, with the dispatch it serves
+
+    # Each subcommand: its function and what it takes of the options (its help: the docstring's first
+    # sentence).
+    commands = {
+        "check": (check, lambda a: [a.ogive]),
+        "reference": (reference_all, lambda a: [a.supports]),
+        "table": (table, lambda a: [a.ogive]),
+        "summary": (summary, lambda a: []),
+        "poisson": (poisson, lambda a: [a.ogive]),
+        "ends": (ends, lambda a: [a.ogive]),
+        "spread": (spread, lambda a: [a.ogive]),
+        "crown": (crown, lambda a: [a.ogive]),
+        "strip": (strip, lambda a: [a.ogive]),
+        "joint": (joint, lambda a: [a.ogive]),
+        "wedge": (wedge, lambda a: []),
+        "trial": (trial, lambda a: [a.ogive]),
+        "figure": (figure, lambda a: []),
+    }
+    parser = argparse.ArgumentParser(
+        description=__doc__.split("\n\n")[0], formatter_class=argparse.RawDescriptionHelpFormatter,
+        epilog="subcommands:\n" + "\n".join(
+            textwrap.fill(first_sentence(f), 100, initial_indent=f"  {name:<10} ", subsequent_indent=" " * 13)
+            for name, (f, _) in commands.items()))
+    parser.add_argument("what", choices=list(commands), metavar="SUBCOMMAND", help="one of those below")
+    parser.add_argument("--ogive", default=os.path.join(TOP, "build", "ogive"), help="the ogive executable")
+    parser.add_argument("--supports", default="clamped,pinned", help="reference's supports")
     args = parser.parse_args()
-    if args.what == "check":
-        hv, err, values, order = continuum(make_arch("semicircular", 0.08 * SPAN))
-        print(f"clamped semicircle, t/L 0.08, plane stress: continuum H/V {hv:.5f} (+- {err:.0e}; meshes "
-              f"{', '.join(f'{v:.6f}' for v in values)}, order {order:.2f})")
-        for m in MODELS:
-            b, _ = ogive_hv(args.ogive, make_arch("semicircular", 0.8), 0.08, m)
-            print(f"  {m}: {b:.5f} ({100 * (b - hv) / hv:+.2f} %)")
-    elif args.what == "reference":
-        cases = [(a, s, "stress", r) for s in args.supports.split(",") for a in ARCHES for r in RATIOS]
-        cases += [("semicircular", "clamped", "strain", r) for r in RATIOS]
-        reference(cases)
-    elif args.what == "table":
-        table(args.ogive)
-    elif args.what == "summary":
-        summary()
-    elif args.what == "poisson":
-        poisson(args.ogive)
-    elif args.what == "spread":
-        spread(args.ogive)
-    elif args.what == "ends":
-        ends(args.ogive)
-    elif args.what == "crown":
-        crown(args.ogive)
-    elif args.what == "strip":
-        strip(args.ogive)
-    elif args.what == "joint":
-        joint(args.ogive)
-    elif args.what == "wedge":
-        wedge()
-    elif args.what == "trial":
-        trial(args.ogive)
-    else:
-        figure()
+    function, arguments = commands[args.what]
+    function(*arguments(args))
 
 
 if __name__ == "__main__":

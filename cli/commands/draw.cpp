@@ -417,7 +417,7 @@ int run_report(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
   if (to.output == "-")
     return page_to_standard_output(plan, out, [&](const SceneParameters& p, const Scene& scene, Solution& sol) {
       report.title = draw_title(p);
-      sol = solve(scene, o);
+      sol = report_solution(scene, report);
       return html_report(scene, sol, report);
     });
   columns.select(d.columns, plan.varying_inputs());
@@ -425,7 +425,7 @@ int run_report(DrawOptions& d, const CLI::App& cmd, std::ostream& out) {
   const bool all_ok = write_scenes(plan, columns, out, 1, [&](const SceneParameters& p, const Scene& scene, const Emit& emit) {
     report.title = draw_title(p);
     const std::string& path = files[p.scene - 1];
-    const Solution sol = solve(scene, o);
+    const Solution sol = report_solution(scene, report);
     write_drawing(path, html_report(scene, sol, report));
     emit(picture_row(columns, p, scene, sol, path));
     return sol.ok();

@@ -15,8 +15,11 @@ namespace {
 
 using limit_detail::fails_virtual_work;
 using limit_detail::inadmissible_message;
+using limit_detail::kNoMargin;
 using limit_detail::LimitLp;
 using limit_detail::require_loaded;
+using limit_detail::stress_blocks;
+using limit_detail::ThicknessMargin;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -29,10 +32,6 @@ constexpr double kThicknessTolerance = 1e-10;
 // A margin this close below zero (the programs' feasibility tolerance, in the same units) may be the
 // round-off of a margin of zero: the thrust programs, which fix it at zero, decide.
 constexpr double kMarginTolerance = 1e-11;
-
-// The margin given to a program infeasible for every mu (friction can forbid every thrust line): a
-// negative number for the root-finder, which needs only the sign.
-constexpr double kNoMargin = -1.0;
 
 // The fraction between a load's joints and their neighbours on either side (beside_loads): far above
 // kFractionGap, far below the refinement's voussoirs.
@@ -57,21 +56,6 @@ std::vector<double> fractions_at(const Scene& scene, double t, const LimitOption
         if (x + side > 0 && x + side < 1) f.push_back(x + side);
   return limit_detail::merged_fractions(std::move(f));
 }
-
-// Whether a hinge lies inside its face by more than the hinge tolerance (a crushing joint's stress
-// block): then the rings that follow have joints beside the loads' (fractions_at).
-bool stress_blocks(const Ring& ring, const std::vector<Hinge>& hinges) {
-  return std::any_of(hinges.begin(), hinges.end(), [&](const Hinge& h) {
-    if (h.face == Face::axis) return false;
-    const Joint& j = ring.joints[static_cast<std::size_t>(h.joint)];
-    const Eigen::Vector2d& face = h.face == Face::intrados ? j.intrados : j.extrados;
-    return (h.point - face).norm() > 1e-9 * (j.extrados - j.intrados).norm();
-  });
-}
-
-// A joint whose crossing lies this close to a face (relative to the joint) is a hinge of the thinnest
-// arch: at t_min the margin is zero to the root-finder's tolerance, not to round-off.
-constexpr double kThinnestHingeTolerance = 1e-6;
 
 // What the rounds of one analysis reuse: the LP library's model and the storage of the rings and their
 // programs. The search for t_min builds a ring and its programs for every thickness it tries; freeing
@@ -107,55 +91,12 @@ LimitLp::Answer solve_warm(LimitLp& lp, std::vector<LimitLp::RowKey>& keys, Solv
   return a;
 }
 
-// The feasibility margin of the arch of the same axis and loads with thickness t (see analyse_limit).
-struct MarginFunction {
-  Scene scene;  // a copy whose thickness changes
-  const LimitOptions& options;
-  const std::vector<double>& refined;
-  double load_factor;
-  Work& work;
-  int solves = 0;
-  bool failed = false;
-  std::vector<int> basis;  // the last margin's optimal basis: the next thickness starts from it
-  double feasible_t = std::numeric_limits<double>::infinity();
-  std::vector<double> feasible_refinement;  // around the hinges of the thinnest admissible arch so far
-  int basis_joints = 0;                     // the joints of the ring whose margin gave `basis`
-  bool feasible_blocks = false;             // the thinnest admissible arch's hinges: stress_blocks
-
-  double operator()(double t) {
-    scene.thickness = t;
-    Ring& ring = work.margin_ring;
-    limit_detail::make_ring_at(scene, options, fractions_at(scene, t, options, refined, work.beside_loads), ring,
-                               work.scratch);
-    LimitLp& lp = limit_detail::programs_of(ring, options, work.workspace, work.margin_lp);
-    // A warm start needs the same joints (a load's joints can merge with others at some thickness).
-    const bool warm = !basis.empty() && basis_joints == static_cast<int>(ring.joints.size());
-    LimitLp::Answer a = lp.margin(load_factor, warm ? &basis : nullptr);
-    ++solves;
-    basis = std::move(a.basis);
-    basis_joints = static_cast<int>(ring.joints.size());
-    // No margin at all (friction can forbid every thrust line, whatever mu): as inadmissible as it gets.
-    if (a.outcome == LimitLp::Outcome::infeasible) return kNoMargin;
-    if (a.outcome != LimitLp::Outcome::optimal) failed = true;
-    if (a.outcome == LimitLp::Outcome::optimal && a.margin >= 0 && t < feasible_t) {
-      feasible_t = t;
-      feasible_refinement.clear();
-      const ThrustState st =
-          thrust_state(ring, a.H, a.V, a.M, a.load_factor, kThinnestHingeTolerance, options.compressive_strength);
-      limit_detail::add_refinement(ring, st.hinges, feasible_refinement);
-      limit_detail::add_sliding_refinement(ring, st, options, feasible_refinement);
-      feasible_blocks = stress_blocks(ring, st.hinges);
-    }
-    return a.margin;
-  }
-};
-
 // The smallest thickness with margin >= 0, from a bracket lo < hi with f(lo) < 0 <= f(hi): Illinois
 // (regula falsi that halves the value kept twice at one end, so that both ends move). The margin has a
 // kink at its root (different joints become active on either side), so the feasible end often
 // converges alone: stop when the bracket or the feasible end's last step is below the tolerance.
 // Returns the feasible end.
-double thinnest(MarginFunction& f, double lo, double f_lo, double hi, double f_hi) {
+double thinnest(ThicknessMargin& f, double lo, double f_lo, double hi, double f_hi) {
   int side = 0;
   for (int it = 0; it < 200 && hi - lo > kThicknessTolerance * hi && !f.failed; ++it) {
     if (f_hi == 0) {
@@ -222,7 +163,7 @@ struct Bracket {
 // From an admissible thickness down, halving, to the first that does not stand; not below `floor`
 // (below kThinnestResolved L the margin is at the LP's tolerance: an arch that stands that thin, a
 // funicular one, gets no t_min and says so rather than a number of round-off).
-Bracket bracket_down(MarginFunction& f, Bracket b, double floor) {
+Bracket bracket_down(ThicknessMargin& f, Bracket b, double floor) {
   for (int i = 0; i < 60 && !f.failed && 0.5 * b.hi >= floor; ++i) {
     b.lo = 0.5 * b.hi;
     b.f_lo = f(b.lo);
@@ -237,7 +178,7 @@ Bracket bracket_down(MarginFunction& f, Bracket b, double floor) {
 }
 
 // From an inadmissible thickness up, doubling, to the first that stands; not beyond `cap`.
-Bracket bracket_up(MarginFunction& f, Bracket b, double cap) {
+Bracket bracket_up(ThicknessMargin& f, Bracket b, double cap) {
   for (int i = 0; i < 60 && !f.failed && b.hi < cap; ++i) {
     b.hi = std::min(2.0 * b.lo, cap);
     b.f_hi = f(b.hi);
@@ -260,7 +201,7 @@ constexpr double kNearMarginSteps = 10.0;
 // A bracket around t0, the t_min of the previous (coarser) ring, within (floor, ceiling): from t0 down
 // while it stands, or up while it does not, by relative steps that grow fourfold; a step up that reaches
 // the ceiling ends there, where f(ceiling) = f_ceiling (NaN: unknown).
-Bracket bracket_near(MarginFunction& f, double t0, double floor, double ceiling, double f_ceiling) {
+Bracket bracket_near(ThicknessMargin& f, double t0, double floor, double ceiling, double f_ceiling) {
   Bracket b{t0, f(t0), t0, 0.0};
   // The margin is a relative distance of the thrust line from the faces, of the order of the relative
   // change of thickness: a margin near zero at t0 puts the root that close, so try a step of a few
@@ -299,7 +240,7 @@ struct Thinnest {
 // t_min of the arch of thickness t whose margin there is `margin` (admissible: its thrust programs
 // feasible too), starting from `near` (the previous ring's t_min; NaN: none) when it lies below the
 // thickness that stands (or above t when the arch does not).
-Thinnest search_thinnest(MarginFunction& f, double t, double margin, bool admissible, double floor, double cap,
+Thinnest search_thinnest(ThicknessMargin& f, double t, double margin, bool admissible, double floor, double cap,
                          double near) {
   Thinnest out;
   // A zero margin whose thrust programs are infeasible, or a margin below zero by round-off whose thrust
@@ -480,8 +421,12 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   r.lp_solves += lp.solves() - solves_before;
 
   // t_min: bracket the root of the margin, then Illinois.
-  MarginFunction f{scene,        options, refined, load_factor, work, 0, false, lp.faces(margin.basis),
-                   std::numeric_limits<double>::infinity(), {}, static_cast<int>(ring.joints.size())};
+  ThicknessMargin f(
+      ThicknessMargin::Of::arch, scene, options,
+      [&](double thickness) { return fractions_at(scene, thickness, options, refined, work.beside_loads); }, load_factor,
+      work.margin_ring, work.scratch, work.workspace, work.margin_lp);
+  f.basis = lp.faces(margin.basis);
+  f.basis_joints = static_cast<int>(ring.joints.size());
   const double t = scene.thickness;
   const double t_cap = std::min(0.99 * max_thickness(curve), limit_detail::thickest_on_walls(scene));
   // Where the thrust vanishes at some joint the margin is zero at every thickness that stands (no
@@ -506,7 +451,7 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
     if (stress_blocks(ring, st->hinges)) work.beside_loads = true;
   }
   if (!std::isnan(r.thickness_min)) {
-    round.refinement.insert(round.refinement.end(), f.feasible_refinement.begin(), f.feasible_refinement.end());
+    round.refinement.insert(round.refinement.end(), f.refinement.begin(), f.refinement.end());
     if (f.feasible_blocks) work.beside_loads = true;
   }
   const limit_detail::WallSearch walls =

@@ -280,4 +280,53 @@ void require_loaded(const Scene& scene, const Ring& ring);
 std::string inadmissible_message(const LimitOptions& options, double t_min, double t_cap, const std::string& on,
                                  const std::string& thinner);
 
+// The margin given to a program infeasible for every mu (friction can forbid every thrust line): a
+// negative number for the root-finders, which need only the sign.
+inline constexpr double kNoMargin = -1.0;
+// A joint whose crossing lies this close to a face (relative to the joint) is a hinge of the thinnest
+// arch, or of the thinnest walls: at the root the margin is zero to the root-finder's tolerance, not to
+// round-off.
+inline constexpr double kThinnestHingeTolerance = 1e-6;
+// Whether a hinge lies inside its face by more than the hinge tolerance (a crushing joint's stress
+// block): then the rings that follow have joints beside the loads' (limit.cpp, fractions_at).
+bool stress_blocks(const Ring& ring, const std::vector<Hinge>& hinges);
+
+// The feasibility margin (LimitLp::margin under dead + load_factor * live) of the scene as a function of
+// one thickness: the arch's t (t_min's search, limit.cpp) or every wall's b_w (b_min's, walls.cpp), the
+// one root-finders' function of both. Each call builds the ring of that thickness on `fractions` of it
+// and solves its margin from the previous call's optimal basis when the ring has as many joints. A
+// program infeasible for every mu gives kNoMargin; one that stopped without an answer sets `failed`
+// (the search must stop: the value is no answer). It keeps the thinnest thickness that stood so far and
+// the refinement next to its state's hinges, for the next round's ring; the arch's also next to its
+// sliding joints (add_sliding_refinement), and whether its hinges are stress blocks.
+class ThicknessMargin {
+ public:
+  enum class Of { arch, walls };
+  // The ring's joints at a thickness (the arch's loads' joints move with its faces).
+  using Fractions = std::function<std::vector<double>(double thickness)>;
+  // The ring and the programs are built in the storage given (reused from one call to the next).
+  ThicknessMargin(Of of, const Scene& scene, const LimitOptions& options, Fractions fractions, double load_factor,
+                  Ring& ring, RingScratch& scratch, LpWorkspace& workspace, std::unique_ptr<LimitLp>& lp);
+  double operator()(double thickness);
+
+  int solves = 0;
+  bool failed = false;
+  std::vector<int> basis;  // the last margin's optimal basis: the next thickness starts from it
+  int basis_joints = 0;    // the joints of the ring whose margin gave `basis`
+  double feasible = std::numeric_limits<double>::infinity();  // the thinnest thickness that stood so far
+  std::vector<double> refinement;  // next to the hinges (the arch's: and sliding joints) of that state
+  bool feasible_blocks = false;    // the arch's: that state's hinges are stress blocks
+
+ private:
+  Of of_;
+  Scene scene_;  // a copy whose thickness changes
+  const LimitOptions& options_;
+  Fractions fractions_;
+  double load_factor_;
+  Ring& ring_;
+  RingScratch& scratch_;
+  LpWorkspace& workspace_;
+  std::unique_ptr<LimitLp>& lp_;
+};
+
 }  // namespace ogive::limit_detail

@@ -118,25 +118,27 @@ bool kept_wall_fraction(double f) {
   return false;
 }
 
+namespace {
+
+// One side's wall on the ring: its beds and blocks (in chain order) after the ring's last joint and
+// voussoir on the right, before its first on the left, under the springing joint at that end.
+void attach_wall(const Scene& scene, const std::vector<double>& fractions, bool right, Ring& ring) {
+  const std::optional<Wall>& wall = right ? scene.right_wall : scene.left_wall;
+  if (!wall) return;
+  const Joint& j = right ? ring.joints.back() : ring.joints.front();
+  const WallOutline o = wall_outline(SpringingJoint{j.intrados, j.extrados, j.axis}, *wall, right);
+  const WallChain c = wall_chain(o, *wall, scene.material.gravity, ring.span, scene.curve->whole_length(),
+                                 wall_depths(fractions, right ? kRightWallCode : kLeftWallCode));
+  ring.joints.insert(right ? ring.joints.end() : ring.joints.begin(), c.beds.begin(), c.beds.end());
+  ring.voussoirs.insert(right ? ring.voussoirs.end() : ring.voussoirs.begin(), c.blocks.begin(), c.blocks.end());
+  (right ? ring.right_wall_joints : ring.left_wall_joints) = static_cast<int>(c.beds.size());
+}
+
+}  // namespace
+
 void attach_walls(const Scene& scene, const std::vector<double>& fractions, Ring& ring) {
   ring.left_wall_joints = ring.right_wall_joints = 0;
-  if (!scene.has_walls()) return;
-  const double L = ring.span, W = scene.curve->whole_length(), g = scene.material.gravity;
-  auto joint_of = [](const Joint& j) { return SpringingJoint{j.intrados, j.extrados, j.axis}; };
-  if (scene.right_wall) {
-    const WallOutline o = wall_outline(joint_of(ring.joints.back()), *scene.right_wall, true);
-    WallChain c = wall_chain(o, *scene.right_wall, g, L, W, wall_depths(fractions, kRightWallCode));
-    ring.joints.insert(ring.joints.end(), c.beds.begin(), c.beds.end());
-    ring.voussoirs.insert(ring.voussoirs.end(), c.blocks.begin(), c.blocks.end());
-    ring.right_wall_joints = static_cast<int>(c.beds.size());
-  }
-  if (scene.left_wall) {
-    const WallOutline o = wall_outline(joint_of(ring.joints.front()), *scene.left_wall, false);
-    WallChain c = wall_chain(o, *scene.left_wall, g, L, W, wall_depths(fractions, kLeftWallCode));
-    ring.joints.insert(ring.joints.begin(), c.beds.begin(), c.beds.end());
-    ring.voussoirs.insert(ring.voussoirs.begin(), c.blocks.begin(), c.blocks.end());
-    ring.left_wall_joints = static_cast<int>(c.beds.size());
-  }
+  for (const bool right : {true, false}) attach_wall(scene, fractions, right, ring);
 }
 
 void add_refinement(const Ring& ring, const std::vector<Hinge>& hinges, std::vector<double>& out) {
@@ -205,68 +207,23 @@ namespace {
 constexpr double kWallTolerance = 1e-10;
 // The thickest wall tried, in spans.
 constexpr double kThickestWall = 1000.0;
-// A bed whose crossing lies this close to an edge (relative to the bed) is a hinge of the least wall.
-constexpr double kLeastWallHingeTolerance = 1e-6;
-
 // What the search keeps from one thickness to the next (per thread: one analysis at a time).
 struct WallWork {
   LpWorkspace workspace;
   RingScratch scratch;
   Ring ring;
   std::unique_ptr<LimitLp> lp;
-  std::vector<int> basis;
-  std::size_t basis_joints = 0;
 };
-
-// The margin (LimitLp::margin) of the scene with every wall b thick, on the joints `fractions`.
-struct WallMargin {
-  Scene scene;
-  const LimitOptions& options;
-  const std::vector<double>& fractions;
-  double load_factor;
-  WallWork& work;
-  int solves = 0;
-  bool failed = false;
-  double feasible_b = std::numeric_limits<double>::infinity();
-  std::vector<double> refinement;  // next to the hinges of the thinnest wall that stands so far
-
-  double operator()(double b) {
-    if (scene.left_wall) scene.left_wall->thickness = b;
-    if (scene.right_wall) scene.right_wall->thickness = b;
-    make_ring_at(scene, options, fractions, work.ring, work.scratch);
-    LimitLp& lp = programs_of(work.ring, options, work.workspace, work.lp);
-    const bool warm = !work.basis.empty() && work.basis_joints == work.ring.joints.size();
-    LimitLp::Answer a = lp.margin(load_factor, warm ? &work.basis : nullptr);
-    ++solves;
-    work.basis = a.basis;
-    work.basis_joints = work.ring.joints.size();
-    if (a.outcome == LimitLp::Outcome::infeasible) return -1.0;
-    if (a.outcome != LimitLp::Outcome::optimal) {
-      failed = true;
-      return -1.0;
-    }
-    if (a.margin >= 0 && b < feasible_b) {
-      feasible_b = b;
-      refinement.clear();
-      const ThrustState st = thrust_state(work.ring, a.H, a.V, a.M, a.load_factor, kLeastWallHingeTolerance,
-                                          options.compressive_strength);
-      add_refinement(work.ring, st.hinges, refinement);
-    }
-    return a.margin;
-  }
-};
-
-}  // namespace
-
-namespace {
 
 WallSearch search_wall_thickness(const Scene& scene, const LimitOptions& options, const std::vector<double>& fractions,
                                  double load_factor, double near) {
   thread_local WallWork work;
   work.scratch.forget();
-  work.basis.clear();
   WallSearch out;
-  WallMargin f{scene, options, fractions, load_factor, work, 0, false, std::numeric_limits<double>::infinity(), {}};
+  // The margin of the scene with every wall b thick, on the joints `fractions`.
+  ThicknessMargin f(
+      ThicknessMargin::Of::walls, scene, options, [&](double) { return fractions; }, load_factor, work.ring,
+      work.scratch, work.workspace, work.lp);
   // The least thickness that carries the springing joints: their horizontal widths.
   double least = 0;
   for (bool right : {false, true}) {

@@ -220,7 +220,8 @@ std::string collapse_section(const Scene& scene, const LimitResult& lim) {
 }
 
 // The spreading chart: H/V of the no-tension section against d/L, on a log axis with d = 0 at its left.
-std::string spreading_section(const Scene& scene, const ReportOptions& o, const LimitResult& lim) {
+// A scene of the no-tension section whose springings do not spread is its own point at d = 0: `sol`.
+std::string spreading_section(const Scene& scene, const Solution& sol, const ReportOptions& o, const LimitResult& lim) {
   std::vector<double> ratios{0};
   for (int k = 0; k + 1 < o.spread_points; ++k) ratios.push_back(std::pow(10.0, -6 + 4.0 * k / (o.spread_points - 2)));
   struct Point {
@@ -228,13 +229,14 @@ std::string spreading_section(const Scene& scene, const ReportOptions& o, const 
   };
   std::vector<Point> points;
   std::vector<std::string> failed;
+  const bool own_point = scene.section == SectionKind::no_tension && scene.left.spread == 0 && scene.right.spread == 0;
   for (double r : ratios) {
     Scene s = scene;
     s.section = SectionKind::no_tension;
     s.set_support_displacement(r * scene.span());
-    const Solution sol = solve(s, o.solver);
-    if (sol.ok()) points.push_back({r, over_half_load(sol)});
-    else failed.push_back(fmt::format("d/L = {:g}: {}", r, to_string(sol.status)));
+    const Solution at = r == 0 && own_point ? sol : solve(s, o.solver);
+    if (at.ok()) points.push_back({r, over_half_load(at)});
+    else failed.push_back(fmt::format("d/L = {:g}: {}", r, to_string(at.status)));
   }
   const double w = 600, h = 300, left = 60, right = 20, top = 20, bottom = 50;
   double lo = lim.H_min() / lim.V, hi = lo;
@@ -301,11 +303,18 @@ bool ReportOptions::is_valid(std::string* why) const {
   return solver.is_valid(why) && require.is_valid(why) && limit.is_valid(why);
 }
 
-std::string html_report(const Scene& scene, const ReportOptions& options) {
+Solution report_solution(const Scene& scene, const ReportOptions& options) {
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
   scene.validate();
-  return html_report(scene, solve(scene, options.solver), options);
+  // The assessment's solve (its thrust line's summary searches the field), with the drawing's profile.
+  Solution sol = solve(scene, assessment_solve_options(options.solver));
+  if (sol.field && options.solver.stations > 0) sample_profile(sol, options.solver.stations);
+  return sol;
+}
+
+std::string html_report(const Scene& scene, const ReportOptions& options) {
+  return html_report(scene, report_solution(scene, options), options);
 }
 
 std::string html_report(const Scene& scene, const Solution& sol, const ReportOptions& options) {
@@ -316,7 +325,7 @@ std::string html_report(const Scene& scene, const Solution& sol, const ReportOpt
   assessment.require = options.require;
   assessment.elastic = options.solver;
   assessment.limit = options.limit;
-  const Assessment a = assess(scene, assessment);
+  const Assessment a = assess(scene, assessment, sol);
   const LimitResult& lim = a.limit;
   DrawingOptions drawing;
   drawing.title = options.title;
@@ -331,7 +340,7 @@ std::string html_report(const Scene& scene, const Solution& sol, const ReportOpt
   page += verdict_section(a, options);
   page += "<section id=\"drawing\"><h2>The arch</h2>\n" + svg + "</section>\n";
   page += reactions_section(sol) + thrusts_section(scene, sol, lim) + safety_section(scene, lim) + collapse_section(scene, lim);
-  page += spreading_section(scene, options, lim);
+  page += spreading_section(scene, sol, options, lim);
   page += geometry_section(scene, lim.ring);
   page += "<section id=\"inputs\"><h2>Inputs as given</h2>\n<table>\n";
   for (const auto& [name, value] : options.inputs)

@@ -1,10 +1,12 @@
 // The assessment (assessment.hpp): the analyses that exist, each compared with its required value.
 #include "ogive/solve/assessment.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
 #include <stdexcept>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -250,16 +252,26 @@ bool AssessmentOptions::is_valid(std::string* why) const {
          (!required(require.spread_capacity_ratio) || spread.is_valid(why));
 }
 
+Options assessment_solve_options(const Options& elastic) {
+  Options o = elastic;
+  o.stations = std::max(o.stations, kSummaryStations);
+  o.unprinted_profile = true;
+  return o;
+}
+
 Assessment assess(const Scene& scene, const AssessmentOptions& options) {
+  std::string why;
+  if (!options.is_valid(&why)) throw std::invalid_argument(why);
+  return assess(scene, options, solve(scene, assessment_solve_options(options.elastic)));
+}
+
+Assessment assess(const Scene& scene, const AssessmentOptions& options, Solution solution) {
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
   const AssessmentCriteria& need = options.require;
   Assessment a;
 
-  Options elastic = options.elastic;
-  elastic.stations = std::max(elastic.stations, kSummaryStations);
-  elastic.unprinted_profile = true;
-  a.solution = solve(scene, elastic);
+  a.solution = std::move(solution);
   const ThrustLineSummary line = summarize_thrust_line(a.solution);
 
   LimitOptions limit = options.limit;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "ogive/solve/assessment.hpp"
+#include "ogive/solve/solve.hpp"
 #include "support/scenes.hpp"
 
 using namespace ogive;
@@ -123,6 +124,38 @@ TEST_CASE("assessment: the line of thrust against the section and the kern") {
     CHECK(a.verdict == (req == ThrustRequirement::kern ? Verdict::fail : Verdict::pass));
     CHECK(a[Criterion::geometric_safety_factor].outcome == Outcome::not_required);
     check_margins(a);
+  }
+}
+
+TEST_CASE("assessment: given its own solve (a page's, with a profile sampled since) it is the assessment that solves") {
+  // The no-tension section (a shooting method's field, searched by the thrust line's summary) and the
+  // elastic one, every criterion required: the same values to the bit, the scene solved once.
+  AssessmentOptions o;
+  o.require.horizontal_load_factor = 0.1;
+  o.require.thrust = ThrustRequirement::section;
+  o.elastic.stations = 101;
+  for (const SectionKind section : {SectionKind::elastic, SectionKind::no_tension}) {
+    CAPTURE(static_cast<int>(section));
+    Scene scene = paper_scene(0.5);
+    scene.section = section;
+    const Assessment solved = assess(scene, o);
+    Solution own = solve(scene, assessment_solve_options(o.elastic));
+    REQUIRE(own.field);
+    sample_profile(own, o.elastic.stations);
+    const Assessment given = assess(scene, o, own);
+    REQUIRE(given.solution.ok());
+    CHECK(given.solution.profile.size() == 101);
+    CHECK(given.solution.H == solved.solution.H);
+    CHECK(given.verdict == solved.verdict);
+    CHECK(given.warnings == solved.warnings);
+    for (const Criterion c : {Criterion::geometric_safety_factor, Criterion::load_factor,
+                              Criterion::horizontal_load_factor, Criterion::max_thrust_eccentricity}) {
+      CAPTURE(to_string(c));
+      CHECK(given[c].outcome == solved[c].outcome);
+      // Bitwise: both are the numbers of the same solve and analyses (NaN where there is none).
+      CHECK((given[c].value == solved[c].value || (std::isnan(given[c].value) && std::isnan(solved[c].value))));
+    }
+    CHECK(given[Criterion::max_thrust_eccentricity].outcome != Outcome::not_assessed);
   }
 }
 

@@ -55,12 +55,17 @@ struct ReportOptions {
   bool is_valid(std::string* why) const;
 };
 
-// The page (UTF-8 HTML). The scene must be valid (Scene::validate). It is solved with options.solver,
+// The page (UTF-8 HTML). The scene must be valid (Scene::validate). It is solved once (report_solution),
 // analysed by the limit analysis (options.limit) and, for the chart, solved with the no-tension
-// section at each spread. Throws std::invalid_argument naming the field for invalid options.
+// section at each spread (a no-tension scene whose springings do not spread is the chart's point at
+// d = 0 itself). Throws std::invalid_argument naming the field for invalid options.
 std::string html_report(const Scene& scene, const ReportOptions& options);
-// The same page with the scene's solution given: `solution` must be solve(scene, options.solver) (a
-// caller that needs it too solves once).
+// The scene's solve that the page reads, for the drawing, the reactions and the verdict alike:
+// solve(scene, assessment_solve_options(options.solver)) (assessment.hpp), its profile sampled at
+// options.solver.stations. Throws as html_report does.
+Solution report_solution(const Scene& scene, const ReportOptions& options);
+// The same page with that solve given: `solution` must be report_solution(scene, options) (a caller that
+// needs it too, a CSV row, solves once).
 std::string html_report(const Scene& scene, const Solution& solution, const ReportOptions& options);
 
 }  // namespace ogive

@@ -114,4 +114,12 @@ struct Assessment {
 // analyse_limit do).
 Assessment assess(const Scene& scene, const AssessmentOptions& options);
 
+// The options of assess's own solve of the scene: `elastic` with the field kept for the thrust line's
+// summary (Options::unprinted_profile, at least kSummaryStations stations for the error estimate).
+Options assessment_solve_options(const Options& elastic);
+// The same with that solve given: `solution` must be solve(scene, assessment_solve_options(options.elastic))
+// (a caller that reads it too, a page that draws it, solves once; it may have sampled a profile since,
+// sample_profile). The scene is not solved again.
+Assessment assess(const Scene& scene, const AssessmentOptions& options, Solution solution);
+
 }  // namespace ogive
