@@ -222,6 +222,16 @@ class LimitLp {
   // The normal force N_j = n_j . F_j (N/m, compression positive) of each joint in the state of an
   // optimal answer of this ring's programs.
   std::vector<double> normal_forces(const Answer& a) const;
+  // While hold_sliding holds normal forces, `basis` an optimal basis of the collapse program (H, V, M and
+  // lambda free, the margin at 0) with them held: its rows whose multiplier is positive certify the
+  // optimum whatever numbers the held rows hold, so every state inside every Coulomb cone (and every
+  // joint) with those rows tight (a held row's as its Coulomb row, |T_j| = friction N_j) is a fixed point
+  // of the non-associative iteration: held at its own normal forces, the program has it for an optimum.
+  // The largest factor among those states (the collapse program with those rows as equalities, on the
+  // Coulomb rows; the held rows are released: hold them again to go on). Not optimal when there is no
+  // such state, the basis is singular, nothing is held, or the masonry crushes (finite f_c: its cuts'
+  // rows stand for curved conditions).
+  Answer sliding_fixed_points(const std::vector<int>& basis);
   // Whether a friction row is among the rows of an optimal basis (a joint may slide in its mechanism).
   bool slides(const std::vector<int>& basis) const;
   int solves() const { return solves_; }
