@@ -14,11 +14,12 @@ programs (scipy's HiGHS, not ogive's dense simplex method):
 2. The fixed point: the program with each joint's friction rows held at that state's own normal forces
    (|T_j| <= MU N_j, fixed numbers: Gilbert, Casapulla & Ahmed's non-associative rows) has the same
    largest load factor.
-3. Its own non-associative iteration on that ring, from the associative optimum: each step holds the
-   normal forces of the previous state, takes of the optimal states the one whose normal forces are
-   nearest the held ones (least sum of |N - held|, a second program), and moves the held forces there
-   (halving the step while the change does not shrink), until they move by 1e-10 of the loads. Its
-   load factor must equal ogive's.
+3. The mechanism, by statics alone: the crown block between the joints next to the springings slides
+   down at both (vertical joints: N = H across each, and the block's vertical equilibrium gives the
+   factor from H, lam = (2 MU H - W_block) / P); bisection on H for the largest (and the least) H
+   whose state lies inside every joint and cone. ogive's factor must be the largest: every factor
+   between the two is a fixed point of the iteration as well (a face of them: the thrust across
+   joints that slide without opening is not determined), and ogive answers the face's largest.
 
 Prints one line per check and exits 1 when one fails (relative tolerance 1e-8 on the factors).
 """
@@ -164,46 +165,48 @@ def collapse(ring, friction, held=None):
     return S @ r.x
 
 
-def nearest(ring, friction, held, factor):
-    """Of the states at `factor` (a hair below the optimum) with the friction rows held, the one whose
-    normal forces are nearest `held` (least sum of |N - held|): unknowns z and e_j >= |N_j - held_j|."""
-    A, b, S = scaled(ring, *ring.rows(friction, held))
-    n = len(ring.I)
-    aN, cN = ring.linear(ring.n)
-    aN = aN @ S / ring.W
-    target = (held - cN) / ring.W
-    eye = np.eye(n)
-    A_ub = np.vstack([np.hstack([A, np.zeros((len(A), n))]), np.hstack([aN, -eye]), np.hstack([-aN, -eye])])
-    b_ub = np.concatenate([b, target, -target])
-    lam = factor * (1 - 1e-10)
-    bounds = [(0, None), (None, None), (None, None), (lam, lam)] + [(0, None)] * n
-    r = linprog(np.concatenate([np.zeros(4), np.ones(n)]), A_ub=A_ub, b_ub=b_ub, bounds=bounds, method="highs",
-                options={"primal_feasibility_tolerance": 1e-10, "dual_feasibility_tolerance": 1e-10})
-    if r.status != 0:
+def slide_statics(ring, friction, a, b, H):
+    """The crown block between joints a and b (vertical joints: N = H across each, T vertical) sliding down
+    at both, T_a = friction H and T_b = -friction H: its vertical equilibrium fixes lam, the left part's
+    V follows, and M must lie within every joint's face bounds. (lam, V, M) of such a state inside
+    every joint and cone, or None."""
+    W_block, P_block = ring.D[b] - ring.D[a], ring.P[b] - ring.P[a]
+    lam = (2 * friction * H - W_block) / P_block
+    if lam < 0:
         return None
-    return S @ r.x[:4]
+    V = friction * H + ring.D[a] + lam * ring.P[a]
+    Fy = V - ring.D - lam * ring.P
+    T, N = ring.shear(np.array([H, V, 0, lam])), ring.normal(np.array([H, V, 0, lam]))
+    if np.any(np.abs(T) - friction * N > 1e-12 * ring.W):
+        return None
+    cross = lambda Q: Q[:, 0] * Fy - Q[:, 1] * H
+    base = ring.MD + lam * ring.MP
+    upper, lower = base + cross(ring.I), base + cross(ring.E)  # m - I x F <= 0, m - E x F >= 0
+    if np.max(lower) > np.min(upper) + 1e-12 * ring.W * SPAN:
+        return None
+    return lam, V, 0.5 * (np.max(lower) + np.min(upper))
 
 
-def iterate(ring, friction, max_iterations=400):
-    z = collapse(ring, friction)
-    held = ring.normal(z)
-    step, previous = 1.0, np.inf
-    for it in range(1, max_iterations + 1):
-        top = collapse(ring, friction, held)
-        if top is None:
-            return None, it, "infeasible"
-        z = nearest(ring, friction, held, top[3]) if True else top
-        if z is None:
-            z = top
-        N = ring.normal(z)
-        change = np.max(np.abs(N - held)) / (ring.D[-1] + z[3] * ring.P[-1])
-        if change <= ITERATION_TOLERANCE:
-            return z, it, "converged"
-        if not change < 0.9 * previous:
-            step = max(0.5 * step, 1 / 64)
-        previous = change
-        held = held + step * (N - held)
-    return z, max_iterations, f"moved {previous:.3g}"
+def face_by_statics(ring, friction, H0):
+    """The range of factors of the crown block's slide at the joints next to the springings, by bisection
+    on H from a state that stands (H0): the states of one slide form an interval of H."""
+    a, b = 1, len(ring.I) - 2
+    H0 *= 1 - 1e-6  # inside the face, below its top (where ogive's state lies, to the rows' tolerance)
+    if slide_statics(ring, friction, a, b, H0) is None:
+        return None
+    ends = []
+    for direction in (-1, 1):
+        lo, hi = H0, H0
+        while slide_statics(ring, friction, a, b, hi) is not None and abs(hi) < 1e3 * H0:
+            hi = H0 + 2 * (hi - H0) + direction * 1e-3 * H0
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            if slide_statics(ring, friction, a, b, mid) is not None:
+                lo = mid
+            else:
+                hi = mid
+        ends.append(slide_statics(ring, friction, a, b, lo)[0])
+    return ends
 
 
 def main():
@@ -240,9 +243,14 @@ def main():
           else "no optimum")
     assoc = collapse(ring, mu)
     print(f"associative on the same ring: {assoc[3]:.12g}")
-    own, its, how = iterate(ring, mu)
-    check("own iteration", own is not None and how == "converged" and abs(own[3] - lam) <= TOLERANCE * lam,
-          f"{how} after {its} steps: {own[3] if own is not None else float('nan'):.12g}")
+    face = face_by_statics(ring, mu, H)
+    if face is None:
+        check("the crown block's slide", False, "ogive's state is not the slide at the joints next to the springings")
+    else:
+        low, top = face
+        check("largest factor of the slide", abs(top - lam) <= TOLERANCE * lam,
+              f"by statics {top:.12g} (relative {abs(top - lam) / lam:.1e}); every factor from {low:.6g} up is "
+              "a fixed point too (the thrust across the sliding joints is not determined)")
     sys.exit(1 if failures else 0)
 
 

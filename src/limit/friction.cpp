@@ -142,6 +142,7 @@ SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptio
     return out;
   };
   std::vector<std::vector<int>> tried;  // the bases whose face has been tried, each sorted
+  const bool faces = !std::isfinite(options.compressive_strength);  // LimitLp::sliding_fixed_points
   double last_factor = first.load_factor, last_move = 0;
   for (int it = 1; it <= kMaxSlidingIterations; ++it) {
     out.iterations = it;
@@ -192,10 +193,12 @@ SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptio
     out.answer = std::move(i.answer);
     // The step: halved while the change fails to shrink by a tenth (the iteration can oscillate between
     // two mechanisms), doubled (up to a whole one) while the factor keeps moving one way with the
-    // change not growing by more than kSlidingGrowth (a drift along a path, not an oscillation).
+    // change not growing by more than kSlidingGrowth (a drift along a path, not an oscillation). Longer
+    // steps take another path, which may end elsewhere: only where the faces end the iteration (not
+    // with crushing, whose cuts stand for curved rows), at their largest factor.
     const double move = out.answer.load_factor - last_factor;
     if (!(change < 0.9 * previous)) step = std::max(0.5 * step, kSlidingRelaxationFloor);
-    if (it > 2 && change <= kSlidingGrowth * previous && move * last_move > 0) step = std::min(1.0, 2 * step);
+    if (faces && it > 2 && change <= kSlidingGrowth * previous && move * last_move > 0) step = std::min(1.0, 2 * step);
     last_move = move;
     last_factor = out.answer.load_factor;
     previous = change;
