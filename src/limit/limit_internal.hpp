@@ -67,7 +67,8 @@ inline double joint_normal_force(const Joint& joint, const Eigen::Vector2d& F) {
 double arch_half_load(const Ring& ring);
 // The least wall thickness of the scene on the joints `fractions`, under dead + load_factor * live,
 // starting near `near` (the previous ring's; NaN: none): into r (wall_thickness_min, lp_solves), with
-// the refinement next to its hinges appended to `refinement`. Nothing without walls.
+// the refinement next to its hinges and its joints on their cones appended to `refinement`. Nothing
+// without walls.
 struct WallSearch {
   double b_min = std::numeric_limits<double>::quiet_NaN();
   std::string note;                // why there is no root, or why it is the least thickness allowed

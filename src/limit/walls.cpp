@@ -228,7 +228,8 @@ struct WallMargin {
   int solves = 0;
   bool failed = false;
   double feasible_b = std::numeric_limits<double>::infinity();
-  std::vector<double> refinement;  // next to the hinges of the thinnest wall that stands so far
+  // Next to the hinges, and to the joints on their friction cones, of the thinnest wall that stands so far.
+  std::vector<double> refinement;
 
   double operator()(double b) {
     if (scene.left_wall) scene.left_wall->thickness = b;
@@ -251,6 +252,7 @@ struct WallMargin {
       const ThrustState st = thrust_state(work.ring, a.H, a.V, a.M, a.load_factor, kLeastWallHingeTolerance,
                                           options.compressive_strength);
       add_refinement(work.ring, st.hinges, refinement);
+      add_sliding_refinement(work.ring, st, options, refinement);  // a joint on its cone bounds it too
     }
     return a.margin;
   }
