@@ -270,8 +270,13 @@ using SolveWarm = std::function<LimitLp::Answer(const std::vector<int>*)>;
 // the Coulomb rows (the associative answer). Each iteration holds every joint's friction rows at the
 // normal forces N_prev of the previous state (|T| <= friction N_prev: fixed numbers), re-solves, and moves
 // N_prev towards the new normal forces, by a step halved whenever the change fails to shrink by a tenth
-// (the iteration can oscillate between two mechanisms). At the fixed point the state lies inside every
-// Coulomb cone (N = N_prev) and its mechanism, the normality of fixed-N rows, slides without opening.
+// (the iteration can oscillate between two mechanisms) and doubled while the factor drifts one way. At
+// a fixed point the state lies inside every Coulomb cone (N = N_prev) and its mechanism, the normality
+// of fixed-N rows, slides without opening. The fixed points come in faces (LimitLp::sliding_fixed_points:
+// the states inside the cones with the rows that certify an optimal basis tight), along which the factor
+// varies: at each new basis, and where the steps converge, the iteration ends at the state of largest
+// factor of the basis' face when held at its own normal forces it passes the same test (1e-10 of the
+// loads). With crushing the faces are not used and the steps not doubled.
 // `load_scale`: the live load's magnitude at factor 1 (added to the dead loads times the factor found).
 SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptions& options,
                                  const LimitLp::Answer& first, double load_scale, const SolveWarm& solve);
