@@ -99,7 +99,8 @@ LimitLp::Answer nearest_optimal_state(LimitLp& lp, const LimitLp::Answer& a, con
 
 SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptions& options,
                                  const LimitLp::Answer& first, double load_scale, const SolveWarm& solve) {
-  SlidingIteration out{first, {}, 0};
+  SlidingIteration out;
+  out.answer = first;
   if (!(options.friction > 0) || options.friction_model != FrictionModel::non_associative ||
       first.outcome != LimitLp::Outcome::optimal || !lp.slides(first.basis))
     return out;  // no joint on its cone in the optimum's basis: its mechanism only hinges (no dilatancy)
@@ -136,7 +137,16 @@ SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptio
     if (!(f.change <= kSlidingTolerance)) return std::nullopt;
     return f;
   };
-  auto converged = [&](Iterate&& i) {
+  // The answer, and (from a face's top, `face` its basis) the face's least factor where it is lower.
+  auto converged = [&](Iterate&& i, const std::vector<int>* face) {
+    if (face) {
+      const LimitLp::Answer low = lp.sliding_fixed_points(*face, true);
+      if (low.outcome == LimitLp::Outcome::optimal && low.load_factor < (1 - kLimitTolerance) * i.answer.load_factor)
+        out.note = fmt::format("non-associative: every factor from {:.6g} up to the one given holds a state with the "
+                               "sliding joints on their cones (the thrust across them is not determined); the "
+                               "largest is given",
+                               std::max(0.0, low.load_factor));
+    }
     lp.hold_sliding({});
     out.answer = std::move(i.answer);
     return out;
@@ -184,10 +194,11 @@ SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptio
     if (untried) tried.push_back(std::move(key));
     if (i.change <= kSlidingTolerance) {
       std::optional<Iterate> top = top_of_face(basis);
-      return converged(top && top->answer.load_factor >= i.answer.load_factor ? std::move(*top) : std::move(i));
+      if (top && top->answer.load_factor >= i.answer.load_factor) return converged(std::move(*top), &basis);
+      return converged(std::move(i), nullptr);
     }
     if (untried)
-      if (std::optional<Iterate> top = top_of_face(basis)) return converged(std::move(*top));
+      if (std::optional<Iterate> top = top_of_face(basis)) return converged(std::move(*top), &basis);
     const double change = i.change;
     const std::vector<double>& N = i.N;
     out.answer = std::move(i.answer);

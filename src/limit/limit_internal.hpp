@@ -194,8 +194,9 @@ class LimitLp {
   // `warm`: the basis of the margin of a ring with the same joints count (another thickness), to start
   // from.
   Answer margin(double load_factor, const std::vector<int>* warm = nullptr);
-  // The largest load factor lambda >= 0 with an admissible state (mu = 0).
-  Answer collapse(const std::vector<int>* warm = nullptr);
+  // The largest load factor lambda >= 0 with an admissible state (mu = 0); `least`: the smallest (the
+  // bottom of a face of states, LimitLp::sliding_fixed_points).
+  Answer collapse(const std::vector<int>* warm = nullptr, bool least = false);
   // A row by what it says rather than by its index, which a finer ring changes: the arc length of its
   // joint (Joint::s) and its place among the joint's rows, or infinity and its place among the sign and
   // cap rows after the joints; a crushing cut (finite f_c) has its face row's key with `cut` the normal
@@ -231,8 +232,8 @@ class LimitLp {
   // The largest factor among those states (the collapse program with those rows as equalities, on the
   // Coulomb rows; the held rows are released: hold them again to go on). Not optimal when there is no
   // such state, the basis is singular, nothing is held, or the masonry crushes (finite f_c: its cuts'
-  // rows stand for curved conditions).
-  Answer sliding_fixed_points(const std::vector<int>& basis);
+  // rows stand for curved conditions). `least`: the least factor among them instead.
+  Answer sliding_fixed_points(const std::vector<int>& basis, bool least = false);
   // Whether a friction row is among the rows of an optimal basis (a joint may slide in its mechanism).
   bool slides(const std::vector<int>& basis) const;
   int solves() const { return solves_; }
@@ -262,6 +263,10 @@ LimitLp& programs_of(const Ring& ring, const LimitOptions& options, LpWorkspace&
 struct SlidingIteration {
   LimitLp::Answer answer;
   std::string failure;
+  // Where the answer is the largest factor of a face of fixed points whose least factor is below it by
+  // more than the limit tolerance: says so (every factor between holds a state with the sliding joints
+  // on their cones); else empty.
+  std::string note;
   int iterations = 0;
 };
 // A program of lp solved from an optimal basis to start from (nullptr: none).

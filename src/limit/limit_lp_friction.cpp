@@ -50,7 +50,7 @@ void LimitLp::hold_sliding(const std::vector<double>& normal_forces) {
   }
 }
 
-LimitLp::Answer LimitLp::sliding_fixed_points(const std::vector<int>& basis) {
+LimitLp::Answer LimitLp::sliding_fixed_points(const std::vector<int>& basis, bool least) {
   Impl& p = *impl_;
   constexpr int kFree = 4;  // H, V, M and lambda; the margin held at 0
   if (p.coulomb.empty() || std::isfinite(p.strength) || static_cast<int>(basis.size()) != kFree) return Answer{};
@@ -74,7 +74,7 @@ LimitLp::Answer LimitLp::sliding_fixed_points(const std::vector<int>& basis) {
     tight.emplace_back(basis[static_cast<std::size_t>(i)], row.equality);
     row.equality = true;
   }
-  Answer a = collapse(&basis);
+  Answer a = collapse(&basis, least);
   for (const auto& [r, was] : tight) p.rows[static_cast<std::size_t>(r)].equality = was;
   return a;
 }

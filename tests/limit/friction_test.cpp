@@ -369,6 +369,8 @@ TEST_CASE("limit: friction: non-associative on vertical joints: the crown block'
   const double carries_weight = (slide.D[static_cast<std::size_t>(n - 2)] - slide.D[1]) / (2 * mu);
   CHECK(slide.stands(carries_weight * (1 + 1e-6)));
   CHECK(slide.factor(carries_weight * (1 + 1e-6)) < 1e-4 * r.load_factor());
+  // And the message says so.
+  CHECK(r.message.find("non-associative: every factor from 0 up to the one given") != std::string::npos);
   // The iteration ends at that face instead of creeping towards it by relaxed steps (some 44000
   // programs in all, against about 1400 now; the associative analysis takes about 100).
   CHECK(r.lp_solves < 5000);
