@@ -65,14 +65,6 @@ constexpr double kBelowOptimum = 1e-10;
 
 // Of the states at `a`'s factor (times 1 - kBelowOptimum) between the least and the largest thrust, the
 // one whose normal forces are nearest `held` (least squares); `a` itself when those programs fail.
-// An iterate: the state, its normal forces, and how far they are from the held ones (relative to
-// `scale`, the loads at its factor).
-struct Iterate {
-  LimitLp::Answer answer;
-  std::vector<double> N;
-  double change = 0, scale = 1;
-};
-
 LimitLp::Answer nearest_optimal_state(LimitLp& lp, const LimitLp::Answer& a, const std::vector<double>& held) {
   const double factor = a.load_factor * (1 - kBelowOptimum);
   const LimitLp::Answer lo = lp.extreme_thrust(factor, false), hi = lp.extreme_thrust(factor, true);
@@ -94,6 +86,54 @@ LimitLp::Answer nearest_optimal_state(LimitLp& lp, const LimitLp::Answer& a, con
   return out;
 }
 
+// An iterate: the state, its normal forces, and how far they are from the held ones (relative to
+// `scale`, the loads at its factor).
+struct Iterate {
+  LimitLp::Answer answer;
+  std::vector<double> N;
+  double change = 0, scale = 1;
+};
+
+// The optimal state nearest the held forces `h` (`a` the program's optimum with them held), its normal
+// forces, and how far they are from `h` (relative to the loads at its factor): the iteration's test.
+// The program's optimum is a vertex, whose normal forces jump from one to the next (H and the
+// reactions are free of the held rows): of the optimal states along the thrust (the least and the
+// largest H at the factor found, a hair below it), the one whose normal forces are nearest the held
+// ones, so that a state with N = held, where one exists, ends the iteration.
+Iterate iterate_at(LimitLp& lp, const Ring& ring, double load_scale, const LimitLp::Answer& a,
+                   const std::vector<double>& h) {
+  Iterate i{nearest_optimal_state(lp, a, h), {}, 0, 1};
+  i.N = lp.normal_forces(i.answer);
+  const double scale = std::abs(ring.total_dead()) + std::abs(i.answer.load_factor) * load_scale;
+  i.scale = scale > 0 ? scale : 1.0;
+  for (std::size_t j = 0; j < i.N.size(); ++j) i.change = std::max(i.change, std::abs(i.N[j] - h[j]));
+  i.change /= i.scale;
+  return i;
+}
+
+// The fixed points that the optimal basis `b` certifies (LimitLp::sliding_fixed_points): the one of
+// largest factor, held at its own normal forces and confirmed by the same test as every iterate's.
+std::optional<Iterate> top_of_face(LimitLp& lp, const Ring& ring, double load_scale, const SolveWarm& solve,
+                                   const std::vector<int>& b) {
+  const LimitLp::Answer s = lp.sliding_fixed_points(b);
+  if (s.outcome != LimitLp::Outcome::optimal) return std::nullopt;
+  const std::vector<double> fixed = lp.normal_forces(s);
+  lp.hold_sliding(fixed);
+  const LimitLp::Answer c = solve(&b);
+  if (c.outcome != LimitLp::Outcome::optimal) return std::nullopt;
+  Iterate f = iterate_at(lp, ring, load_scale, c, fixed);
+  if (!(f.change <= kSlidingTolerance)) return std::nullopt;
+  return f;
+}
+
+// SlidingIteration::note of an answer `factor` at the top of the face of basis `face` (rows held).
+std::string face_note(LimitLp& lp, const std::vector<int>& face, double factor) {
+  const LimitLp::Answer low = lp.sliding_fixed_points(face, true);
+  if (low.outcome != LimitLp::Outcome::optimal || !(low.load_factor < (1 - kLimitTolerance) * factor)) return {};
+  return fmt::format("non-associative: every factor from {:.6g} up to the one given holds a state with the sliding "
+                     "joints on their cones (the thrust across them is not determined); the largest is given",
+                     std::max(0.0, low.load_factor));
+}
 
 }  // namespace
 
@@ -109,44 +149,12 @@ SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptio
   std::vector<double> good = held, good_N = held;
   double step = 1.0, previous = std::numeric_limits<double>::infinity();
   std::vector<int> basis = first.basis;
-  // The optimal state nearest the held forces `h` (`a` the program's optimum with them held), its normal
-  // forces, and how far they are from `h` (relative to the loads at its factor): the iteration's test.
-  // The program's optimum is a vertex, whose normal forces jump from one to the next (H and the
-  // reactions are free of the held rows): of the optimal states along the thrust (the least and the
-  // largest H at the factor found, a hair below it), the one whose normal forces are nearest the held
-  // ones, so that a state with N = held, where one exists, ends the iteration.
   auto iterate = [&](const LimitLp::Answer& a, const std::vector<double>& h) {
-    Iterate i{nearest_optimal_state(lp, a, h), {}, 0, 1};
-    i.N = lp.normal_forces(i.answer);
-    const double scale = std::abs(ring.total_dead()) + std::abs(i.answer.load_factor) * load_scale;
-    i.scale = scale > 0 ? scale : 1.0;
-    for (std::size_t j = 0; j < i.N.size(); ++j) i.change = std::max(i.change, std::abs(i.N[j] - h[j]));
-    i.change /= i.scale;
-    return i;
-  };
-  // The fixed points that the optimal basis `b` certifies (LimitLp::sliding_fixed_points): the one of
-  // largest factor, held at its own normal forces and confirmed by the same test as every iterate's.
-  auto top_of_face = [&](const std::vector<int>& b) -> std::optional<Iterate> {
-    const LimitLp::Answer s = lp.sliding_fixed_points(b);
-    if (s.outcome != LimitLp::Outcome::optimal) return std::nullopt;
-    const std::vector<double> fixed = lp.normal_forces(s);
-    lp.hold_sliding(fixed);
-    const LimitLp::Answer c = solve(&b);
-    if (c.outcome != LimitLp::Outcome::optimal) return std::nullopt;
-    Iterate f = iterate(c, fixed);
-    if (!(f.change <= kSlidingTolerance)) return std::nullopt;
-    return f;
+    return iterate_at(lp, ring, load_scale, a, h);
   };
   // The answer, and (from a face's top, `face` its basis) the face's least factor where it is lower.
   auto converged = [&](Iterate&& i, const std::vector<int>* face) {
-    if (face) {
-      const LimitLp::Answer low = lp.sliding_fixed_points(*face, true);
-      if (low.outcome == LimitLp::Outcome::optimal && low.load_factor < (1 - kLimitTolerance) * i.answer.load_factor)
-        out.note = fmt::format("non-associative: every factor from {:.6g} up to the one given holds a state with the "
-                               "sliding joints on their cones (the thrust across them is not determined); the "
-                               "largest is given",
-                               std::max(0.0, low.load_factor));
-    }
+    if (face) out.note = face_note(lp, *face, i.answer.load_factor);
     lp.hold_sliding({});
     out.answer = std::move(i.answer);
     return out;
@@ -193,12 +201,12 @@ SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptio
     const bool untried = std::find(tried.begin(), tried.end(), key) == tried.end();
     if (untried) tried.push_back(std::move(key));
     if (i.change <= kSlidingTolerance) {
-      std::optional<Iterate> top = top_of_face(basis);
+      std::optional<Iterate> top = top_of_face(lp, ring, load_scale, solve, basis);
       if (top && top->answer.load_factor >= i.answer.load_factor) return converged(std::move(*top), &basis);
       return converged(std::move(i), nullptr);
     }
     if (untried)
-      if (std::optional<Iterate> top = top_of_face(basis)) return converged(std::move(*top), &basis);
+      if (std::optional<Iterate> top = top_of_face(lp, ring, load_scale, solve, basis)) return converged(std::move(*top), &basis);
     const double change = i.change;
     const std::vector<double>& N = i.N;
     out.answer = std::move(i.answer);
