@@ -206,7 +206,8 @@ SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptio
       return converged(std::move(i), nullptr);
     }
     if (untried)
-      if (std::optional<Iterate> top = top_of_face(lp, ring, load_scale, solve, basis)) return converged(std::move(*top), &basis);
+      if (std::optional<Iterate> top = top_of_face(lp, ring, load_scale, solve, basis))
+        return converged(std::move(*top), &basis);
     const double change = i.change;
     const std::vector<double>& N = i.N;
     out.answer = std::move(i.answer);

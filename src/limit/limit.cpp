@@ -674,7 +674,8 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
     r.horizontal_state = std::move(h.collapse.state);
     r.horizontal_load_factor_mechanism = h.collapse.mechanism;
     r.horizontal_ring = std::move(h.ring);
-    if (!h.collapse.sliding_note.empty()) r.message += std::string(r.message.empty() ? "" : "; ") + "a_c " + h.collapse.sliding_note;
+    if (!h.collapse.sliding_note.empty())
+      r.message += std::string(r.message.empty() ? "" : "; ") + "a_c " + h.collapse.sliding_note;
     if (!h.collapse.mechanism_hinges.empty()) r.horizontal_state.hinges = std::move(h.collapse.mechanism_hinges);
     if (fails_virtual_work(r, "collapse acceleration", r.horizontal_load_factor(), r.horizontal_load_factor_mechanism))
       return r;

@@ -1,6 +1,6 @@
-// Non-associative friction's rows (LimitLp::hold_sliding, normal_forces, slides, sliding_fixed_point):
+// Non-associative friction's rows (LimitLp::hold_sliding, normal_forces, slides, sliding_fixed_points):
 // the friction rows of each joint held at given normal forces and back, the joints' normal forces of a
-// state, and the normal forces that a basis of the collapse program holds at its own vertex.
+// state, and the face of fixed points that an optimal basis with the rows held certifies.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -8,10 +8,10 @@
 #include <utility>
 #include <vector>
 
+#include <Eigen/LU>
+
 #include "limit/limit_internal.hpp"
 #include "limit/limit_lp_impl.hpp"
-
-#include <Eigen/LU>
 
 namespace ogive::limit_detail {
 

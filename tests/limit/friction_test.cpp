@@ -342,7 +342,7 @@ struct CrownSlide {
 TEST_CASE("limit: friction: non-associative on vertical joints: the crown block's slide at its largest thrust, by statics") {
   // The segmental arch of rise L/4, t = 0.18 L, vertical joints, 50 kN/m at 0.3 L, friction 0.6: the
   // associative factor is some 240, the non-associative one 11.74: the block between the joints next to
-  // the springings slides down at both (they lie nearly along the thrust), resisted by friction H each.
+  // the springings slides down at both (they lie nearly along the thrust), held by friction MU H at each.
   Scene scene = paper_scene(0.0, 0.18);
   scene.curve = make_segmental(10.0, 0.25);
   scene.loads.points.push_back({5e4, 0.3});
