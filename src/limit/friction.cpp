@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,9 @@ namespace {
 constexpr int kMaxSlidingIterations = 4000;
 constexpr double kSlidingTolerance = 1e-10;
 constexpr double kSlidingRelaxationFloor = 1.0 / 64;
+// The growth of the change (relative) up to which a step that moves the factor the same way as the last
+// one is doubled: the drift of a path whose change stays nearly constant.
+constexpr double kSlidingGrowth = 1.05;
 // The shortest step tried towards held forces with no state before giving up.
 constexpr double kSlidingRetryFloor = 1e-6;
 
@@ -82,12 +86,61 @@ LimitLp::Answer nearest_optimal_state(LimitLp& lp, const LimitLp::Answer& a, con
   return out;
 }
 
+// An iterate: the state, its normal forces, and how far they are from the held ones (relative to
+// `scale`, the loads at its factor).
+struct Iterate {
+  LimitLp::Answer answer;
+  std::vector<double> N;
+  double change = 0, scale = 1;
+};
+
+// The optimal state nearest the held forces `h` (`a` the program's optimum with them held), its normal
+// forces, and how far they are from `h` (relative to the loads at its factor): the iteration's test.
+// The program's optimum is a vertex, whose normal forces jump from one to the next (H and the
+// reactions are free of the held rows): of the optimal states along the thrust (the least and the
+// largest H at the factor found, a hair below it), the one whose normal forces are nearest the held
+// ones, so that a state with N = held, where one exists, ends the iteration.
+Iterate iterate_at(LimitLp& lp, const Ring& ring, double load_scale, const LimitLp::Answer& a,
+                   const std::vector<double>& h) {
+  Iterate i{nearest_optimal_state(lp, a, h), {}, 0, 1};
+  i.N = lp.normal_forces(i.answer);
+  const double scale = std::abs(ring.total_dead()) + std::abs(i.answer.load_factor) * load_scale;
+  i.scale = scale > 0 ? scale : 1.0;
+  for (std::size_t j = 0; j < i.N.size(); ++j) i.change = std::max(i.change, std::abs(i.N[j] - h[j]));
+  i.change /= i.scale;
+  return i;
+}
+
+// The fixed points that the optimal basis `b` certifies (LimitLp::sliding_fixed_points): the one of
+// largest factor, held at its own normal forces and confirmed by the same test as every iterate's.
+std::optional<Iterate> top_of_face(LimitLp& lp, const Ring& ring, double load_scale, const SolveWarm& solve,
+                                   const std::vector<int>& b) {
+  const LimitLp::Answer s = lp.sliding_fixed_points(b);
+  if (s.outcome != LimitLp::Outcome::optimal) return std::nullopt;
+  const std::vector<double> fixed = lp.normal_forces(s);
+  lp.hold_sliding(fixed);
+  const LimitLp::Answer c = solve(&b);
+  if (c.outcome != LimitLp::Outcome::optimal) return std::nullopt;
+  Iterate f = iterate_at(lp, ring, load_scale, c, fixed);
+  if (!(f.change <= kSlidingTolerance)) return std::nullopt;
+  return f;
+}
+
+// SlidingIteration::note of an answer `factor` at the top of the face of basis `face` (rows held).
+std::string face_note(LimitLp& lp, const std::vector<int>& face, double factor) {
+  const LimitLp::Answer low = lp.sliding_fixed_points(face, true);
+  if (low.outcome != LimitLp::Outcome::optimal || !(low.load_factor < (1 - kLimitTolerance) * factor)) return {};
+  return fmt::format("non-associative: every factor from {:.6g} up to the one given holds a state with the sliding "
+                     "joints on their cones (the thrust across them is not determined); the largest is given",
+                     std::max(0.0, low.load_factor));
+}
 
 }  // namespace
 
 SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptions& options,
                                  const LimitLp::Answer& first, double load_scale, const SolveWarm& solve) {
-  SlidingIteration out{first, {}, 0};
+  SlidingIteration out;
+  out.answer = first;
   if (!(options.friction > 0) || options.friction_model != FrictionModel::non_associative ||
       first.outcome != LimitLp::Outcome::optimal || !lp.slides(first.basis))
     return out;  // no joint on its cone in the optimum's basis: its mechanism only hinges (no dilatancy)
@@ -96,6 +149,19 @@ SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptio
   std::vector<double> good = held, good_N = held;
   double step = 1.0, previous = std::numeric_limits<double>::infinity();
   std::vector<int> basis = first.basis;
+  auto iterate = [&](const LimitLp::Answer& a, const std::vector<double>& h) {
+    return iterate_at(lp, ring, load_scale, a, h);
+  };
+  // The answer, and (from a face's top, `face` its basis) the face's least factor where it is lower.
+  auto converged = [&](Iterate&& i, const std::vector<int>* face) {
+    if (face) out.note = face_note(lp, *face, i.answer.load_factor);
+    lp.hold_sliding({});
+    out.answer = std::move(i.answer);
+    return out;
+  };
+  std::vector<std::vector<int>> tried;  // the bases whose face has been tried, each sorted
+  const bool faces = !std::isfinite(options.compressive_strength);  // LimitLp::sliding_fixed_points
+  double last_factor = first.load_factor, last_move = 0;
   for (int it = 1; it <= kMaxSlidingIterations; ++it) {
     out.iterations = it;
     lp.hold_sliding(held);
@@ -110,35 +176,57 @@ SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptio
     if (a.outcome != LimitLp::Outcome::optimal) {
       lp.hold_sliding({});
       out.answer = LimitLp::Answer{};
-      out.failure = fmt::format("no state with the joints' normal forces held at iteration {} ({})", it,
-                                a.outcome == LimitLp::Outcome::infeasible ? "infeasible"
-                                : a.outcome == LimitLp::Outcome::unbounded ? "unbounded"
-                                                                           : (a.failure ? a.failure : "LP failure"));
+      out.failure =
+          a.outcome == LimitLp::Outcome::infeasible
+              ? fmt::format("no state with the joints' normal forces held at iteration {}: the last state's normal "
+                            "forces (factor {:.6g}) differed from the held ones by {:.3g} of the loads, and steps "
+                            "towards them down to {:.0e} of the way left no state",
+                            it, last_factor, previous, kSlidingRetryFloor)
+              : fmt::format("no state with the joints' normal forces held at iteration {} ({})", it,
+                            a.outcome == LimitLp::Outcome::unbounded ? "unbounded"
+                                                                      : (a.failure ? a.failure : "LP failure"));
       return out;
     }
-    // The program's optimum is a vertex, whose normal forces jump from one to the next (H and the
-    // reactions are free of the held rows): of the optimal states along the thrust (the least and the
-    // largest H at the factor found, a hair below it), take the one whose normal forces are nearest the
-    // held ones, so that a state with N = held, where one exists, ends the iteration.
-    a = nearest_optimal_state(lp, a, held);
-    const std::vector<double> N = lp.normal_forces(a);
-    const double scale = std::abs(ring.total_dead()) + std::abs(a.load_factor) * load_scale;
-    double change = 0;
-    for (std::size_t j = 0; j < N.size(); ++j) change = std::max(change, std::abs(N[j] - held[j]));
-    change /= scale > 0 ? scale : 1.0;
-    basis = a.basis;
-    out.answer = std::move(a);
-    if (change <= kSlidingTolerance) {
-      lp.hold_sliding({});
-      return out;
+    Iterate i = iterate(a, held);
+    basis = i.answer.basis;
+    // The basis' rows with a positive multiplier certify the optimum whatever numbers the held rows
+    // hold, so every state inside the cones with those rows tight is a fixed point: a face of them,
+    // along which the factor varies (the thrust across sliding joints is not determined where they
+    // slide without opening). The relaxed steps below creep towards that face for thousands of
+    // programs, and stop wherever they enter it: its state of largest factor ends the iteration as soon
+    // as the test confirms it (each basis tried once; a face with no state leaves the iteration where
+    // it was), and is the answer also where the steps entered the face below it.
+    std::vector<int> key = basis;
+    std::sort(key.begin(), key.end());
+    const bool untried = std::find(tried.begin(), tried.end(), key) == tried.end();
+    if (untried) tried.push_back(std::move(key));
+    if (i.change <= kSlidingTolerance) {
+      std::optional<Iterate> top = top_of_face(lp, ring, load_scale, solve, basis);
+      if (top && top->answer.load_factor >= i.answer.load_factor) return converged(std::move(*top), &basis);
+      return converged(std::move(i), nullptr);
     }
+    if (untried)
+      if (std::optional<Iterate> top = top_of_face(lp, ring, load_scale, solve, basis))
+        return converged(std::move(*top), &basis);
+    const double change = i.change;
+    const std::vector<double>& N = i.N;
+    out.answer = std::move(i.answer);
+    // The step: halved while the change fails to shrink by a tenth (the iteration can oscillate between
+    // two mechanisms), doubled (up to a whole one) while the factor keeps moving one way with the
+    // change not growing by more than kSlidingGrowth (a drift along a path, not an oscillation). Longer
+    // steps take another path, which may end elsewhere: only where the faces end the iteration (not
+    // with crushing, whose cuts stand for curved rows), at their largest factor.
+    const double move = out.answer.load_factor - last_factor;
     if (!(change < 0.9 * previous)) step = std::max(0.5 * step, kSlidingRelaxationFloor);
+    if (faces && it > 2 && change <= kSlidingGrowth * previous && move * last_move > 0) step = std::min(1.0, 2 * step);
+    last_move = move;
+    last_factor = out.answer.load_factor;
     previous = change;
     // The same state as the last iteration's (its vertex settled): the relaxed steps would only creep
     // towards its normal forces; hold them at once.
     double moved = 0;
     for (std::size_t j = 0; j < N.size() && !good_N.empty(); ++j) moved = std::max(moved, std::abs(N[j] - good_N[j]));
-    const bool settled = it > 1 && moved <= kSlidingTolerance * (scale > 0 ? scale : 1.0);
+    const bool settled = it > 1 && moved <= kSlidingTolerance * i.scale;
     good = held;
     good_N = N;
     for (std::size_t j = 0; j < N.size(); ++j) held[j] = settled ? N[j] : held[j] + step * (N[j] - held[j]);

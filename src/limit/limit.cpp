@@ -273,6 +273,7 @@ struct HorizontalCollapse {
   double mechanism = kNaN;
   std::vector<Hinge> mechanism_hinges;  // the mechanism's (limit_detail::least_mechanism); empty: none
   std::string sliding_failure;  // why the non-associative iteration did not converge (then no state)
+  std::string sliding_note;     // the iteration's note (SlidingIteration::note)
 };
 
 bool horizontal_collapse(const Ring& ring, const LimitOptions& options, Work& work, HorizontalCollapse& r,
@@ -294,6 +295,7 @@ bool horizontal_collapse(const Ring& ring, const LimitOptions& options, Work& wo
     r.sliding_failure = sliding.failure;
     return true;
   }
+  r.sliding_note = sliding.note;
   c = sliding.answer;
   if (c.outcome == LimitLp::Outcome::failure) return false;
   if (c.outcome != LimitLp::Outcome::optimal) return true;  // cannot stand, or no finite a_c
@@ -337,14 +339,15 @@ void add_notes(LimitResult& r, const LimitOptions& options, const std::string& w
 }
 
 // The collapse load factor's program, by the friction model: with `failure` (then no answer: the
-// outcome infeasible) when the non-associative iteration did not converge.
+// outcome infeasible) when the non-associative iteration did not converge, and its note.
 LimitLp::Answer collapse_answer(LimitLp& lp, const Ring& ring, const LimitOptions& options, Work& work,
-                                std::string& failure) {
+                                std::string& failure, std::string& note) {
   auto collapse = [&](const std::vector<int>* w) { return lp.collapse(w); };
   const LimitLp::Answer c = solve_warm(lp, work.collapse_basis, collapse);
   limit_detail::SlidingIteration sliding =
       limit_detail::non_associative(lp, ring, options, c, std::abs(ring.total_live()), collapse);
   failure = sliding.failure;
+  note = sliding.note;
   if (!failure.empty()) sliding.answer.outcome = LimitLp::Outcome::infeasible;
   return sliding.answer;
 }
@@ -406,9 +409,9 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
     }
   }
   limit_detail::LeastMechanism mechanism;
-  std::string sliding_failure;  // the non-associative iteration's of the collapse load factor
+  std::string sliding_failure, sliding_note;  // the non-associative iteration's of the collapse load factor
   if (live) {
-    const LimitLp::Answer c = collapse_answer(lp, ring, options, work, sliding_failure);
+    const LimitLp::Answer c = collapse_answer(lp, ring, options, work, sliding_failure, sliding_note);
     if (c.outcome == LimitLp::Outcome::optimal) {
       r.collapse_state = state(c);
       mechanism = limit_detail::least_mechanism(ring, r.collapse_state.hinges, limit_detail::LiveKind::vertical);
@@ -471,6 +474,7 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   r.status = LimitStatus::success;
   if (!bracketed) r.message = fmt::format("t_min below {} m: not searched further", hi);
   add_notes(r, options, walls.note, forceless, unbounded_thrust, live, sliding_failure);
+  if (!sliding_note.empty()) r.message += (r.message.empty() ? "" : "; ") + sliding_note;
   return round;
 }
 
@@ -615,6 +619,8 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
     r.horizontal_state = std::move(h.collapse.state);
     r.horizontal_load_factor_mechanism = h.collapse.mechanism;
     r.horizontal_ring = std::move(h.ring);
+    if (!h.collapse.sliding_note.empty())
+      r.message += std::string(r.message.empty() ? "" : "; ") + "a_c " + h.collapse.sliding_note;
     if (!h.collapse.mechanism_hinges.empty()) r.horizontal_state.hinges = std::move(h.collapse.mechanism_hinges);
     if (fails_virtual_work(r, "collapse acceleration", r.horizontal_load_factor(), r.horizontal_load_factor_mechanism))
       return r;

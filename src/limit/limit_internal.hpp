@@ -67,7 +67,8 @@ inline double joint_normal_force(const Joint& joint, const Eigen::Vector2d& F) {
 double arch_half_load(const Ring& ring);
 // The least wall thickness of the scene on the joints `fractions`, under dead + load_factor * live,
 // starting near `near` (the previous ring's; NaN: none): into r (wall_thickness_min, lp_solves), with
-// the refinement next to its hinges appended to `refinement`. Nothing without walls.
+// the refinement next to its hinges and its joints on their cones appended to `refinement`. Nothing
+// without walls.
 struct WallSearch {
   double b_min = std::numeric_limits<double>::quiet_NaN();
   std::string note;                // why there is no root, or why it is the least thickness allowed
@@ -193,8 +194,9 @@ class LimitLp {
   // `warm`: the basis of the margin of a ring with the same joints count (another thickness), to start
   // from.
   Answer margin(double load_factor, const std::vector<int>* warm = nullptr);
-  // The largest load factor lambda >= 0 with an admissible state (mu = 0).
-  Answer collapse(const std::vector<int>* warm = nullptr);
+  // The largest load factor lambda >= 0 with an admissible state (mu = 0); `least`: the smallest (the
+  // bottom of a face of states, LimitLp::sliding_fixed_points).
+  Answer collapse(const std::vector<int>* warm = nullptr, bool least = false);
   // A row by what it says rather than by its index, which a finer ring changes: the arc length of its
   // joint (Joint::s) and its place among the joint's rows, or infinity and its place among the sign and
   // cap rows after the joints; a crushing cut (finite f_c) has its face row's key with `cut` the normal
@@ -222,6 +224,16 @@ class LimitLp {
   // The normal force N_j = n_j . F_j (N/m, compression positive) of each joint in the state of an
   // optimal answer of this ring's programs.
   std::vector<double> normal_forces(const Answer& a) const;
+  // While hold_sliding holds normal forces, `basis` an optimal basis of the collapse program (H, V, M and
+  // lambda free, the margin at 0) with them held: its rows whose multiplier is positive certify the
+  // optimum whatever numbers the held rows hold, so every state inside every Coulomb cone (and every
+  // joint) with those rows tight (a held row's as its Coulomb row, |T_j| = friction N_j) is a fixed point
+  // of the non-associative iteration: held at its own normal forces, the program has it for an optimum.
+  // The largest factor among those states (the collapse program with those rows as equalities, on the
+  // Coulomb rows; the held rows are released: hold them again to go on). Not optimal when there is no
+  // such state, the basis is singular, nothing is held, or the masonry crushes (finite f_c: its cuts'
+  // rows stand for curved conditions). `least`: the least factor among them instead.
+  Answer sliding_fixed_points(const std::vector<int>& basis, bool least = false);
   // Whether a friction row is among the rows of an optimal basis (a joint may slide in its mechanism).
   bool slides(const std::vector<int>& basis) const;
   int solves() const { return solves_; }
@@ -251,6 +263,10 @@ LimitLp& programs_of(const Ring& ring, const LimitOptions& options, LpWorkspace&
 struct SlidingIteration {
   LimitLp::Answer answer;
   std::string failure;
+  // Where the answer is the largest factor of a face of fixed points whose least factor is below it by
+  // more than the limit tolerance: says so (every factor between holds a state with the sliding joints
+  // on their cones); else empty.
+  std::string note;
   int iterations = 0;
 };
 // A program of lp solved from an optimal basis to start from (nullptr: none).
@@ -259,8 +275,13 @@ using SolveWarm = std::function<LimitLp::Answer(const std::vector<int>*)>;
 // the Coulomb rows (the associative answer). Each iteration holds every joint's friction rows at the
 // normal forces N_prev of the previous state (|T| <= friction N_prev: fixed numbers), re-solves, and moves
 // N_prev towards the new normal forces, by a step halved whenever the change fails to shrink by a tenth
-// (the iteration can oscillate between two mechanisms). At the fixed point the state lies inside every
-// Coulomb cone (N = N_prev) and its mechanism, the normality of fixed-N rows, slides without opening.
+// (the iteration can oscillate between two mechanisms) and doubled while the factor drifts one way. At
+// a fixed point the state lies inside every Coulomb cone (N = N_prev) and its mechanism, the normality
+// of fixed-N rows, slides without opening. The fixed points come in faces (LimitLp::sliding_fixed_points:
+// the states inside the cones with the rows that certify an optimal basis tight), along which the factor
+// varies: at each new basis, and where the steps converge, the iteration ends at the state of largest
+// factor of the basis' face when held at its own normal forces it passes the same test (1e-10 of the
+// loads). With crushing the faces are not used and the steps not doubled.
 // `load_scale`: the live load's magnitude at factor 1 (added to the dead loads times the factor found).
 SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptions& options,
                                  const LimitLp::Answer& first, double load_scale, const SolveWarm& solve);
@@ -297,8 +318,8 @@ bool stress_blocks(const Ring& ring, const std::vector<Hinge>& hinges);
 // and solves its margin from the previous call's optimal basis when the ring has as many joints. A
 // program infeasible for every mu gives kNoMargin; one that stopped without an answer sets `failed`
 // (the search must stop: the value is no answer). It keeps the thinnest thickness that stood so far and
-// the refinement next to its state's hinges, for the next round's ring; the arch's also next to its
-// sliding joints (add_sliding_refinement), and whether its hinges are stress blocks.
+// the refinement next to its state's hinges and sliding joints (add_sliding_refinement), for the next
+// round's ring, and (the arch's) whether its hinges are stress blocks.
 class ThicknessMargin {
  public:
   enum class Of { arch, walls };
@@ -314,7 +335,7 @@ class ThicknessMargin {
   std::vector<int> basis;  // the last margin's optimal basis: the next thickness starts from it
   int basis_joints = 0;    // the joints of the ring whose margin gave `basis`
   double feasible = std::numeric_limits<double>::infinity();  // the thinnest thickness that stood so far
-  std::vector<double> refinement;  // next to the hinges (the arch's: and sliding joints) of that state
+  std::vector<double> refinement;  // next to the hinges and sliding joints of that state
   bool feasible_blocks = false;    // the arch's: that state's hinges are stress blocks
 
  private:

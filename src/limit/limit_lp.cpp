@@ -601,7 +601,7 @@ LimitLp::Answer LimitLp::margin(double load_factor, const std::vector<int>* warm
   return impl_->optimise(pushing(kMu, true), {nan, nan, nan, load_factor, nan}, warm);
 }
 
-LimitLp::Answer LimitLp::collapse(const std::vector<int>* warm) {
+LimitLp::Answer LimitLp::collapse(const std::vector<int>* warm, bool least) {
   ++solves_;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   Impl& p = *impl_;
@@ -638,7 +638,7 @@ LimitLp::Answer LimitLp::collapse(const std::vector<int>* warm) {
     p.weight = dead;
     p.strength *= to_dead;
     p.lambda_scale = per_lambda;
-    Answer a = p.optimise(pushing(kLambda, true), {nan, nan, nan, nan, 0.0}, warm);
+    Answer a = p.optimise(pushing(kLambda, !least), {nan, nan, nan, nan, 0.0}, warm);
     p.rows = given;
     p.normals = given_normals;
     p.weight = weight;
@@ -651,7 +651,7 @@ LimitLp::Answer LimitLp::collapse(const std::vector<int>* warm) {
     }
     return a;
   }
-  return p.optimise(pushing(kLambda, true), {nan, nan, nan, nan, 0.0}, warm);
+  return p.optimise(pushing(kLambda, !least), {nan, nan, nan, nan, 0.0}, warm);
 }
 
 LimitLp::Answer LimitLp::least_work(double load_factor, double per_H, double per_V, const std::vector<int>* warm) {

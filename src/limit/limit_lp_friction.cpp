@@ -1,14 +1,23 @@
-// Non-associative friction's rows (LimitLp::hold_sliding, normal_forces, slides): the friction rows of
-// each joint held at given normal forces and back, and the joints' normal forces of a state.
+// Non-associative friction's rows (LimitLp::hold_sliding, normal_forces, slides, sliding_fixed_points):
+// the friction rows of each joint held at given normal forces and back, the joints' normal forces of a
+// state, and the face of fixed points that an optimal basis with the rows held certifies.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 #include <vector>
+
+#include <Eigen/LU>
 
 #include "limit/limit_internal.hpp"
 #include "limit/limit_lp_impl.hpp"
 
 namespace ogive::limit_detail {
+
+// A multiplier of the basis counts (its row carries the optimum's certificate) above this fraction of
+// the largest: far above the round-off of a 4 x 4 solve, far below any multiplier a tight row has.
+constexpr double kCertificate = 1e-9;
 
 void LimitLp::hold_sliding(const std::vector<double>& normal_forces) {
   Impl& p = *impl_;
@@ -39,6 +48,35 @@ void LimitLp::hold_sliding(const std::vector<double>& normal_forces) {
       row.norm = std::sqrt(sum);
     }
   }
+}
+
+LimitLp::Answer LimitLp::sliding_fixed_points(const std::vector<int>& basis, bool least) {
+  Impl& p = *impl_;
+  constexpr int kFree = 4;  // H, V, M and lambda; the margin held at 0
+  if (p.coulomb.empty() || std::isfinite(p.strength) || static_cast<int>(basis.size()) != kFree) return Answer{};
+  // The basis' multipliers y (B^T y = the objective's gradient, lambda's), with the rows as held.
+  Eigen::Matrix4d Bt;
+  for (int i = 0; i < kFree; ++i) {
+    const int r = basis[static_cast<std::size_t>(i)];
+    if (r < 0 || r >= static_cast<int>(p.rows.size())) return Answer{};
+    for (int c = 0; c < kFree; ++c) Bt(c, i) = p.rows[static_cast<std::size_t>(r)].a[c];
+  }
+  const Eigen::FullPivLU<Eigen::Matrix4d> lu(Bt);
+  if (!lu.isInvertible()) return Answer{};
+  const Eigen::Vector4d y = lu.solve(Eigen::Vector4d(0, 0, 0, 1));
+  // The rows that carry the certificate (a positive multiplier): tight, with their Coulomb rows for the
+  // held ones, as equalities; every other row as the associative program has it.
+  hold_sliding({});
+  std::vector<std::pair<int, bool>> tight;
+  for (int i = 0; i < kFree; ++i) {
+    if (!(y(i) > kCertificate * y.cwiseAbs().maxCoeff())) continue;
+    Inequality& row = p.rows[static_cast<std::size_t>(basis[static_cast<std::size_t>(i)])];
+    tight.emplace_back(basis[static_cast<std::size_t>(i)], row.equality);
+    row.equality = true;
+  }
+  Answer a = collapse(&basis, least);
+  for (const auto& [r, was] : tight) p.rows[static_cast<std::size_t>(r)].equality = was;
+  return a;
 }
 
 bool LimitLp::slides(const std::vector<int>& basis) const {

@@ -50,10 +50,8 @@ double ThicknessMargin::operator()(double thickness) {
     const ThrustState st =
         thrust_state(ring_, a.H, a.V, a.M, a.load_factor, kThinnestHingeTolerance, options_.compressive_strength);
     add_refinement(ring_, st.hinges, refinement);
-    if (of_ == Of::arch) {
-      add_sliding_refinement(ring_, st, options_, refinement);
-      feasible_blocks = stress_blocks(ring_, st.hinges);
-    }
+    add_sliding_refinement(ring_, st, options_, refinement);  // a joint on its cone bounds it too
+    if (of_ == Of::arch) feasible_blocks = stress_blocks(ring_, st.hinges);
   }
   return a.margin;
 }

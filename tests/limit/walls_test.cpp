@@ -178,6 +178,29 @@ TEST_CASE("walls: converged in the joints and the beds") {
   CHECK(close(coarse.thickness_min, r.thickness_min, 2 * kConverged));
 }
 
+TEST_CASE("walls: with friction b_min is converged in the joints where joints on their cones bound it") {
+  // The segmental arch of rise L/4, t = 0.15 L, vertical joints, on walls 5 m high, friction 0.8: at
+  // b_min the joints next to the springings are on their cones (they lie nearly along the thrust), and
+  // friction rather than a margin ends the walls' search. The rings are refined next to them as next to
+  // the hinges: b_min at the defaults is that of 6001 joints to the convergence in the joints.
+  Scene s = paper_scene(0.0, 0.15);
+  s.curve = make_segmental(10.0, 0.25);
+  s.left_wall = s.right_wall = Wall{5.0, 5.0, s.material.density, 0.0, 0.5};
+  LimitOptions o;
+  o.friction = 0.8;
+  o.joints = JointOrientation::vertical;
+  const LimitResult r = analyse_limit(s, o);
+  o.joints_count = 6001;
+  const LimitResult fine = analyse_limit(s, o);
+  REQUIRE(r.status == LimitStatus::success);
+  REQUIRE(fine.status == LimitStatus::success);
+  CHECK(close(r.wall_thickness_min, fine.wall_thickness_min, kConverged));
+  // Friction bounds it: without friction the walls may be thinner.
+  LimitOptions frictionless;
+  frictionless.joints = JointOrientation::vertical;
+  CHECK(analyse_limit(s, frictionless).wall_thickness_min < (1 - 10 * kConverged) * r.wall_thickness_min);
+}
+
 TEST_CASE("walls: a wall thinner than its springing joint, or below it, is refused naming the field") {
   auto refused = [](Scene s, const char* field) {
     try {
