@@ -17,16 +17,19 @@ programs (scipy's HiGHS, not ogive's dense simplex method):
 3. The mechanism, by statics alone: the crown block between the joints next to the springings slides
    down at both (vertical joints: N = H across each, and the block's vertical equilibrium gives the
    factor from H, lam = (2 MU H - W_block) / P); bisection on H for the largest (and the least) H
-   whose state lies inside every joint and cone. ogive's factor must be the largest: every factor
-   between the two is a fixed point of the iteration as well (a face of them: the thrust across
-   joints that slide without opening is not determined), and ogive answers the face's largest.
+   whose state lies inside every joint and cone. Every factor between the two is a fixed point of the
+   iteration (a face of them: the thrust across joints that slide without opening is not determined),
+   and a collapse state; ogive's factor must be the least (the safe one: the thrust the arch holds
+   decides, and an arch whose springings spread falls to its least), and its message must name the
+   largest.
 
-Prints one line per check and exits 1 when one fails (relative tolerance 1e-8 on the factors).
+Prints one line per check and exits 1 when one fails (tolerance 1e-8 of the face's largest factor).
 """
 import argparse
 import csv
 import io
 import os
+import re
 import subprocess
 import sys
 
@@ -55,7 +58,9 @@ def ogive_state(ogive, friction):
     I = np.array([[f(r, "intrados_x"), f(r, "intrados_y")] for r in rows])
     E = np.array([[f(r, "extrados_x"), f(r, "extrados_y")] for r in rows])
     Q = np.array([[f(r, "thrust_x"), f(r, "thrust_y")] for r in rows])
-    return I, E, Q, f(rows[0], "H"), f(rows[0], "load_factor")
+    message = subprocess.run(args[:args.index("--thrust-line")] + ["--columns", "message"], check=True,
+                             capture_output=True, text=True).stdout
+    return I, E, Q, f(rows[0], "H"), f(rows[0], "load_factor"), message
 
 
 def voussoirs(I, E):
@@ -191,8 +196,10 @@ def face_by_statics(ring, friction, H0):
     """The range of factors of the crown block's slide at the joints next to the springings, by bisection
     on H from a state that stands (H0): the states of one slide form an interval of H."""
     a, b = 1, len(ring.I) - 2
-    H0 *= 1 - 1e-6  # inside the face, below its top (where ogive's state lies, to the rows' tolerance)
-    if slide_statics(ring, friction, a, b, H0) is None:
+    # Inside the face, a hair from the end where ogive's state lies (to the rows' tolerance).
+    H0 = next((h for h in (H0 * (1 + 1e-6), H0 * (1 - 1e-6)) if slide_statics(ring, friction, a, b, h) is not None),
+              None)
+    if H0 is None:
         return None
     ends = []
     for direction in (-1, 1):
@@ -215,7 +222,7 @@ def main():
     ap.add_argument("--friction", type=float, default=0.6)
     args = ap.parse_args()
     mu = args.friction
-    I, E, Q, H, lam = ogive_state(args.ogive, mu)
+    I, E, Q, H, lam, message = ogive_state(args.ogive, mu)
     ring = Ring(I, E)
     # V and M of ogive's state from its thrust line's crossings: Q_j x F_j = m_j, linear in (V, M).
     lhs = np.column_stack([Q[:, 0], -np.ones(len(Q))])
@@ -237,20 +244,23 @@ def main():
     rows = np.max(A[:2 * len(I)] @ z - b[:2 * len(I)]) / (scale * SPAN)
     check("inside the cones", outside <= 1e-9, f"max(|T| - MU N) = {outside:.2e} of the loads")
     check("inside the joints", rows <= 1e-9, f"largest face row {rows:.2e} of W L")
-    fixed = collapse(ring, mu, N)
-    check("fixed point", fixed is not None and abs(fixed[3] - lam) <= TOLERANCE * lam,
-          f"held at its own N: {fixed[3]:.12g} (relative {abs(fixed[3] - lam) / lam:.1e})" if fixed is not None
-          else "no optimum")
-    assoc = collapse(ring, mu)
-    print(f"associative on the same ring: {assoc[3]:.12g}")
     face = face_by_statics(ring, mu, H)
     if face is None:
         check("the crown block's slide", False, "ogive's state is not the slide at the joints next to the springings")
-    else:
-        low, top = face
-        check("largest factor of the slide", abs(top - lam) <= TOLERANCE * lam,
-              f"by statics {top:.12g} (relative {abs(top - lam) / lam:.1e}); every factor from {low:.6g} up is "
-              "a fixed point too (the thrust across the sliding joints is not determined)")
+        sys.exit(1)
+    low, top = face
+    fixed = collapse(ring, mu, N)
+    check("fixed point", fixed is not None and abs(fixed[3] - lam) <= TOLERANCE * top,
+          f"held at its own N: {fixed[3]:.12g} ({abs(fixed[3] - lam) / top:.1e} of the face's largest)"
+          if fixed is not None else "no optimum")
+    assoc = collapse(ring, mu)
+    print(f"associative on the same ring: {assoc[3]:.12g}")
+    check("least factor of the slide", abs(low - lam) <= TOLERANCE * top,
+          f"by statics {low:.12g} ({abs(low - lam) / top:.1e} of the face's largest)")
+    named = re.search(r"every factor from the one given up to ([0-9.eE+-]+)", message)
+    check("the message names the largest", named is not None and abs(float(named.group(1)) - top) <= 5e-6 * top,
+          f"by statics {top:.12g}, the message {named.group(1) if named else 'nothing'} (6 digits); every factor "
+          "between is a fixed point too (the thrust across the sliding joints is not determined)")
     sys.exit(1 if failures else 0)
 
 

@@ -112,10 +112,11 @@ Iterate iterate_at(LimitLp& lp, const Ring& ring, double load_scale, const Limit
 }
 
 // The fixed points that the optimal basis `b` certifies (LimitLp::sliding_fixed_points): the one of
-// largest factor, held at its own normal forces and confirmed by the same test as every iterate's.
-std::optional<Iterate> top_of_face(LimitLp& lp, const Ring& ring, double load_scale, const SolveWarm& solve,
-                                   const std::vector<int>& b) {
-  const LimitLp::Answer s = lp.sliding_fixed_points(b);
+// least factor (`least`) or of largest, held at its own normal forces and confirmed by the same test as
+// every iterate's.
+std::optional<Iterate> end_of_face(LimitLp& lp, const Ring& ring, double load_scale, const SolveWarm& solve,
+                                   const std::vector<int>& b, bool least) {
+  const LimitLp::Answer s = lp.sliding_fixed_points(b, least);
   if (s.outcome != LimitLp::Outcome::optimal) return std::nullopt;
   const std::vector<double> fixed = lp.normal_forces(s);
   lp.hold_sliding(fixed);
@@ -126,13 +127,14 @@ std::optional<Iterate> top_of_face(LimitLp& lp, const Ring& ring, double load_sc
   return f;
 }
 
-// SlidingIteration::note of an answer `factor` at the top of the face of basis `face` (rows held).
+// SlidingIteration::note of an answer `factor` at the bottom of the face of basis `face` (rows held).
 std::string face_note(LimitLp& lp, const std::vector<int>& face, double factor) {
-  const LimitLp::Answer low = lp.sliding_fixed_points(face, true);
-  if (low.outcome != LimitLp::Outcome::optimal || !(low.load_factor < (1 - kLimitTolerance) * factor)) return {};
-  return fmt::format("non-associative: every factor from {:.6g} up to the one given holds a state with the sliding "
-                     "joints on their cones (the thrust across them is not determined); the largest is given",
-                     std::max(0.0, low.load_factor));
+  const LimitLp::Answer top = lp.sliding_fixed_points(face, false);
+  if (top.outcome != LimitLp::Outcome::optimal || !(top.load_factor > (1 + kLimitTolerance) * factor)) return {};
+  return fmt::format("non-associative: every factor from the one given up to {:.6g} holds a state with the sliding "
+                     "joints on their cones (the thrust across them, which rigid blocks do not determine, decides "
+                     "which); the least is given",
+                     top.load_factor);
 }
 
 }  // namespace
@@ -152,7 +154,7 @@ SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptio
   auto iterate = [&](const LimitLp::Answer& a, const std::vector<double>& h) {
     return iterate_at(lp, ring, load_scale, a, h);
   };
-  // The answer, and (from a face's top, `face` its basis) the face's least factor where it is lower.
+  // The answer, and (from a face's bottom, `face` its basis) the face's largest factor where it is higher.
   auto converged = [&](Iterate&& i, const std::vector<int>* face) {
     if (face) out.note = face_note(lp, *face, i.answer.load_factor);
     lp.hold_sliding({});
@@ -193,21 +195,23 @@ SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptio
     // hold, so every state inside the cones with those rows tight is a fixed point: a face of them,
     // along which the factor varies (the thrust across sliding joints is not determined where they
     // slide without opening). The relaxed steps below creep towards that face for thousands of
-    // programs, and stop wherever they enter it: its state of largest factor ends the iteration as soon
-    // as the test confirms it (each basis tried once; a face with no state leaves the iteration where
-    // it was), and is the answer also where the steps entered the face below it.
+    // programs, and stop wherever they enter it. Every state of the face is a collapse state of the
+    // non-associative arch, the thrust it holds deciding which (an arch whose springings spread falls to
+    // its least thrust): its state of least factor, the safe one, ends the iteration as soon as the test
+    // confirms it (each basis tried once; a face with no state leaves the iteration where it was), and
+    // is the answer also where the steps entered the face above it.
     std::vector<int> key = basis;
     std::sort(key.begin(), key.end());
     const bool untried = std::find(tried.begin(), tried.end(), key) == tried.end();
     if (untried) tried.push_back(std::move(key));
     if (i.change <= kSlidingTolerance) {
-      std::optional<Iterate> top = top_of_face(lp, ring, load_scale, solve, basis);
-      if (top && top->answer.load_factor >= i.answer.load_factor) return converged(std::move(*top), &basis);
+      std::optional<Iterate> low = end_of_face(lp, ring, load_scale, solve, basis, true);
+      if (low && low->answer.load_factor <= i.answer.load_factor) return converged(std::move(*low), &basis);
       return converged(std::move(i), nullptr);
     }
     if (untried)
-      if (std::optional<Iterate> top = top_of_face(lp, ring, load_scale, solve, basis))
-        return converged(std::move(*top), &basis);
+      if (std::optional<Iterate> low = end_of_face(lp, ring, load_scale, solve, basis, true))
+        return converged(std::move(*low), &basis);
     const double change = i.change;
     const std::vector<double>& N = i.N;
     out.answer = std::move(i.answer);
@@ -215,7 +219,7 @@ SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptio
     // two mechanisms), doubled (up to a whole one) while the factor keeps moving one way with the
     // change not growing by more than kSlidingGrowth (a drift along a path, not an oscillation). Longer
     // steps take another path, which may end elsewhere: only where the faces end the iteration (not
-    // with crushing, whose cuts stand for curved rows), at their largest factor.
+    // with crushing, whose cuts stand for curved rows), at their least factor.
     const double move = out.answer.load_factor - last_factor;
     if (!(change < 0.9 * previous)) step = std::max(0.5 * step, kSlidingRelaxationFloor);
     if (faces && it > 2 && change <= kSlidingGrowth * previous && move * last_move > 0) step = std::min(1.0, 2 * step);

@@ -263,7 +263,7 @@ LimitLp& programs_of(const Ring& ring, const LimitOptions& options, LpWorkspace&
 struct SlidingIteration {
   LimitLp::Answer answer;
   std::string failure;
-  // Where the answer is the largest factor of a face of fixed points whose least factor is below it by
+  // Where the answer is the least factor of a face of fixed points whose largest factor is above it by
   // more than the limit tolerance: says so (every factor between holds a state with the sliding joints
   // on their cones); else empty.
   std::string note;
@@ -279,9 +279,10 @@ using SolveWarm = std::function<LimitLp::Answer(const std::vector<int>*)>;
 // a fixed point the state lies inside every Coulomb cone (N = N_prev) and its mechanism, the normality
 // of fixed-N rows, slides without opening. The fixed points come in faces (LimitLp::sliding_fixed_points:
 // the states inside the cones with the rows that certify an optimal basis tight), along which the factor
-// varies: at each new basis, and where the steps converge, the iteration ends at the state of largest
-// factor of the basis' face when held at its own normal forces it passes the same test (1e-10 of the
-// loads). With crushing the faces are not used and the steps not doubled.
+// varies: every state of a face is a collapse state, the thrust across the sliding joints (which rigid
+// blocks do not determine) deciding which, so at each new basis, and where the steps converge, the
+// iteration ends at the state of least factor of the basis' face (the safe one) when held at its own
+// normal forces it passes the same test (1e-10 of the loads). With crushing the faces are not used and the steps not doubled.
 // `load_scale`: the live load's magnitude at factor 1 (added to the dead loads times the factor found).
 SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptions& options,
                                  const LimitLp::Answer& first, double load_scale, const SolveWarm& solve);

@@ -165,7 +165,8 @@ TEST_CASE("limit: friction: the non-associative factor is at most the associativ
     lp.hold_sliding(held);
     const limit_detail::LimitLp::Answer again = lp.collapse();
     REQUIRE(again.outcome == limit_detail::LimitLp::Outcome::optimal);
-    CHECK(close(again.load_factor, n.load_factor(), kFixedPoint));
+    // (Relative to the associative factor: the non-associative one can be 0, the least of its face.)
+    CHECK(std::abs(again.load_factor - n.load_factor()) <= kFixedPoint * a.load_factor());
     // And back to the Coulomb rows, to the bit.
     lp.hold_sliding({});
     CHECK(lp.collapse().load_factor == first.load_factor);
@@ -339,10 +340,10 @@ struct CrownSlide {
 
 }  // namespace
 
-TEST_CASE("limit: friction: non-associative on vertical joints: the crown block's slide at its largest thrust, by statics") {
+TEST_CASE("limit: friction: non-associative on vertical joints: the crown block's slide at its least thrust, by statics") {
   // The segmental arch of rise L/4, t = 0.18 L, vertical joints, 50 kN/m at 0.3 L, friction 0.6: the
-  // associative factor is some 240, the non-associative one 11.74: the block between the joints next to
-  // the springings slides down at both (they lie nearly along the thrust), held by friction MU H at each.
+  // associative factor is some 240; without dilatancy the block between the joints next to the
+  // springings slides down at both (they lie nearly along the thrust), held by friction MU H at each.
   Scene scene = paper_scene(0.0, 0.18);
   scene.curve = make_segmental(10.0, 0.25);
   scene.loads.points.push_back({5e4, 0.3});
@@ -352,27 +353,33 @@ TEST_CASE("limit: friction: non-associative on vertical joints: the crown block'
   const int n = static_cast<int>(r.ring.joints.size());
   const CrownSlide slide(r.ring, mu, 1, n - 2);
   const double H = r.collapse_state.H;
-  // The state is that slide, and stands (to the programs' tolerances).
-  CHECK(close(slide.factor(H), r.load_factor(), kIterationTolerance));
-  REQUIRE(slide.stands(H * (1 - 1e-6)));
-  // Every H of a state that stands is a fixed point of the iteration (held at its own normal forces the
-  // program has it for an optimum: the thrust across joints that slide without opening is not
-  // determined), down to a factor of 0 here; the answer is the largest: bisection on the statics.
-  double lo = H * (1 - 1e-6), hi = 2 * H;
+  // Every H of a state that stands is a fixed point of the iteration and a collapse state (held at its
+  // own normal forces the program has it for an optimum: the thrust across joints that slide without
+  // opening is not determined); the largest, by bisection on the statics:
+  double lo = H, hi = 2 * H;
+  while (!slide.stands(lo)) lo *= 1 + 1e-7;
+  for (int k = 0; k < 20 && slide.stands(hi); ++k) hi *= 2;
   REQUIRE(!slide.stands(hi));
   while (hi - lo > 1e-14 * hi) {
     const double mid = 0.5 * (lo + hi);
     (slide.stands(mid) ? lo : hi) = mid;
   }
-  CHECK(close(r.load_factor(), slide.factor(lo), kIterationTolerance));
-  // The least: the block's weight alone on the friction of both joints (a factor just above 0).
+  const double largest = slide.factor(lo);
+  REQUIRE(largest > 10);
+  // The answer is the least: the thrust that carries the block's weight on the friction of both joints
+  // alone, a factor of 0 (the arch stands under its weight only while its thrust stays above that).
   const double carries_weight = (slide.D[static_cast<std::size_t>(n - 2)] - slide.D[1]) / (2 * mu);
-  CHECK(slide.stands(carries_weight * (1 + 1e-6)));
-  CHECK(slide.factor(carries_weight * (1 + 1e-6)) < 1e-4 * r.load_factor());
-  // And the message says so.
-  CHECK(r.message.find("non-associative: every factor from 0 up to the one given") != std::string::npos);
+  CHECK(close(H, carries_weight, kIterationTolerance));
+  CHECK(std::abs(r.load_factor()) <= kIterationTolerance * largest);
+  CHECK(std::abs(slide.factor(H)) <= kIterationTolerance * largest);
+  CHECK(slide.stands(H * (1 + 1e-6)));
+  // And the message names the largest (6 digits).
+  const std::string named = "non-associative: every factor from the one given up to ";
+  const std::size_t at = r.message.find(named);
+  REQUIRE(at != std::string::npos);
+  CHECK(close(std::stod(r.message.substr(at + named.size())), largest, 1e-5));
   // The iteration ends at that face instead of creeping towards it by relaxed steps (some 44000
-  // programs in all, against about 1400 now; the associative analysis takes about 100).
+  // programs in all, against about 1200 now; the associative analysis takes about 100).
   CHECK(r.lp_solves < 5000);
 }
 
