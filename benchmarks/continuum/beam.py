@@ -114,9 +114,10 @@ def weight_terms(rho, nu):
     return section(rho, nu, True)
 
 
-def rates(arch, t, nu, s, Y, load, weight=False):
+def rates(arch, t, nu, s, Y, load, weight=False, part="all"):
     """dY/ds of the curved bar (ArchModel::curved_derivative) for the columns of Y; `load` the weight's
-    column (the others homogeneous)."""
+    column (the others homogeneous). part: the whole weight (all), or its part along the section's normal
+    (normal: (g.n) n) or along the axis (tangential), each per unit length at the slice's centroid."""
     th, k = arch.theta(s), arch.kappa(s)
     c, sn = math.cos(th), math.sin(th)
     axial, coupling, bending, shear = section(abs(k) * t / 2, nu)
@@ -125,15 +126,17 @@ def rates(arch, t, nu, s, Y, load, weight=False):
     coup = aN * k * coupling
     extension, curvature = weight_terms(abs(k) * t / 2, nu) if weight else (0.0, 0.0)
     load_strain, load_curvature = -math.copysign(1, k) * aN * t * extension, -aN * curvature
+    px, py = {"all": (0.0, -1.0), "normal": (c * sn, -c * c), "tangential": (-sn * c, -sn * sn)}[part]
+    q = px * (-sn) + py * c  # the load's part along the extrados normal
     dY = np.zeros_like(Y)
     for j in range(Y.shape[1]):
         ux, uy, psi, fx, fy, M = Y[:, j]
         N, V = c * fx + sn * fy, -sn * fx + c * fy
         eps, rot = aN * axial * N + coup * M, aV * shear * V + psi
         b = 1.0 if j == load else 0.0
-        eps += load_strain * (-b * c)
-        dY[:, j] = [eps * c - rot * sn, eps * sn + rot * c, bending * M + coup * N + load_curvature * (-b * c), 0.0, b,
-                    sn * fx - c * fy + aN * k * b * sn]
+        eps += load_strain * (b * q)
+        dY[:, j] = [eps * c - rot * sn, eps * sn + rot * c, bending * M + coup * N + load_curvature * (b * q), -b * px,
+                    -b * py, sn * fx - c * fy + aN * k * b * (-sn * py - c * px)]
     return dY
 
 
@@ -147,9 +150,13 @@ def held_face(arch, t, c_held):
     return T.T @ local @ T
 
 
-def h_over_v(kind, t, supports="clamped", nu=0.2, held=None, joint=None, weight=False):
+def h_over_v(kind, t, supports="clamped", nu=0.2, held=None, joint=None, weight=False, part="all", held_load=None):
     """H/V of the half arch (t = t/L). held: the clamped springing face's (c_NN, c_VV, c_VM, c_MM);
-    joint: the crown joint's scaled (a, b, c); weight: the self-weight's own stress across the depth."""
+    joint: the crown joint's scaled (a, b, c); weight: the self-weight's own stress across the depth;
+    part: the weight's part that loads the arch (rates), its H over the whole weight's V; held_load: the
+    held face's own displacement under a body force b (continuum.py held_body: a straight strip), its
+    (u_N, Uy, psi) per b t^2 / E, b t^2 / E and b t / E (u_N under b along the axis, Uy and psi under b
+    across it), added at the springing."""
     arch = Arch(kind)
     free = [3, 4, 5] if supports == "clamped" else [2, 3, 4]
     Y0 = np.zeros((6, 4))
@@ -157,14 +164,20 @@ def h_over_v(kind, t, supports="clamped", nu=0.2, held=None, joint=None, weight=
         Y0[i, j] = 1.0
     if held is not None and supports == "clamped":
         Y0[0:3, :] = held_face(arch, t, held) @ Y0[3:6, :]
-    sol = solve_ivp(lambda s, y: rates(arch, t, nu, s, y.reshape(6, 4), 3, weight).ravel(), (0.0, arch.S), Y0.ravel(),
+    if held_load is not None and supports == "clamped":
+        th = arch.theta(0.0)
+        c, sn = math.cos(th), math.sin(th)
+        # the weight per unit length is 1: b = 1 / t, E = 12 / t^3; along the axis -sin, across -cos
+        local = np.array([held_load[0] * sn * t ** 4 / 12, held_load[1] * c * t ** 4 / 12, held_load[2] * c * t ** 3 / 12])
+        Y0[0:3, 3] += np.array([[c, -sn, 0], [sn, c, 0], [0, 0, 1]]) @ local
+    sol = solve_ivp(lambda s, y: rates(arch, t, nu, s, y.reshape(6, 4), 3, weight, part).ravel(), (0.0, arch.S), Y0.ravel(),
                     method="DOP853", rtol=1e-11, atol=1e-14)
     YS = sol.y[:, -1].reshape(6, 4)
     a, b, c = joint if joint is not None else (0.0, 0.0, 0.0)
     rows = np.array([YS[0] + b * YS[5] + c * YS[3], YS[2] + a * YS[5] + b * YS[3], YS[4]])
     z = np.linalg.solve(rows[:, :3], -rows[:, 3])
     y0 = Y0[:, :3] @ z + Y0[:, 3]
-    return y0[3] / y0[4]
+    return y0[3] / y0[4] if part == "all" else -y0[3] / arch.S
 
 
 def crown_wedge(theta_c):
