@@ -23,6 +23,38 @@ from scipy.integrate import solve_ivp
 LD = np.longdouble
 
 
+def modes(rho):
+    """The thick circular bar's stress modes at rho = t / (2R) (R = 1, long double): ln(b / a), Golovin's
+    pure bending's denominator n0 and the end force's constants A, B, D. The bending mode's hoop stress
+    is -4 / n0 (-a^2 b^2 ln(b/a) / r^2 + b^2 ln(r/b) + a^2 ln(a/r) + b^2 - a^2), the end force's radial and
+    hoop ones 2 A r - 2 B / r^3 + D / r and 6 A r + 2 B / r^3 + D / r (times the sine of the angle)."""
+    a, b = 1 - rho, 1 + rho
+    lg = np.log1p(rho) - np.log1p(-rho)
+    n0 = 16 * rho * rho - 4 * (a * b) ** 2 * lg * lg
+    n1 = -4 * rho + (a * a + b * b) * lg
+    return lg, n0, 1 / (2 * n1), -(a * a) * (b * b) / (2 * n1), -(a * a + b * b) / n1
+
+
+def section_stresses(rho):
+    """The section's stresses (R = 1) of a unit N and M about the axis r = 1 (hoop: M's with int sigma
+    (r - 1) dr = 1, tension at the extrados) and of a unit V (shear), each a function of r: the bending
+    and end-force modes (modes) combined to those resultants."""
+    rho = LD(rho)
+    a, b = 1 - rho, 1 + rho
+    lg, n0, A, B, D = modes(rho)
+    Bt = lambda r: -4 / n0 * (-a * a * b * b * lg / (r * r) + b * b * np.log(r / b) + a * a * np.log(a / r) + b * b - a * a)
+    Ft = lambda r: 6 * A * r + 2 * B / r ** 3 + D / r
+    Fr = lambda r: 2 * A * r - 2 * B / r ** 3 + D / r
+    nodes, weights = np.polynomial.legendre.leggauss(64)
+    NF = MF = NB = MB = VF = LD(0)
+    for x, w in zip(nodes, weights):
+        r, w = 1 + rho * LD(x), rho * LD(w)
+        NF, MF, NB, MB, VF = NF + w * Ft(r), MF + w * Ft(r) * (r - 1), NB + w * Bt(r), MB + w * Bt(r) * (r - 1), VF + w * Fr(r)
+    det = NF * MB - NB * MF
+    return (lambda r: float((MB * Ft(LD(r)) - MF * Bt(LD(r))) / det), lambda r: float((NF * Bt(LD(r)) - NB * Ft(LD(r))) / det),
+            lambda r: float(Fr(LD(r)) / VF))
+
+
 @functools.lru_cache(None)
 def section(rho, nu, weight=False):
     """The thick circular bar's four factors (axial, coupling, bending, shear) at rho = t / (2R): Golovin's
@@ -39,10 +71,7 @@ def section(rho, nu, weight=False):
     LA = (gb - ga) / (1 / (a * a) - 1 / (b * b))
     LB = (-ga - LA / (a * a)) / 2
     SN = SM = WFr = WFt = WBr = WBt = LD(0)
-    lg = np.log1p(rho) - np.log1p(-rho)
-    n0 = 16 * rho * rho - 4 * (a * b) ** 2 * lg * lg
-    n1 = -4 * rho + (a * a + b * b) * lg
-    A, B, D = 1 / (2 * n1), -(a * a) * (b * b) / (2 * n1), -(a * a + b * b) / n1
+    lg, n0, A, B, D = modes(rho)
     nodes, weights = np.polynomial.legendre.leggauss(48)
     u0, u1 = np.log(a), np.log(b)
     NF = MF = NB = MB = VF = QFF = QFB = QBB = QV = LD(0)
@@ -140,18 +169,56 @@ def rates(arch, t, nu, s, Y, load, weight=False, part="all"):
     return dY
 
 
+def nearest_quadratic(table, x):
+    """The quadratic through the three rows of table (x ascending in its first column) nearest x (the end
+    ones beyond), each further column at x: ogive's interpolation of its tables."""
+    i = 0
+    while i + 3 < len(table) and x > 0.5 * (table[i + 1][0] + table[i + 2][0]):
+        i += 1
+    out = [0.0] * (len(table[0]) - 1)
+    for a in range(i, i + 3):
+        w = 1.0
+        for b in range(i, i + 3):
+            if b != a:
+                w *= (x - table[b][0]) / (table[a][0] - table[b][0])
+        for k in range(len(out)):
+            out[k] += w * table[a][k + 1]
+    return out
+
+
+def held_curved(nu, t_kappa):
+    """ogive's held face at the section's nu and t kappa (curved_section.cpp's held_face): the straight
+    strip's (held.csv) at t_kappa 0, the ring's (ring.csv, continuum.py ring) at 0.2 to 0.5, each read at
+    nu by quadratics, then over t_kappa: (c_NN, c_VV, c_VM, c_MM, c_NM)."""
+    import csv
+    import os
+    here = os.path.dirname(os.path.abspath(__file__))
+    keys = ("c_NN", "c_VV", "c_VM", "c_MM")
+    straight = nearest_quadratic([[float(r["nu"])] + [float(r[k]) for k in keys] for r in csv.DictReader(open(os.path.join(here, "held.csv")))], nu)
+    rows = list(csv.DictReader(open(os.path.join(here, "ring.csv"))))
+    over = [[0.0] + straight + [0.0]]
+    for tk in sorted({float(r["t_kappa"]) for r in rows}):
+        at = [[float(r["nu"])] + [float(r[k]) for k in keys + ("c_NM",)] for r in rows if float(r["t_kappa"]) == tk]
+        over.append([tk] + nearest_quadratic(at, nu))
+    c = nearest_quadratic(over, abs(t_kappa))
+    return tuple(c[:4]) + (math.copysign(c[4], t_kappa),)
+
+
 def held_face(arch, t, c_held):
-    """The held springing face's compliance (c_NN, c_VV, c_VM, c_MM of continuum.py strip, per E and t) as
-    the 3 x 3 matrix from (Fx, Fy, M) to (Ux, Uy, psi) at the springing, scaled (E = 12 / t^3)."""
-    cNN, cVV, cVM, cMM = c_held
-    local = np.array([[cNN * t ** 3, 0, 0], [0, cVV * t ** 3, cVM * t ** 2], [0, cVM * t ** 2, cMM * t]]) / 12
+    """The held springing face's compliance (c_NN, c_VV, c_VM, c_MM of continuum.py strip, per E and t, and
+    a curved bar's c_NM of continuum.py ring) as the 3 x 3 matrix from (Fx, Fy, M) to (Ux, Uy, psi) at the
+    springing, scaled (E = 12 / t^3)."""
+    cNN, cVV, cVM, cMM = c_held[:4]
+    cNM = c_held[4] if len(c_held) > 4 else 0.0
+    local = np.array([[cNN * t ** 3, 0, cNM * t ** 2], [0, cVV * t ** 3, cVM * t ** 2], [cNM * t ** 2, cVM * t ** 2, cMM * t]]) / 12
     th = arch.theta(0.0)
     T = np.array([[math.cos(th), math.sin(th), 0], [-math.sin(th), math.cos(th), 0], [0, 0, 1]])
     return T.T @ local @ T
 
 
 def h_over_v(kind, t, supports="clamped", nu=0.2, held=None, joint=None, weight=False, part="all", held_load=None):
-    """H/V of the half arch (t = t/L). held: the clamped springing face's (c_NN, c_VV, c_VM, c_MM);
+    """H/V of the half arch (t = t/L). held: the clamped springing face's (c_NN, c_VV, c_VM, c_MM[, c_NM]),
+    or "curved" for ogive's (held_curved at the springing's t kappa);
     joint: the crown joint's scaled (a, b, c); weight: the self-weight's own stress across the depth;
     part: the weight's part that loads the arch (rates), its H over the whole weight's V; held_load: the
     held face's own displacement under a body force b (continuum.py held_body: a straight strip), its
@@ -162,6 +229,8 @@ def h_over_v(kind, t, supports="clamped", nu=0.2, held=None, joint=None, weight=
     Y0 = np.zeros((6, 4))
     for j, i in enumerate(free):
         Y0[i, j] = 1.0
+    if held == "curved":  # ogive's: the face's own curvature (held_curved)
+        held = held_curved(nu, -t * arch.kappa(0.0))
     if held is not None and supports == "clamped":
         Y0[0:3, :] = held_face(arch, t, held) @ Y0[3:6, :]
     if held_load is not None and supports == "clamped":

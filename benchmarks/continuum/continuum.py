@@ -24,6 +24,7 @@ Usage (from the repository's top, after the build):
   /usr/bin/python3 benchmarks/continuum/continuum.py wedge     # a pointed crown's wedge over its angle
   /usr/bin/python3 benchmarks/continuum/continuum.py trial     # the curved bar with both terms (beam.py)
   /usr/bin/python3 benchmarks/continuum/continuum.py components # the clamped catenary's weight, part by part
+  /usr/bin/python3 benchmarks/continuum/continuum.py ring      # a curved bar's held face: ring.csv
   /usr/bin/python3 benchmarks/continuum/continuum.py figure    # docs/figures/continuum.png from the CSV
 """
 import argparse
@@ -367,6 +368,7 @@ WEDGE = os.path.join(HERE, "wedge.csv")
 WEDGE_ANGLES = (0.5, 5, 10, 15, 20, 25, 30, 35, 40, 45, 50, 55, 60, 65, 70, 75)
 HELD = os.path.join(HERE, "held.csv")
 COMPONENTS = os.path.join(HERE, "components.csv")
+RING = os.path.join(HERE, "ring.csv")
 HELD_NU = (-0.9, -0.7, -0.5, -0.3, -0.1, 0.0, 0.1, 0.2, 0.25, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.97)
 SPREAD_CASES = [("semicircular", 0.1), ("semicircular", 0.2), ("segmental", 0.2), ("catenary", 0.2)]
 ENDS_CASES = [("semicircular", 0.1), ("semicircular", 0.2), ("equilateral", 0.2), ("catenary", 0.08), ("catenary", 0.2)]
@@ -850,8 +852,10 @@ def trial(ogive):
     springing face of strip.csv (the finest mesh, nu 0.2) on the clamped arches and the self-weight's own
     stress across the depth as well (joint_held_weight); the same with the crown joint that the curved
     bar's own coupling gives the kink and the pointed crown's wedge (wedge.csv) instead (kink,
-    beam.kink_joint; kink_held, kink_weight and kink_held_weight with one or both of the other terms:
-    kink_held_weight is ogive's `curved`; bare_kink_held_weight the same without the wedge). The summary as
+    beam.kink_joint; kink_held, kink_weight and kink_held_weight with one or both of the other terms;
+    bare_kink_held_weight the same without the wedge); kink_curved_held and kink_curved_held_weight with the
+    held face of a curved bar (ring.csv, beam.held_curved) instead of the straight strip's: the latter is
+    ogive's `curved`. The summary as
     the table's, each variant's rows beyond half of Timoshenko's error with the continuum's fe_error."""
     import beam
     joints = {r["t_over_L"]: (float(r["a"]), float(r["b"]), float(r["c"])) for r in csv.DictReader(open(JOINT))}
@@ -860,7 +864,7 @@ def trial(ogive):
     rows = [r for r in csv.DictReader(open(TABLE)) if r["plane"] == "stress"]
     out = []
     names = ["none", "joint", "joint_held_weight", "kink", "kink_held", "kink_weight", "kink_held_weight",
-             "bare_kink_held_weight"]
+             "bare_kink_held_weight", "kink_curved_held", "kink_curved_held_weight"]
     with open(TRIAL, "w", newline="") as f:
         w = csv.writer(f, lineterminator="\n")
         w.writerow(["arch", "supports", "t_over_L", "continuum", "timoshenko_error", "curved_error"] +
@@ -874,7 +878,8 @@ def trial(ogive):
             bare = beam.kink_joint(beam.Arch(r["arch"]), ratio, wedge=False) if pointed else (0.0, 0.0, 0.0)
             hv = lambda **kw: beam.h_over_v(r["arch"], ratio, r["supports"], **kw)
             got = [hv(), hv(joint=J), hv(joint=J, held=held, weight=True), hv(joint=kink), hv(joint=kink, held=held),
-                   hv(joint=kink, weight=True), hv(joint=kink, held=held, weight=True), hv(joint=bare, held=held, weight=True)]
+                   hv(joint=kink, weight=True), hv(joint=kink, held=held, weight=True), hv(joint=bare, held=held, weight=True),
+                   hv(joint=kink, held="curved"), hv(joint=kink, held="curved", weight=True)]
             errors = [(g - ref) / max(abs(ref), 0.01) for g in got]
             out.append((r, errors))
             w.writerow([r["arch"], r["supports"], r["t_over_L"], r["continuum"], r["timoshenko_error"], r["curved_error"]] +
@@ -950,6 +955,117 @@ def held_body(nu=NU, n_across=32):
     runs = {ell: held_body_run(ell, nu, n_across) for ell in (4.0, 8.0)}
     psi = (runs[4.0][1] + runs[8.0][1]) / 2
     return runs[8.0][2], runs[8.0][0] - 8.0 * psi, psi, runs
+
+
+RING_TK = (0.2, 0.3, 0.4, 0.5)
+
+
+def ring_compliance(nu, t_kappa, n_across=32):
+    """A curved bar's held face: the semicircle's half (R = L/2, t/L = t_kappa / 2, no weight), its
+    springing face held whole, its crown face loaded by the thick circular bar's own section stresses
+    (beam.section_stresses: Golovin's, so that the bar is plane elasticity's exact solution but for the
+    held face's zone) of a unit N, V and M in turn. The crown's displacements conjugate to them, less the
+    curved bar's (its section law integrated over the quarter turn), are the held face's compliance seen
+    through the bar: its (c_NN, c_VV, c_VM, c_MM) as strip_compliance's and c_NM, the turn under N (and the
+    stretch under M: Maxwell), per E t (the straight strip's is zero: its symmetry), in the springing's
+    frame (the axis leaving it) with N, V and M the bar's forces on the face. nu is the section's (from
+    0.5 in plane strain, as strip_run). CalculiX's *CLOAD values are scaled to 1 at their largest (small
+    ones came out wrong in 2.21)."""
+    import beam
+    ratio = t_kappa / 2
+    arch = make_arch("semicircular", ratio * SPAN)
+    nodes, elements, springing, crown = mesh(arch, n_across)
+    t, R = arch.t, SPAN / 2
+    E = 12 / t ** 3  # E I = 1 per unit width
+    section_nu, element, modulus = nu, "CPS8", E
+    if nu >= 0.5:
+        nu = nu / (1 + nu)
+        element, modulus = "CPE8", E * (1 - nu * nu)
+    th = section_thickness(arch)
+    sN, sM, tV = beam.section_stresses(t / (2 * R))
+    # the crown face x = L/2 from the intrados up, r = y / R; N along +x, V along +y, M anticlockwise
+    patterns = [lambda y: (sN(y / R) / R, 0.0), lambda y: (0.0, tV(y / R) / R), lambda y: (-sM(y / R) / R ** 2, 0.0)]
+    ys = [nodes[n - 1][1] for n in crown]
+    gauss = [(-0.9324695142, 0.1713244924), (-0.6612093865, 0.3607615730), (-0.2386191861, 0.4679139346),
+             (0.2386191861, 0.4679139346), (0.6612093865, 0.3607615730), (0.9324695142, 0.1713244924)]
+    forces = []
+    for trac in patterns:
+        f = [[0.0, 0.0] for _ in crown]
+        for e in range(0, len(crown) - 1, 2):
+            h = ys[e + 2] - ys[e]
+            for xi, wt in gauss:
+                p = trac(ys[e] + (xi + 1) / 2 * h)
+                for a, shape in enumerate((xi * (xi - 1) / 2, 1 - xi * xi, xi * (xi + 1) / 2)):
+                    for d in range(2):
+                        f[e + a][d] += p[d] * shape * wt * h / 2
+        forces.append(f)
+    lines = ["*HEADING", "held curved bar", "*NODE"] + [f"{k + 1}, {x:.13f}, {y:.13f}, 0" for k, (x, y) in enumerate(nodes)]
+    lines += [f"*ELEMENT, TYPE={element}, ELSET=EALL"] + [f"{k + 1}, " + ", ".join(map(str, e)) for k, e in enumerate(elements)]
+    lines += ["*NSET, NSET=NSPRING"] + [str(n) for n in springing] + ["*NSET, NSET=NCROWN"] + [str(n) for n in crown]
+    lines += ["*MATERIAL, NAME=M", "*ELASTIC", f"{modulus!r}, {nu!r}", f"*SOLID SECTION, ELSET=EALL, MATERIAL=M", f"{th!r}",
+              "*BOUNDARY", "NSPRING, 1, 2, 0."]
+    scale = [1 / (th * max(abs(v) for row in f for v in row)) for f in forces]  # per unit width: times th
+    for f, sc in zip(forces, scale):
+        lines += ["*STEP", "*STATIC", "*CLOAD, OP=NEW"]
+        lines += [f"{n}, {d + 1}, {f[k][d] * th * sc:.15g}" for k, n in enumerate(crown) for d in range(2) if f[k][d]]
+        lines += ["*NODE PRINT, NSET=NCROWN", "U", "*END STEP"]
+    dat = run_input("\n".join(lines) + "\n")
+    measured = [[0.0] * 3 for _ in range(3)]
+    for j, block in enumerate(re.split(r"displacements \(vx,vy,vz\)", dat)[1:]):
+        u = {int(m.group(1)): (float(m.group(2)), float(m.group(3)))
+             for m in re.finditer(r"^\s*(\d+)\s+([-+0-9.Ee]+)\s+([-+0-9.Ee]+)\s+[-+0-9.Ee]+\s*$", block, re.M)}
+        for i in range(3):
+            # per unit load (the loads were scale times) and in the span's units (L = 1, E I = 1)
+            work = sum(forces[i][k][d] * u[n][d] for k, n in enumerate(crown) for d in range(2)) / scale[j]
+            measured[i][j] = work / SPAN ** (3 - (i == 2) - (j == 2))
+    # the curved bar (beam.py's section law, L = 1): the crown's loads (Px, Py, Mc) at (1/2, 1/2) give the
+    # section at s, (x, y) on the quarter circle about (1/2, 0), N, V, M = G (Px, Py, Mc)
+    axial, coupling, bending, shear = beam.section(ratio, section_nu)
+    aN = ratio ** 2 / 12
+    aV, coup = aN * 2 * (1 + section_nu) / (5 / 6), -2 * aN * coupling
+    S = math.pi / 4
+    bar = [[0.0] * 3 for _ in range(3)]
+    for x, w in zip(*gauss_legendre(200)):
+        s = S / 2 * (1 + x)
+        theta = math.pi / 2 - 2 * s
+        c, sn = math.cos(theta), math.sin(theta)
+        px, py = 0.5 - 0.5 * math.cos(2 * s), 0.5 * math.sin(2 * s)
+        G = [[c, sn, 0.0], [-sn, c, 0.0], [-(0.5 - py), 0.5 - px, 1.0]]
+        Cs = [[aN * axial, 0.0, coup], [0.0, aV * shear, 0.0], [coup, 0.0, bending]]
+        for i in range(3):
+            for j in range(3):
+                bar[i][j] += S / 2 * w * sum(G[a][i] * Cs[a][b] * G[b][j] for a in range(3) for b in range(3))
+    # measured - bar = B' H B, B the crown's loads to the springing's (Fx, Fy, M) = (Px, Py, Mc - Px / 2 + Py / 2),
+    # H the springing's compliance in the global frame; its frame (the axis leaving it, straight up) is
+    # T H T' with T = [[0, 1, 0], [-1, 0, 0], [0, 0, 1]]
+    import numpy as np
+    B = np.array([[1.0, 0, 0], [0, 1.0, 0], [-0.5, 0.5, 1.0]])
+    Bi = np.linalg.inv(B)
+    H = Bi.T @ (np.array(measured) - np.array(bar)) @ Bi
+    T = np.array([[0, 1.0, 0], [-1.0, 0, 0], [0, 0, 1.0]])
+    local = T @ H @ T.T
+    tt = ratio
+    return (12 * local[0, 0] / tt ** 3, 12 * local[1, 1] / tt ** 3, 6 * (local[1, 2] + local[2, 1]) / tt ** 2,
+            12 * local[2, 2] / tt, 6 * (local[0, 2] + local[2, 0]) / tt ** 2)
+
+
+def gauss_legendre(n):
+    import numpy as np
+    return np.polynomial.legendre.leggauss(n)
+
+
+def ring():
+    """ring.csv: the held face of a curved bar (ring_compliance) over the section's nu (HELD_NU) and t kappa
+    (t / R at the face: 0.2 to 0.5), 32 elements through the depth; what ogive's curved bar adds to the
+    straight strip's (held.csv) at its clamped springings (src/model/curved_section.cpp, kHeldCurved)."""
+    with open(RING, "w", newline="") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(["nu", "t_kappa", "c_NN", "c_VV", "c_VM", "c_MM", "c_NM"])
+        for nu in HELD_NU:
+            for tk in RING_TK:
+                w.writerow([repr(nu), repr(tk)] + [f"{c:.5f}" for c in ring_compliance(nu, tk)])
+                f.flush()
+    print(open(RING).read(), end="")
 
 
 COMPONENTS_CASES = [(0.15, 0.2), (0.2, 0.2), (0.15, 0.0), (0.2, 0.0)]
@@ -1081,7 +1197,7 @@ def figure(out=os.path.join(TOP, "docs", "figures", "continuum.png")):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("what", choices=["check", "reference", "table", "summary", "poisson", "ends", "spread", "crown", "strip",
-                                           "joint", "wedge", "trial", "components", "figure"])
+                                           "joint", "wedge", "trial", "components", "ring", "figure"])
     parser.add_argument("--ogive", default=os.path.join(TOP, "build", "ogive"))
     parser.add_argument("--supports", default="clamped,pinned")
     args = parser.parse_args()
@@ -1118,6 +1234,8 @@ def main():
         trial(args.ogive)
     elif args.what == "components":
         components()
+    elif args.what == "ring":
+        ring()
     else:
         figure()
 
