@@ -1136,10 +1136,11 @@ def components():
     """components.csv: the clamped catenary (rise L/2) at t/L 0.15 and 0.2, nu 0.2 and 0, under the
     weight's part along the section's normal and the part along the axis apart (consistent nodal loads),
     the continuum's H (over the whole weight's V, extrapolated from 4, 8 and 16 elements through the depth)
-    beside beam.py's curved bar (ogive's: the held face of held.csv at that nu and the weight's own stress)
-    and the same without the weight's own stress; and the whole weight (the parts' sum), also with the held
-    face's own displacement under the body force (held_body, 32 elements through the strip's depth) added
-    at the springing (all_held_body)."""
+    beside beam.py's curved bar (ogive's: the curved bar's held face, beam.held_curved, and the weight's
+    own stress) and the same without the weight's own stress; the whole weight (the parts' sum), also with
+    the straight strip's held face (held.csv: all_straight_face) and with the held face's own displacement
+    under the body force (held_body, 32 elements through the strip's depth) added at the springing
+    (all_held_body)."""
     import beam
     held = {r["nu"]: tuple(float(r[k]) for k in ("c_NN", "c_VV", "c_VM", "c_MM")) for r in csv.DictReader(open(HELD))}
     body = {nu: held_body(nu)[:3] for nu in sorted({nu for _, nu in COMPONENTS_CASES})}
@@ -1153,11 +1154,12 @@ def components():
         for ratio, nu in COMPONENTS_CASES:
             arch = make_arch("catenary", ratio * SPAN)
             meshes = [weight_parts(arch, n, "clamped", nu) for n in (4, 8, 16)]
-            for j, part in enumerate(("normal", "tangential", "all", "all_held_body")):
+            for j, part in enumerate(("normal", "tangential", "all", "all_straight_face", "all_held_body")):
                 values = [round(m[0] + m[1] if part.startswith("all") else m[j], 7) for m in meshes]
                 hv, err, _ = extrapolate(values)
-                extra = {"held_load": body[nu], "part": "all"} if part == "all_held_body" else {"part": part}
-                curved, bare = (beam.h_over_v("catenary", ratio, "clamped", nu, held[repr(nu)], weight=wt, **extra)
+                face = held[repr(nu)] if part == "all_straight_face" else "curved"
+                extra = {"held_load": body[nu], "part": "all"} if part == "all_held_body" else {"part": part[:3] if part.startswith("all") else part}
+                curved, bare = (beam.h_over_v("catenary", ratio, "clamped", nu, face, weight=wt, **extra)
                                 for wt in (True, False))
                 w.writerow(["catenary", "clamped", repr(ratio), repr(nu), part, f"{hv:.7f}", f"{err:.1e}", f"{curved:.7f}",
                             f"{bare:.7f}", f"{curved - hv:+.2e}", f"{curved - bare:+.2e}"])
