@@ -957,7 +957,7 @@ def held_body(nu=NU, n_across=32):
     return runs[8.0][2], runs[8.0][0] - 8.0 * psi, psi, runs
 
 
-RING_TK = (0.2, 0.3, 0.4, 0.5)
+RING_TK = (0.2, 0.3, 0.4, 0.5, 0.6)
 
 
 def ring_compliance(nu, t_kappa, n_across=32):
@@ -1056,7 +1056,7 @@ def gauss_legendre(n):
 
 def ring():
     """ring.csv: the held face of a curved bar (ring_compliance) over the section's nu (HELD_NU) and t kappa
-    (t / R at the face: 0.2 to 0.5), 32 elements through the depth; what ogive's curved bar adds to the
+    (t / R at the face: 0.2 to 0.6), 32 elements through the depth; what ogive's curved bar adds to the
     straight strip's (held.csv) at its clamped springings (src/model/curved_section.cpp, kHeldCurved)."""
     with open(RING, "w", newline="") as f:
         w = csv.writer(f, lineterminator="\n")

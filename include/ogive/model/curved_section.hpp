@@ -55,8 +55,9 @@ CurvedSection curved_section(double rho, double nu);
 // elasticity's: the semicircle's half (R = L / 2, no weight) held whole at its springing face and loaded
 // at its crown face by the thick circular bar's own section stresses of N, V and M (Golovin's), less the
 // bar's compliance (CalculiX, 32 quadratic elements through the depth, benchmarks/continuum ring:
-// ring.csv) at t_kappa 0.2 to 0.5, with the straight strip's at 0, interpolated by quadratics over nu and
-// then over t_kappa (beyond 0.5, the end ones). At nu = 0.2 and t_kappa 0.4: NM +0.017 and MM -0.063
+// ring.csv) at t_kappa 0.2 to 0.6, with the straight strip's at 0, interpolated by quadratics over nu and
+// then over t_kappa (beyond 0.6, the end ones: not measured, the quarter ring there is shorter than the
+// face's zone). At nu = 0.2 and t_kappa 0.4: NM +0.017 and MM -0.063
 // (the strip's -0.031). NM is odd in t_kappa (the face mirrored), the others even.
 struct HeldFace {
   double NN = 0, VV = 0, VM = 0, MM = 0, NM = 0;
