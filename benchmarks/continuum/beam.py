@@ -23,6 +23,38 @@ from scipy.integrate import solve_ivp
 LD = np.longdouble
 
 
+def modes(rho):
+    """The thick circular bar's stress modes at rho = t / (2R) (R = 1, long double): ln(b / a), Golovin's
+    pure bending's denominator n0 and the end force's constants A, B, D. The bending mode's hoop stress
+    is -4 / n0 (-a^2 b^2 ln(b/a) / r^2 + b^2 ln(r/b) + a^2 ln(a/r) + b^2 - a^2), the end force's radial and
+    hoop ones 2 A r - 2 B / r^3 + D / r and 6 A r + 2 B / r^3 + D / r (times the sine of the angle)."""
+    a, b = 1 - rho, 1 + rho
+    lg = np.log1p(rho) - np.log1p(-rho)
+    n0 = 16 * rho * rho - 4 * (a * b) ** 2 * lg * lg
+    n1 = -4 * rho + (a * a + b * b) * lg
+    return lg, n0, 1 / (2 * n1), -(a * a) * (b * b) / (2 * n1), -(a * a + b * b) / n1
+
+
+def section_stresses(rho):
+    """The section's stresses (R = 1) of a unit N and M about the axis r = 1 (hoop: M's with int sigma
+    (r - 1) dr = 1, tension at the extrados) and of a unit V (shear), each a function of r: the bending
+    and end-force modes (modes) combined to those resultants."""
+    rho = LD(rho)
+    a, b = 1 - rho, 1 + rho
+    lg, n0, A, B, D = modes(rho)
+    Bt = lambda r: -4 / n0 * (-a * a * b * b * lg / (r * r) + b * b * np.log(r / b) + a * a * np.log(a / r) + b * b - a * a)
+    Ft = lambda r: 6 * A * r + 2 * B / r ** 3 + D / r
+    Fr = lambda r: 2 * A * r - 2 * B / r ** 3 + D / r
+    nodes, weights = np.polynomial.legendre.leggauss(64)
+    NF = MF = NB = MB = VF = LD(0)
+    for x, w in zip(nodes, weights):
+        r, w = 1 + rho * LD(x), rho * LD(w)
+        NF, MF, NB, MB, VF = NF + w * Ft(r), MF + w * Ft(r) * (r - 1), NB + w * Bt(r), MB + w * Bt(r) * (r - 1), VF + w * Fr(r)
+    det = NF * MB - NB * MF
+    return (lambda r: float((MB * Ft(LD(r)) - MF * Bt(LD(r))) / det), lambda r: float((NF * Bt(LD(r)) - NB * Ft(LD(r))) / det),
+            lambda r: float(Fr(LD(r)) / VF))
+
+
 @functools.lru_cache(None)
 def section(rho, nu, weight=False):
     """The thick circular bar's four factors (axial, coupling, bending, shear) at rho = t / (2R): Golovin's
@@ -39,10 +71,7 @@ def section(rho, nu, weight=False):
     LA = (gb - ga) / (1 / (a * a) - 1 / (b * b))
     LB = (-ga - LA / (a * a)) / 2
     SN = SM = WFr = WFt = WBr = WBt = LD(0)
-    lg = np.log1p(rho) - np.log1p(-rho)
-    n0 = 16 * rho * rho - 4 * (a * b) ** 2 * lg * lg
-    n1 = -4 * rho + (a * a + b * b) * lg
-    A, B, D = 1 / (2 * n1), -(a * a) * (b * b) / (2 * n1), -(a * a + b * b) / n1
+    lg, n0, A, B, D = modes(rho)
     nodes, weights = np.polynomial.legendre.leggauss(48)
     u0, u1 = np.log(a), np.log(b)
     NF = MF = NB = MB = VF = QFF = QFB = QBB = QV = LD(0)
@@ -114,9 +143,10 @@ def weight_terms(rho, nu):
     return section(rho, nu, True)
 
 
-def rates(arch, t, nu, s, Y, load, weight=False):
+def rates(arch, t, nu, s, Y, load, weight=False, part="all"):
     """dY/ds of the curved bar (ArchModel::curved_derivative) for the columns of Y; `load` the weight's
-    column (the others homogeneous)."""
+    column (the others homogeneous). part: the whole weight (all), or its part along the section's normal
+    (normal: (g.n) n) or along the axis (tangential), each per unit length at the slice's centroid."""
     th, k = arch.theta(s), arch.kappa(s)
     c, sn = math.cos(th), math.sin(th)
     axial, coupling, bending, shear = section(abs(k) * t / 2, nu)
@@ -125,46 +155,98 @@ def rates(arch, t, nu, s, Y, load, weight=False):
     coup = aN * k * coupling
     extension, curvature = weight_terms(abs(k) * t / 2, nu) if weight else (0.0, 0.0)
     load_strain, load_curvature = -math.copysign(1, k) * aN * t * extension, -aN * curvature
+    px, py = {"all": (0.0, -1.0), "normal": (c * sn, -c * c), "tangential": (-sn * c, -sn * sn)}[part]
+    q = px * (-sn) + py * c  # the load's part along the extrados normal
     dY = np.zeros_like(Y)
     for j in range(Y.shape[1]):
         ux, uy, psi, fx, fy, M = Y[:, j]
         N, V = c * fx + sn * fy, -sn * fx + c * fy
         eps, rot = aN * axial * N + coup * M, aV * shear * V + psi
         b = 1.0 if j == load else 0.0
-        eps += load_strain * (-b * c)
-        dY[:, j] = [eps * c - rot * sn, eps * sn + rot * c, bending * M + coup * N + load_curvature * (-b * c), 0.0, b,
-                    sn * fx - c * fy + aN * k * b * sn]
+        eps += load_strain * (b * q)
+        dY[:, j] = [eps * c - rot * sn, eps * sn + rot * c, bending * M + coup * N + load_curvature * (b * q), -b * px,
+                    -b * py, sn * fx - c * fy + aN * k * b * (-sn * py - c * px)]
     return dY
 
 
+def nearest_quadratic(table, x):
+    """The quadratic through the three rows of table (x ascending in its first column) nearest x (the end
+    ones beyond), each further column at x: ogive's interpolation of its tables."""
+    i = 0
+    while i + 3 < len(table) and x > 0.5 * (table[i + 1][0] + table[i + 2][0]):
+        i += 1
+    out = [0.0] * (len(table[0]) - 1)
+    for a in range(i, i + 3):
+        w = 1.0
+        for b in range(i, i + 3):
+            if b != a:
+                w *= (x - table[b][0]) / (table[a][0] - table[b][0])
+        for k in range(len(out)):
+            out[k] += w * table[a][k + 1]
+    return out
+
+
+def held_curved(nu, t_kappa):
+    """ogive's held face at the section's nu and t kappa (curved_section.cpp's held_face): the straight
+    strip's (held.csv) at t_kappa 0, the ring's (ring.csv, continuum.py ring) at 0.2 to 0.5, each read at
+    nu by quadratics, then over t_kappa: (c_NN, c_VV, c_VM, c_MM, c_NM)."""
+    import csv
+    import os
+    here = os.path.dirname(os.path.abspath(__file__))
+    keys = ("c_NN", "c_VV", "c_VM", "c_MM")
+    straight = nearest_quadratic([[float(r["nu"])] + [float(r[k]) for k in keys] for r in csv.DictReader(open(os.path.join(here, "held.csv")))], nu)
+    rows = list(csv.DictReader(open(os.path.join(here, "ring.csv"))))
+    over = [[0.0] + straight + [0.0]]
+    for tk in sorted({float(r["t_kappa"]) for r in rows}):
+        at = [[float(r["nu"])] + [float(r[k]) for k in keys + ("c_NM",)] for r in rows if float(r["t_kappa"]) == tk]
+        over.append([tk] + nearest_quadratic(at, nu))
+    c = nearest_quadratic(over, abs(t_kappa))
+    return tuple(c[:4]) + (math.copysign(c[4], t_kappa),)
+
+
 def held_face(arch, t, c_held):
-    """The held springing face's compliance (c_NN, c_VV, c_VM, c_MM of continuum.py strip, per E and t) as
-    the 3 x 3 matrix from (Fx, Fy, M) to (Ux, Uy, psi) at the springing, scaled (E = 12 / t^3)."""
-    cNN, cVV, cVM, cMM = c_held
-    local = np.array([[cNN * t ** 3, 0, 0], [0, cVV * t ** 3, cVM * t ** 2], [0, cVM * t ** 2, cMM * t]]) / 12
+    """The held springing face's compliance (c_NN, c_VV, c_VM, c_MM of continuum.py strip, per E and t, and
+    a curved bar's c_NM of continuum.py ring) as the 3 x 3 matrix from (Fx, Fy, M) to (Ux, Uy, psi) at the
+    springing, scaled (E = 12 / t^3)."""
+    cNN, cVV, cVM, cMM = c_held[:4]
+    cNM = c_held[4] if len(c_held) > 4 else 0.0
+    local = np.array([[cNN * t ** 3, 0, cNM * t ** 2], [0, cVV * t ** 3, cVM * t ** 2], [cNM * t ** 2, cVM * t ** 2, cMM * t]]) / 12
     th = arch.theta(0.0)
     T = np.array([[math.cos(th), math.sin(th), 0], [-math.sin(th), math.cos(th), 0], [0, 0, 1]])
     return T.T @ local @ T
 
 
-def h_over_v(kind, t, supports="clamped", nu=0.2, held=None, joint=None, weight=False):
-    """H/V of the half arch (t = t/L). held: the clamped springing face's (c_NN, c_VV, c_VM, c_MM);
-    joint: the crown joint's scaled (a, b, c); weight: the self-weight's own stress across the depth."""
+def h_over_v(kind, t, supports="clamped", nu=0.2, held=None, joint=None, weight=False, part="all", held_load=None):
+    """H/V of the half arch (t = t/L). held: the clamped springing face's (c_NN, c_VV, c_VM, c_MM[, c_NM]),
+    or "curved" for ogive's (held_curved at the springing's t kappa);
+    joint: the crown joint's scaled (a, b, c); weight: the self-weight's own stress across the depth;
+    part: the weight's part that loads the arch (rates), its H over the whole weight's V; held_load: the
+    held face's own displacement under a body force b (continuum.py held_body: a straight strip), its
+    (u_N, Uy, psi) per b t^2 / E, b t^2 / E and b t / E (u_N under b along the axis, Uy and psi under b
+    across it), added at the springing."""
     arch = Arch(kind)
     free = [3, 4, 5] if supports == "clamped" else [2, 3, 4]
     Y0 = np.zeros((6, 4))
     for j, i in enumerate(free):
         Y0[i, j] = 1.0
+    if held == "curved":  # ogive's: the face's own curvature (held_curved)
+        held = held_curved(nu, -t * arch.kappa(0.0))
     if held is not None and supports == "clamped":
         Y0[0:3, :] = held_face(arch, t, held) @ Y0[3:6, :]
-    sol = solve_ivp(lambda s, y: rates(arch, t, nu, s, y.reshape(6, 4), 3, weight).ravel(), (0.0, arch.S), Y0.ravel(),
+    if held_load is not None and supports == "clamped":
+        th = arch.theta(0.0)
+        c, sn = math.cos(th), math.sin(th)
+        # the weight per unit length is 1: b = 1 / t, E = 12 / t^3; along the axis -sin, across -cos
+        local = np.array([held_load[0] * sn * t ** 4 / 12, held_load[1] * c * t ** 4 / 12, held_load[2] * c * t ** 3 / 12])
+        Y0[0:3, 3] += np.array([[c, -sn, 0], [sn, c, 0], [0, 0, 1]]) @ local
+    sol = solve_ivp(lambda s, y: rates(arch, t, nu, s, y.reshape(6, 4), 3, weight, part).ravel(), (0.0, arch.S), Y0.ravel(),
                     method="DOP853", rtol=1e-11, atol=1e-14)
     YS = sol.y[:, -1].reshape(6, 4)
     a, b, c = joint if joint is not None else (0.0, 0.0, 0.0)
     rows = np.array([YS[0] + b * YS[5] + c * YS[3], YS[2] + a * YS[5] + b * YS[3], YS[4]])
     z = np.linalg.solve(rows[:, :3], -rows[:, 3])
     y0 = Y0[:, :3] @ z + Y0[:, 3]
-    return y0[3] / y0[4]
+    return y0[3] / y0[4] if part == "all" else -y0[3] / arch.S
 
 
 def crown_wedge(theta_c):

@@ -23,6 +23,8 @@ Usage (from the repository's top, after the build):
   /usr/bin/python3 benchmarks/continuum/continuum.py joint     # the pointed crown's joint, a local problem
   /usr/bin/python3 benchmarks/continuum/continuum.py wedge     # a pointed crown's wedge over its angle
   /usr/bin/python3 benchmarks/continuum/continuum.py trial     # the curved bar with both terms (beam.py)
+  /usr/bin/python3 benchmarks/continuum/continuum.py components # the clamped catenary's weight, part by part
+  /usr/bin/python3 benchmarks/continuum/continuum.py ring      # a curved bar's held face: ring.csv
   /usr/bin/python3 benchmarks/continuum/continuum.py figure    # docs/figures/continuum.png from the CSV
 """
 import argparse
@@ -365,6 +367,8 @@ TRIAL = os.path.join(HERE, "trial.csv")
 WEDGE = os.path.join(HERE, "wedge.csv")
 WEDGE_ANGLES = (0.5, 5, 10, 15, 20, 25, 30, 35, 40, 45, 50, 55, 60, 65, 70, 75)
 HELD = os.path.join(HERE, "held.csv")
+COMPONENTS = os.path.join(HERE, "components.csv")
+RING = os.path.join(HERE, "ring.csv")
 HELD_NU = (-0.9, -0.7, -0.5, -0.3, -0.1, 0.0, 0.1, 0.2, 0.25, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.97)
 SPREAD_CASES = [("semicircular", 0.1), ("semicircular", 0.2), ("segmental", 0.2), ("catenary", 0.2)]
 ENDS_CASES = [("semicircular", 0.1), ("semicircular", 0.2), ("equilateral", 0.2), ("catenary", 0.08), ("catenary", 0.2)]
@@ -602,6 +606,30 @@ class Strip:
         return self.ell
 
 
+def tip_weights(nodes, tip, t):
+    """The consistent nodal forces on a strip's far face (3-node edges, 6-point Gauss) of Saint-Venant's
+    tractions per unit resultant: uniform N, parabolic V and linear M; their work with a displacement
+    field is the face's displacement conjugate to each."""
+    ys = [nodes[n - 1][1] for n in tip]
+    tractions = {"N": lambda y: (1 / t, 0.0), "V": lambda y: (0.0, 1.5 / t * (1 - 4 * y * y / (t * t))),
+                 "M": lambda y: (-12 * y / t ** 3, 0.0)}
+    gauss = [(-0.9324695142, 0.1713244924), (-0.6612093865, 0.3607615730), (-0.2386191861, 0.4679139346),
+             (0.2386191861, 0.4679139346), (0.6612093865, 0.3607615730), (0.9324695142, 0.1713244924)]
+    forces = {}
+    for name, trac in tractions.items():
+        f = [[0.0, 0.0] for _ in tip]
+        for e in range(0, len(tip) - 1, 2):  # the far face's 3-node edges
+            h = ys[e + 2] - ys[e]
+            for xi, wt in gauss:
+                shape = [xi * (xi - 1) / 2, 1 - xi * xi, xi * (xi + 1) / 2]
+                p = trac(ys[e] + (xi + 1) / 2 * h)
+                for a in range(3):
+                    for d in range(2):
+                        f[e + a][d] += p[d] * shape[a] * wt * h / 2
+        forces[name] = f
+    return forces
+
+
 def strip_run(ell, nu, n_across):
     """The strip t = 1, E = 1 held whole at x = 0, its far face loaded by Saint-Venant's tractions (the
     consistent nodal forces of a uniform N and of a parabolic shear V): the far face's displacements
@@ -622,23 +650,7 @@ def strip_run(ell, nu, n_across):
     lines += ["*NSET, NSET=NHELD"] + [str(n) for n in held] + ["*NSET, NSET=NTIP"] + [str(n) for n in tip]
     lines += ["*MATERIAL, NAME=M", "*ELASTIC", f"{modulus!r}, {nu!r}", "*SOLID SECTION, ELSET=EALL, MATERIAL=M", f"{th!r}",
               "*BOUNDARY", "NHELD, 1, 2, 0."]
-    ys = [nodes[n - 1][1] for n in tip]
-    tractions = {"N": lambda y: (1 / t, 0.0), "V": lambda y: (0.0, 1.5 / t * (1 - 4 * y * y / (t * t))),
-                 "M": lambda y: (-12 * y / t ** 3, 0.0)}
-    gauss = [(-0.9324695142, 0.1713244924), (-0.6612093865, 0.3607615730), (-0.2386191861, 0.4679139346),
-             (0.2386191861, 0.4679139346), (0.6612093865, 0.3607615730), (0.9324695142, 0.1713244924)]
-    forces = {}
-    for name, trac in tractions.items():
-        f = [[0.0, 0.0] for _ in tip]
-        for e in range(0, len(tip) - 1, 2):  # the far face's 3-node edges
-            h = ys[e + 2] - ys[e]
-            for xi, wt in gauss:
-                shape = [xi * (xi - 1) / 2, 1 - xi * xi, xi * (xi + 1) / 2]
-                p = trac(ys[e] + (xi + 1) / 2 * h)
-                for a in range(3):
-                    for d in range(2):
-                        f[e + a][d] += p[d] * shape[a] * wt * h / 2
-        forces[name] = f
+    forces = tip_weights(nodes, tip, t)
     for name in ("N", "V"):  # the moment follows from V at two lengths (strip_compliance)
         lines += ["*STEP", "*STATIC", "*CLOAD, OP=NEW"]
         lines += [f"{n}, {d + 1}, {forces[name][k][d] * th:.12g}" for k, n in enumerate(tip) for d in range(2)
@@ -840,8 +852,10 @@ def trial(ogive):
     springing face of strip.csv (the finest mesh, nu 0.2) on the clamped arches and the self-weight's own
     stress across the depth as well (joint_held_weight); the same with the crown joint that the curved
     bar's own coupling gives the kink and the pointed crown's wedge (wedge.csv) instead (kink,
-    beam.kink_joint; kink_held, kink_weight and kink_held_weight with one or both of the other terms:
-    kink_held_weight is ogive's `curved`; bare_kink_held_weight the same without the wedge). The summary as
+    beam.kink_joint; kink_held, kink_weight and kink_held_weight with one or both of the other terms;
+    bare_kink_held_weight the same without the wedge); kink_curved_held and kink_curved_held_weight with the
+    held face of a curved bar (ring.csv, beam.held_curved) instead of the straight strip's: the latter is
+    ogive's `curved`. The summary as
     the table's, each variant's rows beyond half of Timoshenko's error with the continuum's fe_error."""
     import beam
     joints = {r["t_over_L"]: (float(r["a"]), float(r["b"]), float(r["c"])) for r in csv.DictReader(open(JOINT))}
@@ -850,7 +864,7 @@ def trial(ogive):
     rows = [r for r in csv.DictReader(open(TABLE)) if r["plane"] == "stress"]
     out = []
     names = ["none", "joint", "joint_held_weight", "kink", "kink_held", "kink_weight", "kink_held_weight",
-             "bare_kink_held_weight"]
+             "bare_kink_held_weight", "kink_curved_held", "kink_curved_held_weight"]
     with open(TRIAL, "w", newline="") as f:
         w = csv.writer(f, lineterminator="\n")
         w.writerow(["arch", "supports", "t_over_L", "continuum", "timoshenko_error", "curved_error"] +
@@ -864,7 +878,8 @@ def trial(ogive):
             bare = beam.kink_joint(beam.Arch(r["arch"]), ratio, wedge=False) if pointed else (0.0, 0.0, 0.0)
             hv = lambda **kw: beam.h_over_v(r["arch"], ratio, r["supports"], **kw)
             got = [hv(), hv(joint=J), hv(joint=J, held=held, weight=True), hv(joint=kink), hv(joint=kink, held=held),
-                   hv(joint=kink, weight=True), hv(joint=kink, held=held, weight=True), hv(joint=bare, held=held, weight=True)]
+                   hv(joint=kink, weight=True), hv(joint=kink, held=held, weight=True), hv(joint=bare, held=held, weight=True),
+                   hv(joint=kink, held="curved"), hv(joint=kink, held="curved", weight=True)]
             errors = [(g - ref) / max(abs(ref), 0.01) for g in got]
             out.append((r, errors))
             w.writerow([r["arch"], r["supports"], r["t_over_L"], r["continuum"], r["timoshenko_error"], r["curved_error"]] +
@@ -879,6 +894,277 @@ def trial(ogive):
             if abs(e[k]) > 0.5 * abs(float(r["timoshenko_error"])) and k > 0:
                 print(f"  not: {r['arch']} {r['supports']} t/L {r['t_over_L']}: {e[k]:+.2e}, timoshenko "
                       f"{float(r['timoshenko_error']):+.2e}, fe_error {float(r['fe_error']) / float(r['continuum']):.1e}")
+
+
+def held_body_run(ell, nu, n_across):
+    """The strip t = 1, E = 1, held whole at x = 0, under a body force 1 across it (-y) and then along it
+    (-x, towards the held face): the far face's displacements conjugate to N, V and M (tip_weights), less
+    the beam's: Timoshenko's clamped beam (k = 5/6) with the held face's compliance (held.csv at this nu)
+    and the straight bar's own stress under the load across, a curvature -nu/5 b / E (the curved bar's
+    weight term's limit). Across, the far face carries the exact solution's self-equilibrated stress
+    sigma_x = b (3 y / 5 - 4 y^3 / t^2) (the strip is then the polynomial solution but at the held face)."""
+    t, b = 1.0, 1.0
+    nodes, elements, held, tip = mesh(Strip(t, ell), n_across)
+    th = section_thickness(Strip(t, ell))
+    lines = ["*HEADING", "held strip, body force", "*NODE"]
+    lines += [f"{k + 1}, {x:.13f}, {y:.13f}, 0" for k, (x, y) in enumerate(nodes)]
+    lines += ["*ELEMENT, TYPE=CPS8, ELSET=EALL"] + [f"{k + 1}, " + ", ".join(map(str, e)) for k, e in enumerate(elements)]
+    lines += ["*NSET, NSET=NHELD"] + [str(n) for n in held] + ["*NSET, NSET=NTIP"] + [str(n) for n in tip]
+    lines += ["*MATERIAL, NAME=M", "*ELASTIC", f"1.0, {nu!r}", "*DENSITY", "1.0", "*SOLID SECTION, ELSET=EALL, MATERIAL=M",
+              f"{th!r}", "*BOUNDARY", "NHELD, 1, 2, 0."]
+    forces = tip_weights(nodes, tip, t)
+    # sigma_c = b (3 y / 5 - 4 y^3 / t^2) = b t^2 / 20 (12 y / t^3 - 80 y^3 / t^5): the M pattern's and a cubic's forces
+    ys = [nodes[n - 1][1] for n in tip]
+    cubic = [0.0 for _ in tip]
+    gauss = [(-0.9324695142, 0.1713244924), (-0.6612093865, 0.3607615730), (-0.2386191861, 0.4679139346),
+             (0.2386191861, 0.4679139346), (0.6612093865, 0.3607615730), (0.9324695142, 0.1713244924)]
+    for e in range(0, len(tip) - 1, 2):
+        h = ys[e + 2] - ys[e]
+        for xi, wt in gauss:
+            y = ys[e] + (xi + 1) / 2 * h
+            for a, shape in enumerate((xi * (xi - 1) / 2, 1 - xi * xi, xi * (xi + 1) / 2)):
+                cubic[e + a] += b * (0.6 * y - 4 * y ** 3 / t ** 2) * shape * wt * h / 2
+    lines += ["*STEP", "*STATIC", "*DLOAD", "EALL, GRAV, 1., 0., -1., 0.", "*CLOAD"]
+    lines += [f"{n}, 1, {cubic[k] * th:.12g}" for k, n in enumerate(tip) if abs(cubic[k]) > 1e-14]
+    lines += ["*NODE PRINT, NSET=NTIP", "U", "*END STEP"]
+    lines += ["*STEP", "*STATIC", "*DLOAD, OP=NEW", "EALL, GRAV, 1., -1., 0., 0.", "*CLOAD, OP=NEW"]
+    lines += ["*NODE PRINT, NSET=NTIP", "U", "*END STEP"]
+    dat = run_input("\n".join(lines) + "\n")
+    got = []
+    for block in re.split(r"displacements \(vx,vy,vz\)", dat)[1:]:
+        u = {int(m.group(1)): (float(m.group(2)), float(m.group(3)))
+             for m in re.finditer(r"^\s*(\d+)\s+([-+0-9.Ee]+)\s+([-+0-9.Ee]+)\s+[-+0-9.Ee]+\s*$", block, re.M)}
+        got.append({c: sum(forces[c][k][d] * u[n][d] for k, n in enumerate(tip) for d in range(2)) for c in "NVM"})
+    row = [r for r in csv.DictReader(open(HELD)) if float(r["nu"]) == nu][0]
+    cNN, cVV, cVM, cMM = (float(row[k]) for k in ("c_NN", "c_VV", "c_VM", "c_MM"))
+    kGA, q, kappa = 5 / 6 / (2 * (1 + nu)), b * t, -nu / 5 * b
+    # by reciprocity: the work of the load on the beam's displacements under a unit far-face V or M
+    # (u_y = Uy0 + psi0 x + 12 (ell x^2 / 2 - x^3 / 6) + x / kGA, Uy0 = cVV + ell cVM, psi0 = cVM + ell cMM;
+    # under M: u_y = cVM + cMM x + 6 x^2), and the own-stress curvature's work on their moments (ell - x, 1)
+    beam_V = -q * ((cVV + ell * cVM) * ell + (cVM + ell * cMM) * ell ** 2 / 2 + 1.5 * ell ** 4 + ell ** 2 / 2 / kGA)
+    beam_V += kappa * ell ** 2 / 2
+    beam_M = -q * (cVM * ell + cMM * ell ** 2 / 2 + 2 * ell ** 3) + kappa * ell
+    beam_N = -q * (ell ** 2 / 2 + cNN * ell)
+    return got[0]["V"] - beam_V, got[0]["M"] - beam_M, got[1]["N"] - beam_N
+
+
+def held_body(nu=NU, n_across=32):
+    """The held face's own displacement under a body force beyond the beam's (held_body_run): (u_N, Uy, psi)
+    per b t^2 / E, b t^2 / E and b t / E, the load along the axis for u_N and across for Uy and psi; from
+    the strips 4 t and 8 t long (psi the rotation's mean, Uy = dV - psi ell; they must not depend on ell)."""
+    runs = {ell: held_body_run(ell, nu, n_across) for ell in (4.0, 8.0)}
+    psi = (runs[4.0][1] + runs[8.0][1]) / 2
+    return runs[8.0][2], runs[8.0][0] - 8.0 * psi, psi, runs
+
+
+RING_TK = (0.2, 0.3, 0.4, 0.5, 0.6)
+
+
+def ring_compliance(nu, t_kappa, n_across=32):
+    """A curved bar's held face: the semicircle's half (R = L/2, t/L = t_kappa / 2, no weight), its
+    springing face held whole, its crown face loaded by the thick circular bar's own section stresses
+    (beam.section_stresses: Golovin's, so that the bar is plane elasticity's exact solution but for the
+    held face's zone) of a unit N, V and M in turn. The crown's displacements conjugate to them, less the
+    curved bar's (its section law integrated over the quarter turn), are the held face's compliance seen
+    through the bar: its (c_NN, c_VV, c_VM, c_MM) as strip_compliance's and c_NM, the turn under N (and the
+    stretch under M: Maxwell), per E t (the straight strip's is zero: its symmetry), in the springing's
+    frame (the axis leaving it) with N, V and M the bar's forces on the face. nu is the section's (from
+    0.5 in plane strain, as strip_run). CalculiX's *CLOAD values are scaled to 1 at their largest (small
+    ones came out wrong in 2.21)."""
+    import beam
+    ratio = t_kappa / 2
+    arch = make_arch("semicircular", ratio * SPAN)
+    nodes, elements, springing, crown = mesh(arch, n_across)
+    t, R = arch.t, SPAN / 2
+    E = 12 / t ** 3  # E I = 1 per unit width
+    section_nu, element, modulus = nu, "CPS8", E
+    if nu >= 0.5:
+        nu = nu / (1 + nu)
+        element, modulus = "CPE8", E * (1 - nu * nu)
+    th = section_thickness(arch)
+    sN, sM, tV = beam.section_stresses(t / (2 * R))
+    # the crown face x = L/2 from the intrados up, r = y / R; N along +x, V along +y, M anticlockwise
+    patterns = [lambda y: (sN(y / R) / R, 0.0), lambda y: (0.0, tV(y / R) / R), lambda y: (-sM(y / R) / R ** 2, 0.0)]
+    ys = [nodes[n - 1][1] for n in crown]
+    gauss = [(-0.9324695142, 0.1713244924), (-0.6612093865, 0.3607615730), (-0.2386191861, 0.4679139346),
+             (0.2386191861, 0.4679139346), (0.6612093865, 0.3607615730), (0.9324695142, 0.1713244924)]
+    forces = []
+    for trac in patterns:
+        f = [[0.0, 0.0] for _ in crown]
+        for e in range(0, len(crown) - 1, 2):
+            h = ys[e + 2] - ys[e]
+            for xi, wt in gauss:
+                p = trac(ys[e] + (xi + 1) / 2 * h)
+                for a, shape in enumerate((xi * (xi - 1) / 2, 1 - xi * xi, xi * (xi + 1) / 2)):
+                    for d in range(2):
+                        f[e + a][d] += p[d] * shape * wt * h / 2
+        forces.append(f)
+    lines = ["*HEADING", "held curved bar", "*NODE"] + [f"{k + 1}, {x:.13f}, {y:.13f}, 0" for k, (x, y) in enumerate(nodes)]
+    lines += [f"*ELEMENT, TYPE={element}, ELSET=EALL"] + [f"{k + 1}, " + ", ".join(map(str, e)) for k, e in enumerate(elements)]
+    lines += ["*NSET, NSET=NSPRING"] + [str(n) for n in springing] + ["*NSET, NSET=NCROWN"] + [str(n) for n in crown]
+    lines += ["*MATERIAL, NAME=M", "*ELASTIC", f"{modulus!r}, {nu!r}", f"*SOLID SECTION, ELSET=EALL, MATERIAL=M", f"{th!r}",
+              "*BOUNDARY", "NSPRING, 1, 2, 0."]
+    scale = [1 / (th * max(abs(v) for row in f for v in row)) for f in forces]  # per unit width: times th
+    for f, sc in zip(forces, scale):
+        lines += ["*STEP", "*STATIC", "*CLOAD, OP=NEW"]
+        lines += [f"{n}, {d + 1}, {f[k][d] * th * sc:.15g}" for k, n in enumerate(crown) for d in range(2) if f[k][d]]
+        lines += ["*NODE PRINT, NSET=NCROWN", "U", "*END STEP"]
+    dat = run_input("\n".join(lines) + "\n")
+    measured = [[0.0] * 3 for _ in range(3)]
+    for j, block in enumerate(re.split(r"displacements \(vx,vy,vz\)", dat)[1:]):
+        u = {int(m.group(1)): (float(m.group(2)), float(m.group(3)))
+             for m in re.finditer(r"^\s*(\d+)\s+([-+0-9.Ee]+)\s+([-+0-9.Ee]+)\s+[-+0-9.Ee]+\s*$", block, re.M)}
+        for i in range(3):
+            # per unit load (the loads were scale times) and in the span's units (L = 1, E I = 1)
+            work = sum(forces[i][k][d] * u[n][d] for k, n in enumerate(crown) for d in range(2)) / scale[j]
+            measured[i][j] = work / SPAN ** (3 - (i == 2) - (j == 2))
+    # the curved bar (beam.py's section law, L = 1): the crown's loads (Px, Py, Mc) at (1/2, 1/2) give the
+    # section at s, (x, y) on the quarter circle about (1/2, 0), N, V, M = G (Px, Py, Mc)
+    axial, coupling, bending, shear = beam.section(ratio, section_nu)
+    aN = ratio ** 2 / 12
+    aV, coup = aN * 2 * (1 + section_nu) / (5 / 6), -2 * aN * coupling
+    S = math.pi / 4
+    bar = [[0.0] * 3 for _ in range(3)]
+    for x, w in zip(*gauss_legendre(200)):
+        s = S / 2 * (1 + x)
+        theta = math.pi / 2 - 2 * s
+        c, sn = math.cos(theta), math.sin(theta)
+        px, py = 0.5 - 0.5 * math.cos(2 * s), 0.5 * math.sin(2 * s)
+        G = [[c, sn, 0.0], [-sn, c, 0.0], [-(0.5 - py), 0.5 - px, 1.0]]
+        Cs = [[aN * axial, 0.0, coup], [0.0, aV * shear, 0.0], [coup, 0.0, bending]]
+        for i in range(3):
+            for j in range(3):
+                bar[i][j] += S / 2 * w * sum(G[a][i] * Cs[a][b] * G[b][j] for a in range(3) for b in range(3))
+    # measured - bar = B' H B, B the crown's loads to the springing's (Fx, Fy, M) = (Px, Py, Mc - Px / 2 + Py / 2),
+    # H the springing's compliance in the global frame; its frame (the axis leaving it, straight up) is
+    # T H T' with T = [[0, 1, 0], [-1, 0, 0], [0, 0, 1]]
+    import numpy as np
+    B = np.array([[1.0, 0, 0], [0, 1.0, 0], [-0.5, 0.5, 1.0]])
+    Bi = np.linalg.inv(B)
+    H = Bi.T @ (np.array(measured) - np.array(bar)) @ Bi
+    T = np.array([[0, 1.0, 0], [-1.0, 0, 0], [0, 0, 1.0]])
+    local = T @ H @ T.T
+    tt = ratio
+    return (12 * local[0, 0] / tt ** 3, 12 * local[1, 1] / tt ** 3, 6 * (local[1, 2] + local[2, 1]) / tt ** 2,
+            12 * local[2, 2] / tt, 6 * (local[0, 2] + local[2, 0]) / tt ** 2)
+
+
+def gauss_legendre(n):
+    import numpy as np
+    return np.polynomial.legendre.leggauss(n)
+
+
+def ring():
+    """ring.csv: the held face of a curved bar (ring_compliance) over the section's nu (HELD_NU) and t kappa
+    (t / R at the face: 0.2 to 0.6), 32 elements through the depth; what ogive's curved bar adds to the
+    straight strip's (held.csv) at its clamped springings (src/model/curved_section.cpp, kHeldCurved)."""
+    with open(RING, "w", newline="") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(["nu", "t_kappa", "c_NN", "c_VV", "c_VM", "c_MM", "c_NM"])
+        for nu in HELD_NU:
+            for tk in RING_TK:
+                w.writerow([repr(nu), repr(tk)] + [f"{c:.5f}" for c in ring_compliance(nu, tk)])
+                f.flush()
+    print(open(RING).read(), end="")
+
+
+COMPONENTS_CASES = [(0.15, 0.2), (0.2, 0.2), (0.15, 0.0), (0.2, 0.0)]
+SHAPE_CORNERS, SHAPE_MIDS = [(-1, -1), (1, -1), (1, 1), (-1, 1)], [(0, -1), (1, 0), (0, 1), (-1, 0)]
+
+
+def weight_part_loads(nodes, elements, part):
+    """Consistent nodal forces (per rho g and unit out-of-plane thickness; CPS8's serendipity shape
+    functions, 3 x 3 Gauss points) of the weight's part along the section's normal ((g . n) n, n the unit
+    d x / d eta at the point: the mesh's lines across are the beam's sections) or the rest (tangential)."""
+    forces = [[0.0, 0.0] for _ in nodes]
+    g3 = [(-math.sqrt(0.6), 5 / 9), (0.0, 8 / 9), (math.sqrt(0.6), 5 / 9)]
+    for e in elements:
+        X = [nodes[k - 1] for k in e]
+        for x, wx in g3:
+            for y, wy in g3:
+                N, dx, de = [], [], []
+                for a, b in SHAPE_CORNERS:
+                    N.append((1 + a * x) * (1 + b * y) * (a * x + b * y - 1) / 4)
+                    dx.append(a * (1 + b * y) * (2 * a * x + b * y) / 4)
+                    de.append(b * (1 + a * x) * (a * x + 2 * b * y) / 4)
+                for a, b in SHAPE_MIDS:
+                    if a == 0:
+                        N.append((1 - x * x) * (1 + b * y) / 2), dx.append(-x * (1 + b * y)), de.append(b * (1 - x * x) / 2)
+                    else:
+                        N.append((1 + a * x) * (1 - y * y) / 2), dx.append(a * (1 - y * y) / 2), de.append(-y * (1 + a * x))
+                jx = [sum(d * P[i] for d, P in zip(dx, X)) for i in (0, 1)]
+                je = [sum(d * P[i] for d, P in zip(de, X)) for i in (0, 1)]
+                det = abs(jx[0] * je[1] - jx[1] * je[0])
+                h = math.hypot(*je)
+                n = (je[0] / h, je[1] / h)
+                b = (-n[1] * n[0], -n[1] * n[1])  # (g . n) n with g = (0, -1)
+                if part == "tangential":
+                    b = (-b[0], -1 - b[1])
+                for i, k in enumerate(e):
+                    forces[k - 1][0] += wx * wy * det * N[i] * b[0]
+                    forces[k - 1][1] += wx * wy * det * N[i] * b[1]
+    return forces
+
+
+def weight_parts(arch, n_across, supports, nu):
+    """The springing's H under the weight's normal part (weight_part_loads) and under the rest (the whole
+    weight, GRAV, less the normal part's H), each over the whole weight's V. CalculiX's RF at the held
+    face leaves out the loads on its own nodes (they go straight into the support): their sum is taken
+    off, and the vertical one must then be the part's own (a check: CalculiX 2.21 applied a different load
+    than its deck's *CLOAD for the tangential part on the finest mesh at t/L 0.15, which is why that part
+    is the difference)."""
+    text, _ = ccx_input(arch, n_across, False, supports, nu)
+    nodes, elements, springing, _ = mesh(arch, n_across)
+    th = section_thickness(arch)
+    forces = weight_part_loads(nodes, elements, "normal")
+    lines = ["*STEP", "*STATIC", "*CLOAD"]
+    lines += [f"{k + 1}, {d + 1}, {f[d] * RHO * G_ACC * th:.15g}" for k, f in enumerate(forces) for d in (0, 1) if f[d]]
+    lines += ["*NODE PRINT, NSET=NSPRING, TOTALS=ONLY", "RF", "*END STEP"]
+    dat = run_input(text[:text.index("*STEP")] + "\n".join(lines) + "\n")
+    m = re.search(r"total force \(fx,fy,fz\).*?\n\s*\n?\s*([-+0-9.Ee]+)\s+([-+0-9.Ee]+)\s+([-+0-9.Ee]+)", dat, re.S)
+    V = RHO * G_ACC * area(arch)
+    held = [sum(forces[k - 1][d] for k in springing) * RHO * G_ACC / V for d in (0, 1)]
+    fy = -sum(f[1] for f in forces) * RHO * G_ACC / V  # the part's weight over the whole weight
+    normal = float(m.group(1)) / th / V - held[0]
+    if abs(float(m.group(2)) / th / V - held[1] - fy) > 1e-5:
+        raise RuntimeError(f"ccx's vertical reaction {float(m.group(2)) / th / V - held[1]:.6f} is not the load's {fy:.6f}")
+    whole, _, _ = run_ccx(arch, n_across, False, supports, nu)
+    return [normal, whole - normal]
+
+
+def components():
+    """components.csv: the clamped catenary (rise L/2) at t/L 0.15 and 0.2, nu 0.2 and 0, under the
+    weight's part along the section's normal and the part along the axis apart (consistent nodal loads),
+    the continuum's H (over the whole weight's V, extrapolated from 4, 8 and 16 elements through the depth)
+    beside beam.py's curved bar (ogive's: the curved bar's held face, beam.held_curved, and the weight's
+    own stress) and the same without the weight's own stress; the whole weight (the parts' sum), also with
+    the straight strip's held face (held.csv: all_straight_face) and with the held face's own displacement
+    under the body force (held_body, 32 elements through the strip's depth) added at the springing
+    (all_held_body)."""
+    import beam
+    held = {r["nu"]: tuple(float(r[k]) for k in ("c_NN", "c_VV", "c_VM", "c_MM")) for r in csv.DictReader(open(HELD))}
+    body = {nu: held_body(nu)[:3] for nu in sorted({nu for _, nu in COMPONENTS_CASES})}
+    for nu, (u_n, u_y, psi) in body.items():
+        print(f"held face under a body force, nu {nu}: u_N {u_n:+.4f} b t^2 / E (along), Uy {u_y:+.4f} b t^2 / E, "
+              f"psi {psi:+.4f} b t / E (across)")
+    with open(COMPONENTS, "w", newline="") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(["arch", "supports", "t_over_L", "nu", "part", "continuum", "fe_error", "curved", "curved_no_weight_stress",
+                    "difference", "weight_stress_share"])
+        for ratio, nu in COMPONENTS_CASES:
+            arch = make_arch("catenary", ratio * SPAN)
+            meshes = [weight_parts(arch, n, "clamped", nu) for n in (4, 8, 16)]
+            for j, part in enumerate(("normal", "tangential", "all", "all_straight_face", "all_held_body")):
+                values = [round(m[0] + m[1] if part.startswith("all") else m[j], 7) for m in meshes]
+                hv, err, _ = extrapolate(values)
+                face = held[repr(nu)] if part == "all_straight_face" else "curved"
+                extra = {"held_load": body[nu], "part": "all"} if part == "all_held_body" else {"part": part[:3] if part.startswith("all") else part}
+                curved, bare = (beam.h_over_v("catenary", ratio, "clamped", nu, face, weight=wt, **extra)
+                                for wt in (True, False))
+                w.writerow(["catenary", "clamped", repr(ratio), repr(nu), part, f"{hv:.7f}", f"{err:.1e}", f"{curved:.7f}",
+                            f"{bare:.7f}", f"{curved - hv:+.2e}", f"{curved - bare:+.2e}"])
+                f.flush()
+    print(open(COMPONENTS).read(), end="")
 
 
 def figure(out=os.path.join(TOP, "docs", "figures", "continuum.png")):
@@ -971,6 +1257,8 @@ def main():
         "joint": (joint, lambda a: [a.ogive]),
         "wedge": (wedge, lambda a: []),
         "trial": (trial, lambda a: [a.ogive]),
+        "components": (components, lambda a: []),
+        "ring": (ring, lambda a: []),
         "figure": (figure, lambda a: []),
     }
     parser = argparse.ArgumentParser(

@@ -359,22 +359,28 @@ void ArchModel::set_boundary_conditions() {
 Eigen::Matrix3d ArchModel::held_face_compliance(bool left) const {
   // The face's compliance (curved_section.hpp's held_face) scaled: with E I = 1 and the span 1, E = 12 /
   // t~^3, so V / E is V~ t~^3 / 12, M / (E t) is M~ t~^2 / 12 and M / (E t^2) is M~ t~ / 12.
-  const HeldFace c = held_face(section_poisson_ratio());
+  // The face's t / R: an arch's kappa is negative, its centre of curvature on the intrados' side, opposite
+  // the face's V (the held face's t_kappa > 0), at both springings.
   const double t = std::sqrt(12.0 * a_N_);
+  const double s_face = left ? 0.0 : curve_->length();
+  const HeldFace c = held_face(section_poisson_ratio(), -t * curve_->at(s_face).kappa * scales_.length);
   Eigen::Matrix3d local;
-  local << c.NN * t * t * t, 0, 0, 0, c.VV * t * t * t, c.VM * t * t, 0, c.VM * t * t, c.MM * t;
+  local << c.NN * t * t * t, 0, c.NM * t * t, 0, c.VV * t * t * t, c.VM * t * t, c.NM * t * t, c.VM * t * t, c.MM * t;
   local /= 12.0;
   // The left springing's frame is the axis leaving it (theta at s = 0), and its forces on the face are
   // y(0)'s Fx, Fy, M (the part beyond on the part before): y(0) = T' C T y(0)'s forces, T from global
   // to the frame. At the right springing the axis arrives: its frame is turned by pi (the same T up to
   // the sign of N and V), the forces on the face are minus y(S~)'s, and the frame's rotation is the
-  // global one: y(S~) = -T' D C D T y(S~)'s forces, D = diag(1, 1, -1) (the mirror image of the left).
-  const double theta = curve_->at(left ? 0.0 : curve_->length()).theta;
+  // global one. The face is the mirror image of the left one, whose V and M the mirror reverses: C in the
+  // face's own frame (N leaving it, V and M anticlockwise) is diag(1, -1, -1) C diag(1, -1, -1), and in T's
+  // (N and V reversed) y(S~) = -T' D C D T y(S~)'s forces with D = diag(1, -1, 1) (the signs of VM and NV
+  // change, NM's does not).
+  const double theta = curve_->at(s_face).theta;
   const double c0 = std::cos(theta), s0 = std::sin(theta);
   Eigen::Matrix3d T;
   T << c0, s0, 0, -s0, c0, 0, 0, 0, 1;
   if (left) return T.transpose() * local * T;
-  const Eigen::Vector3d d(1, 1, -1);
+  const Eigen::Vector3d d(1, -1, 1);
   return -T.transpose() * d.asDiagonal() * local * d.asDiagonal() * T;
 }
 

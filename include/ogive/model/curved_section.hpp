@@ -49,10 +49,20 @@ CurvedSection curved_section(double rho, double nu);
 // elements through the depth, benchmarks/continuum strip: held.csv), tabulated over nu from -0.9 to 0.97
 // and interpolated by quadratics (beyond, the end ones); at nu = 0 only VV (-0.035, the warping) is left; at nu = 0.2 VV -0.043, VM -0.017,
 // MM -0.031, NN -0.006: all negative, a stiffer end. nu in (-1, 1).
+// A curved bar's face (t_kappa = t / R there, positive where the centre of curvature lies opposite the
+// face's V: an arch's springing, its V towards the extrados) adds a coupling of N and the turn, by Maxwell of M and the
+// stretch: NM N / (E t) to the turn and NM M / (E t) to the stretch, and moves the other four. Plane
+// elasticity's: the semicircle's half (R = L / 2, no weight) held whole at its springing face and loaded
+// at its crown face by the thick circular bar's own section stresses of N, V and M (Golovin's), less the
+// bar's compliance (CalculiX, 32 quadratic elements through the depth, benchmarks/continuum ring:
+// ring.csv) at t_kappa 0.2 to 0.6, with the straight strip's at 0, interpolated by quadratics over nu and
+// then over t_kappa (beyond 0.6, the end ones: not measured, the quarter ring there is shorter than the
+// face's zone). At nu = 0.2 and t_kappa 0.4: NM +0.017 and MM -0.063
+// (the strip's -0.031). NM is odd in t_kappa (the face mirrored), the others even.
 struct HeldFace {
-  double NN = 0, VV = 0, VM = 0, MM = 0;
+  double NN = 0, VV = 0, VM = 0, MM = 0, NM = 0;
 };
-HeldFace held_face(double nu);
+HeldFace held_face(double nu, double t_kappa = 0);
 
 // A pointed crown's wedge: where the two legs meet at a point, the body between the beam's radial crown
 // section (through the axis' crown point) and the crown's vertical line is not a bar's section; within
