@@ -622,6 +622,7 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
   int increments = r.increments, rolls = r.rolls;
   double change = 0;  // no refinement: nothing moved
   bool other_start = false;  // the last refinement changed the state at d = 0
+  bool grazed = false;       // joints were put where the line grazes the faces at d = 0
   // With a finite strength, and on walls, the capacity follows the hinges at d = 0 (spreading.hpp): they
   // are refined next to as well, and a finer ring that only slides them along their faces resolves them.
   const bool follows_start = std::isfinite(limit.compressive_strength) || scene.has_walls();
@@ -648,8 +649,24 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
     // finite strength hinges at d = 0 that only slid along their faces are that state resolved further).
     if (!same_places(finer.path.front().hinges, r.path.front().hinges, r.ring.span) &&
         !(follows_start && slid_along(finer.path.front().hinges, r.path.front().hinges, kNewHingeReach * r.ring.span))) {
-      other_start = true;
-      break;
+      // A hinge at d = 0 that stays to collapse (a pointed arch's haunch) carries the capacity with
+      // where its joint is: once, joints where the least-thrust line grazes the continuous arch's faces,
+      // which the finer rings keep (their new joints beside it leave the state at d = 0 as it is).
+      std::vector<double> graze = follows_start || grazed ? std::vector<double>{}
+                                                          : grazing_fractions(base.ring, base.min_state, base.min_state.hinges);
+      grazed = true;
+      if (graze.empty()) {
+        other_start = true;
+        break;
+      }
+      fractions.insert(fractions.end(), graze.begin(), graze.end());
+      fractions = limit_detail::merged_fractions(std::move(fractions));
+      r = follow(limit_detail::make_ring_at(scene, frictionless, fractions), start, limit, round);
+      increments += r.increments;
+      rolls += r.rolls;
+      change = 0;
+      refinement = -1;
+      continue;
     }
     r = std::move(finer);
     if (scene.has_walls()) system = std::move(finer_ring);

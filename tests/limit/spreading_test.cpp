@@ -552,3 +552,27 @@ TEST_CASE("spreading: loaded arches whose contacts went back and forth now reach
     }
   }
 }
+
+TEST_CASE("spreading: the equilateral arch converges on an independent reference's capacity") {
+  // benchmarks/spreading_pointed/spread_check.py: its own ring (2000 and 4000 equal voussoirs per half
+  // and a joint where the least-thrust line grazes each face at d = 0, the haunch hinge's joint to
+  // collapse), statics and kinematics of the symmetric four-hinge mechanism, the weight on the axis.
+  // Its capacity (the span's increase at collapse over L) and H/V at collapse, the same from both rings.
+  struct Reference {
+    double t_over_L, capacity, H_over_V_collapse;
+  };
+  // H/V at collapse: the reference prints six digits.
+  constexpr double kPrinted = 1e-5;
+  for (const Reference ref : {Reference{0.06, 0.142070, 0.294260}, Reference{0.10, 0.391232, 0.432441},
+                              Reference{0.14, 0.594840, 0.589554}}) {
+    CAPTURE(ref.t_over_L);
+    LimitOptions o;
+    o.weight = WeightModel::axis;
+    const SpreadOptions spread_options;
+    const SpreadResult r = analyse_spreading(paper_scene(0.5, ref.t_over_L), o, spread_options);
+    CAPTURE(r.message);
+    REQUIRE(r.status == SpreadStatus::success);
+    CHECK(close(spread_capacity_ratio(r, spread_options), ref.capacity, kSpreadCapacityTolerance));
+    CHECK(close(r.path.back().H / r.path.back().V_left, ref.H_over_V_collapse, kPrinted));
+  }
+}
