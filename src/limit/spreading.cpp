@@ -650,10 +650,11 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
     if (!same_places(finer.path.front().hinges, r.path.front().hinges, r.ring.span) &&
         !(follows_start && slid_along(finer.path.front().hinges, r.path.front().hinges, kNewHingeReach * r.ring.span))) {
       // A hinge at d = 0 that stays to collapse (a pointed arch's haunch) carries the capacity with
-      // where its joint is: once, joints where the least-thrust line grazes the continuous arch's faces,
-      // which the finer rings keep (their new joints beside it leave the state at d = 0 as it is).
-      std::vector<double> graze = follows_start || grazed ? std::vector<double>{}
-                                                          : grazing_fractions(base.ring, base.min_state, base.min_state.hinges);
+      // where its joint is: where the capacity moved, once, joints where the least-thrust line grazes the
+      // continuous arch's faces, which the finer rings keep (new joints beside them leave that state).
+      std::vector<double> graze = follows_start || grazed || change <= kSpreadCapacityTolerance
+                                      ? std::vector<double>{}
+                                      : grazing_fractions(base.ring, base.min_state, base.min_state.hinges);
       grazed = true;
       if (graze.empty()) {
         other_start = true;
