@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <tuple>
 #include <stdexcept>
 
 #include <Eigen/Geometry>
@@ -623,6 +624,7 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
   double change = 0;  // no refinement: nothing moved
   bool other_start = false;  // the last refinement changed the state at d = 0
   bool grazed = false;       // joints were put where the line grazes the faces at d = 0
+  std::optional<std::pair<SpreadResult, double>> before;  // the path and change before that
   // With a finite strength, and on walls, the capacity follows the hinges at d = 0 (spreading.hpp): they
   // are refined next to as well, and a finer ring that only slides them along their faces resolves them.
   const bool follows_start = std::isfinite(limit.compressive_strength) || scene.has_walls();
@@ -639,7 +641,8 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
     SpreadResult finer = follow(finer_ring, start, limit, round);
     increments += finer.increments;
     rolls += finer.rolls;
-    if (finer.status != SpreadStatus::success) return finer;
+    if (finer.status != SpreadStatus::success && !before) return finer;
+    if (finer.status != SpreadStatus::success && (change = std::numeric_limits<double>::infinity())) break;
     // Relative to the capacity, but not below kSpreadCapacityFloor of the span (an arch near t_min,
     // whose capacity is next to nothing).
     change = std::abs(finer.d_max - r.d_max) / std::max(finer.d_max, kSpreadCapacityFloor * r.ring.span / sides);
@@ -649,30 +652,33 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
     // finite strength hinges at d = 0 that only slid along their faces are that state resolved further).
     if (!same_places(finer.path.front().hinges, r.path.front().hinges, r.ring.span) &&
         !(follows_start && slid_along(finer.path.front().hinges, r.path.front().hinges, kNewHingeReach * r.ring.span))) {
-      // A hinge at d = 0 that stays to collapse (a pointed arch's haunch) carries the capacity with
-      // where its joint is: where the capacity moved, once, joints where the least-thrust line grazes the
-      // continuous arch's faces, which the finer rings keep (new joints beside them leave that state).
-      std::vector<double> graze = follows_start || grazed || change <= kSpreadCapacityTolerance
+      // A hinge at d = 0 that stays to collapse (a pointed arch's haunch) carries the capacity with its joint: once,
+      // joints where the least-thrust line grazes the continuous arch's faces, kept by the finer rings.
+      std::vector<double> graze = follows_start || grazed || change <= kSpreadCapacityTolerance ||
+                                          limit.joints != JointOrientation::radial  // vertical: not tried yet
                                       ? std::vector<double>{}
                                       : grazing_fractions(base.ring, base.min_state, base.min_state.hinges);
       grazed = true;
-      if (graze.empty()) {
+      if (!graze.empty()) before.emplace(r, change);  // kept where the ring with them does not converge
+      else {
         other_start = true;
         break;
       }
       fractions.insert(fractions.end(), graze.begin(), graze.end());
       fractions = limit_detail::merged_fractions(std::move(fractions));
       r = follow(limit_detail::make_ring_at(scene, frictionless, fractions), start, limit, round);
-      increments += r.increments;
-      rolls += r.rolls;
-      change = 0;
-      refinement = -1;
+      increments += r.increments, rolls += r.rolls;
+      change = 0, refinement = -1;  // the refinement starts over from that ring
       continue;
     }
     r = std::move(finer);
     if (scene.has_walls()) system = std::move(finer_ring);
   }
-  const bool converged = r.status != SpreadStatus::success || change <= kSpreadCapacityTolerance;
+  if (before && !(r.status == SpreadStatus::success && change <= kSpreadCapacityTolerance)) {
+    std::tie(r, change) = *before;  // the ring with grazing joints did not settle it: as without them
+    other_start = true;
+  }
+  const bool converged = r.status != SpreadStatus::success || change <= kSpreadCapacityTolerance;  // to 1e-3
   SpreadResult out = r;
   if (spread.whole_path || spread.stop_ratio < std::numeric_limits<double>::infinity()) {
     out = follow(scene.has_walls() ? system : r.ring, start, limit, spread);

@@ -159,8 +159,9 @@ TEST_CASE("cli: spread --right-settlement-share: the cracking part settles too, 
   // 1e-2 L either way; the settling springing sheds load; the cracking arch falls towards the plateau.
   const Run r = run({"spread", "--path", "--thickness-ratio", "0.075", "--moving", "right", "--right-settlement-share",
                      "2", "--steps", "10", "--all-columns"});
-  // A finer ring changes the state at d = 0 and the capacity moves by 3.8e-3 of itself there: the
-  // mechanism's rows say not_converged and by how much, exit 3.
+  // A finer ring changes the state at d = 0 and the capacity moves by 1.9e-3 of itself there (even
+  // with joints where the line grazes the faces at d = 0): the mechanism's rows say not_converged and
+  // by how much, exit 3.
   REQUIRE(r.status == 3);
   const Table t = table(r.out);
   const auto cracking = rows_of_part(t, "cracking");
@@ -183,23 +184,22 @@ TEST_CASE("cli: spread --right-settlement-share: the cracking part settles too, 
   REQUIRE(!mechanism.empty());
   for (const std::size_t k : mechanism) {
     CHECK(t.at(k, "status") == "not_converged");
-    CHECK(t.at(k, "message").rfind("the capacity moved by 0.0038 of itself", 0) == 0);
+    CHECK(t.at(k, "message").rfind("the capacity moved by 0.0019 of itself", 0) == 0);
   }
   CHECK(t.number(cracking.back(), "H_over_V") > t.number(mechanism.front(), "H_over_V"));
   CHECK(t.at(mechanism.back(), "collapse") != "");
 }
 
 TEST_CASE("cli: spread gives a pointed arch its four hinges and a capacity") {
-  // A finer ring changes the state at d = 0 and the capacity moves by 2.2e-3 of itself there: the row
-  // gives the numbers, says not_converged and by how much, exit 3.
+  // With joints where the least-thrust line grazes the faces at d = 0 the capacity converges.
   const Run r = run({"spread", "--eccentricity", "0.5", "--thickness-ratio", "0.08"});
-  CHECK(r.status == 3);
+  CHECK(r.status == 0);
   const Table t = table(r.out);
-  CHECK(t.at(0, "status") == "not_converged");
+  CHECK(t.at(0, "status") == "success");
   const std::string hinges = t.at(0, "hinges");
   CHECK(std::count(hinges.begin(), hinges.end(), ';') == 3);
   CHECK(!t.at(0, "spread_capacity_ratio").empty());
-  CHECK(t.at(0, "message").rfind("the capacity moved by 0.0022 of itself", 0) == 0);
+  CHECK(t.at(0, "message").empty());
 }
 
 TEST_CASE("cli: spread prints a not_converged row's numbers, the message the capacity's last change, exit 3") {
@@ -257,9 +257,9 @@ TEST_CASE("cli: spread --joints vertical: the mechanism starts at limit's H_min 
                                        "joints,status,H_plateau,spread_capacity_ratio"};
     spread.insert(spread.end(), scene.begin(), scene.end());
     const Run r = run(spread);
-    // The capacity moves by 2.2e-3 (radial) and 1.2e-3 (vertical) of itself at the last refinement of
-    // the joints: the rows give the numbers, not_converged, exit 3.
-    REQUIRE(r.status == 3);
+      // Radial joints converge (joints where the line grazes the faces at d = 0); with vertical ones the
+    // capacity moves by 1.2e-3 of itself at the last refinement: the row gives the numbers, not_converged, exit 3.
+    REQUIRE(r.status == (std::string(joints) == "radial" ? 0 : 3));
     std::vector<std::string> limit = {"limit", "--joints", joints, "--joints-count", "201", "--columns", "H_min"};
     limit.insert(limit.end(), scene.begin(), scene.end());
     const Run lim = run(limit);
