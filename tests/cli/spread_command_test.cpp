@@ -159,8 +159,8 @@ TEST_CASE("cli: spread --right-settlement-share: the cracking part settles too, 
   // 1e-2 L either way; the settling springing sheds load; the cracking arch falls towards the plateau.
   const Run r = run({"spread", "--path", "--thickness-ratio", "0.075", "--moving", "right", "--right-settlement-share",
                      "2", "--steps", "10", "--all-columns"});
-  // A finer ring changes the state at d = 0 and the capacity moves by 1.9e-3 of itself there (even
-  // with joints where the line grazes the faces at d = 0): the mechanism's rows say not_converged and
+  // A finer ring changes the state at d = 0 and the capacity moves by 3.8e-3 of itself there (joints
+  // where the line grazes the faces at d = 0 do not settle it): the mechanism's rows say not_converged and
   // by how much, exit 3.
   REQUIRE(r.status == 3);
   const Table t = table(r.out);
@@ -184,7 +184,7 @@ TEST_CASE("cli: spread --right-settlement-share: the cracking part settles too, 
   REQUIRE(!mechanism.empty());
   for (const std::size_t k : mechanism) {
     CHECK(t.at(k, "status") == "not_converged");
-    CHECK(t.at(k, "message").rfind("the capacity moved by 0.0019 of itself", 0) == 0);
+    CHECK(t.at(k, "message").rfind("the capacity moved by 0.0038 of itself", 0) == 0);
   }
   CHECK(t.number(cracking.back(), "H_over_V") > t.number(mechanism.front(), "H_over_V"));
   CHECK(t.at(mechanism.back(), "collapse") != "");
