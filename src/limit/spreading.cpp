@@ -668,7 +668,7 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
       fractions = limit_detail::merged_fractions(std::move(fractions));
       r = follow(limit_detail::make_ring_at(scene, frictionless, fractions), start, limit, round);
       increments += r.increments, rolls += r.rolls;
-      change = 0, refinement = -1;  // the refinement starts over from that ring
+      change = std::numeric_limits<double>::infinity(), refinement = -1;  // starts over from that ring
       continue;
     }
     r = std::move(finer);

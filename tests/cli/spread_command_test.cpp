@@ -203,18 +203,20 @@ TEST_CASE("cli: spread gives a pointed arch its four hinges and a capacity") {
 }
 
 TEST_CASE("cli: spread prints a not_converged row's numbers, the message the capacity's last change, exit 3") {
-  // The equilateral arch at t = 0.06 L: a finer ring changes the state at d = 0 and the capacity moves by
-  // 4.2e-3 of itself there. The summary and the --path rows give the coarser ring's path (the same
-  // capacity), each saying not_converged and by how much.
-  const Run sum = run({"spread", "--eccentricity", "0.5", "--thickness-ratio", "0.06"});
-  const Run path = run({"spread", "--eccentricity", "0.5", "--thickness-ratio", "0.06", "--path", "--steps", "3"});
+  // The equilateral arch at t = 0.08 L with the true weight of its voussoirs: a finer ring changes the
+  // state at d = 0 and the capacity moves by 2.2e-3 of itself there (joints where the line grazes the
+  // faces at d = 0 do not settle it). The summary and the --path rows give the coarser ring's path (the
+  // same capacity), each saying not_converged and by how much.
+  const Run sum = run({"spread", "--eccentricity", "0.5", "--thickness-ratio", "0.08", "--weight", "voussoir"});
+  const Run path = run({"spread", "--eccentricity", "0.5", "--thickness-ratio", "0.08", "--weight", "voussoir", "--path",
+                        "--steps", "3"});
   CHECK(sum.status == 3);
   CHECK(path.status == 3);
   CHECK(sum.err.empty());
   const Table s = table(sum.out), p = table(path.out);
   CHECK(s.at(0, "status") == "not_converged");
   const std::string message = s.at(0, "message");
-  CHECK(message.rfind("the capacity moved by 0.0042 of itself at the last refinement of the joints", 0) == 0);
+  CHECK(message.rfind("the capacity moved by 0.0022 of itself at the last refinement of the joints", 0) == 0);
   for (const char* column : {"H_over_V_plateau", "spread_capacity_ratio", "H_over_V_collapse", "crown_drop_ratio"})
     CHECK(s.number(0, column) > 0);
   CHECK(s.at(0, "collapse") == "thrust_leaves_arch");
@@ -257,17 +259,22 @@ TEST_CASE("cli: spread --joints vertical: the mechanism starts at limit's H_min 
                                        "joints,status,H_plateau,spread_capacity_ratio"};
     spread.insert(spread.end(), scene.begin(), scene.end());
     const Run r = run(spread);
-      // Radial joints converge (joints where the line grazes the faces at d = 0); with vertical ones the
-    // capacity moves by 1.2e-3 of itself at the last refinement: the row gives the numbers, not_converged, exit 3.
-    REQUIRE(r.status == (std::string(joints) == "radial" ? 0 : 3));
+    // Radial joints converge, the path on a ring with joints where the least-thrust line grazes the faces
+    // at d = 0 (its least thrust above the limit ring's by the square of their distance: 2e-7 of it);
+    // with vertical ones the capacity moves by 1.2e-3 of itself at the last refinement: the row gives the
+    // numbers, not_converged, exit 3.
+    constexpr double kGrazingJoints = 1e-6;
+    const bool radial = std::string(joints) == "radial";
+    REQUIRE(r.status == (radial ? 0 : 3));
     std::vector<std::string> limit = {"limit", "--joints", joints, "--joints-count", "201", "--columns", "H_min"};
     limit.insert(limit.end(), scene.begin(), scene.end());
     const Run lim = run(limit);
     REQUIRE(lim.status == 0);
     const Table t = table(r.out);
     CHECK(t.at(0, "joints") == joints);
-    CHECK(t.at(0, "status") == "not_converged");
-    CHECK(close(t.number(0, "H_plateau"), table(lim.out).number(0, "H_min"), kSameState));
+    CHECK(t.at(0, "status") == (radial ? "success" : "not_converged"));
+    CHECK(t.number(0, "H_plateau") >= table(lim.out).number(0, "H_min") * (1 - kSameState));
+    CHECK(close(t.number(0, "H_plateau"), table(lim.out).number(0, "H_min"), radial ? kGrazingJoints : kSameState));
     capacity[joints[0] == 'v' ? 1 : 0] = t.number(0, "spread_capacity_ratio");
   }
   CHECK(capacity[0] > 0);

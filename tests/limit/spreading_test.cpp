@@ -200,14 +200,12 @@ TEST_CASE("spreading: a pointed arch turns about four hinges, symmetrically unde
   constexpr double kSymmetric = 1e-9;  // of the span: mirror images to round-off
   const Scene scene = paper_scene(0.5, 0.08);
   const SpreadResult r = analyse_spreading(scene, {}, {});
-  // The path runs on a ring with joints where the least-thrust line grazes the faces at d = 0: its
-  // least thrust lies above the limit analysis' ring's (whose joints stand for those points) by the
-  // square of their distance, 2e-7 of it here.
-  constexpr double kGrazingJoints = 1e-6;
-  REQUIRE(r.status == SpreadStatus::success);
-  const double H_min = analyse_limit(scene, {}).H_min();
-  CHECK(r.path.front().H >= H_min * (1 - kSameState));
-  CHECK(close(r.path.front().H, H_min, kGrazingJoints));
+  // A finer ring changes the state at d = 0 (the thrust line grazes the extrados over several of the new
+  // joints), and the capacity moves by 2.2e-3 of itself there (with the true weight of the voussoirs,
+  // joints where the line grazes the faces do not settle it: tests/limit/spreading_test.cpp's last case
+  // converges with the weight on the axis).
+  REQUIRE(r.status == SpreadStatus::not_converged);
+  CHECK(close(r.path.front().H, analyse_limit(scene, {}).H_min(), kSameState));
   const double L = r.ring.span;
   for (std::size_t i = 0; i < r.path.size(); ++i) {
     const SpreadStep& s = r.path[i];
@@ -482,8 +480,10 @@ TEST_CASE("spreading: the loaded pointed arch snaps where a hinge forms at its c
     LimitOptions o;
     o.weight = weight;
     const SpreadResult r = analyse_spreading(engineers_arch(), o, {});
-    // With joints where the line grazes the faces at d = 0 both converge.
-    REQUIRE(r.status == SpreadStatus::success);
+    // A finer ring changes the state at d = 0 and the capacity moves by 3.2e-3 (voussoir) and 0.87
+    // (axis: the finer ring's path is another) of itself there; joints where the least-thrust line
+    // grazes the faces at d = 0 do not settle it.
+    REQUIRE(r.status == SpreadStatus::not_converged);
     CHECK(r.collapse == SpreadCollapse::snap_through);
     CHECK(r.message.find("x = 0.5 L") != std::string::npos);
     const double L = r.ring.span;
@@ -542,7 +542,7 @@ TEST_CASE("spreading: loaded arches whose contacts went back and forth now reach
     const SpreadResult r = analyse_spreading(s, o, {});
     // But the semicircle's, a finer ring changes each one's state at d = 0 and its capacity moves by
     // 1.7, 0.017 and 2.9e-3 of itself there.
-    REQUIRE(r.status == (eccentricity == 0.0 ? SpreadStatus::success : SpreadStatus::not_converged));
+    REQUIRE(r.status == (eccentricity == 0.0 || eccentricity == 1.0 ? SpreadStatus::success : SpreadStatus::not_converged));
     CHECK(r.d_max > 0);
     for (std::size_t i = 0; i < r.path.size(); ++i) {
       CAPTURE(i);
