@@ -639,8 +639,7 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
     fractions = limit_detail::merged_fractions(std::move(fractions));
     Ring finer_ring = limit_detail::make_ring_at(scene, frictionless, fractions);
     SpreadResult finer = follow(finer_ring, start, limit, round);
-    increments += finer.increments;
-    rolls += finer.rolls;
+    increments += finer.increments, rolls += finer.rolls;
     if (finer.status != SpreadStatus::success && !before) return finer;
     if (finer.status != SpreadStatus::success && (change = std::numeric_limits<double>::infinity())) break;
     // Relative to the capacity, but not below kSpreadCapacityFloor of the span (an arch near t_min,
@@ -652,18 +651,15 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
     // finite strength hinges at d = 0 that only slid along their faces are that state resolved further).
     if (!same_places(finer.path.front().hinges, r.path.front().hinges, r.ring.span) &&
         !(follows_start && slid_along(finer.path.front().hinges, r.path.front().hinges, kNewHingeReach * r.ring.span))) {
-      // A hinge at d = 0 that stays to collapse (a pointed arch's haunch) carries the capacity with its joint: once,
-      // joints where the least-thrust line grazes the continuous arch's faces, kept by the finer rings.
-      std::vector<double> graze = follows_start || grazed || change <= kSpreadCapacityTolerance ||
-                                          limit.joints != JointOrientation::radial  // vertical: not tried yet
-                                      ? std::vector<double>{}
-                                      : grazing_fractions(base.ring, base.min_state, base.min_state.hinges);
+      // A hinge at d = 0 that stays to collapse (a pointed arch's haunch) carries the capacity with its
+      // joint: once, joints where the least-thrust line grazes the continuous arch's faces, which the
+      // finer rings keep (on walls and with crushing the refinement next to those hinges resolves them).
+      const bool graze_now = !follows_start && !grazed && change > kSpreadCapacityTolerance;
+      const std::vector<double> graze = graze_now ? grazing_fractions(base.ring, base.min_state, base.min_state.hinges)
+                                                  : std::vector<double>{};
       grazed = true;
-      if (!graze.empty()) before.emplace(r, change);  // kept where the ring with them does not converge
-      else {
-        other_start = true;
-        break;
-      }
+      if ((other_start = graze.empty())) break;
+      before.emplace(r, change);  // what stands where the ring with them does not converge
       fractions.insert(fractions.end(), graze.begin(), graze.end());
       fractions = limit_detail::merged_fractions(std::move(fractions));
       r = follow(limit_detail::make_ring_at(scene, frictionless, fractions), start, limit, round);
@@ -682,13 +678,17 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
   SpreadResult out = r;
   if (spread.whole_path || spread.stop_ratio < std::numeric_limits<double>::infinity()) {
     out = follow(scene.has_walls() ? system : r.ring, start, limit, spread);
-    out.increments += increments;
-    out.rolls += rolls;
+    out.increments += increments, out.rolls += rolls;
   } else {
     out.increments = increments;
     out.rolls = rolls;
   }
   if (out.status == SpreadStatus::success && !converged) {
+    // Most often a state at d = 0 that each finer ring resolves into other contacts: a thrust line that
+    // grazes a face over several joints (the extrados of a pointed arch, nearly parallel to it beside
+    // the crown) or at a place the joints do not settle (a point load's). Where the path on a finer ring
+    // snaps at once, the contact it rolls to has jumped more than kRollJoints joints of that ring in one
+    // increment and is taken for a new hinge beside the old one.
     out.status = SpreadStatus::not_converged;
     out.message = fmt::format("the capacity moved by {:.2g} of itself at the last refinement of the joints{}{}", change,
                               other_start ? " (whose ring changed the state at d = 0: the coarser ring's path is given)" : "",
