@@ -186,10 +186,12 @@ class Path {
   // On walls, where the last state a wall does not carry gives way (after the bisection: the collapse's).
   const Tipping& tipping() const { return tipping_; }
 
-  // Whether `to` is settled on `hinges` alone, its other contacts grazing beside them (grazed_mechanism).
+  // Whether `to` is settled on `hinges` alone, its other contacts grazing beside them (grazed_mechanism):
+  // with a finite strength within kNewHingeReach; without, on the short joints of a refined ring only
+  // (within 2 kSpreadJointSpacing), where a line nearly parallel to a face touches two joints at once.
   bool grazed_beside(const std::vector<Hinge>& hinges, State& to) const {
-    if (!std::isfinite(compressive_strength_)) return false;
-    Mechanism mech = grazed_mechanism(ring0_, moved_, hinges, to.contacts, vL_.twist, vR_.twist, kNewHingeReach * ring0_.span);
+    const double reach = (std::isfinite(compressive_strength_) ? kNewHingeReach : 2 * kSpreadJointSpacing) * ring0_.span;
+    Mechanism mech = grazed_mechanism(ring0_, moved_, hinges, to.contacts, vL_.twist, vR_.twist, reach);
     if (!mech.found()) return false;
     to.mechanism = std::move(mech);
     to.step.H_work = thrust_by_work(to, to.step.V_left, to.step.V_right);
@@ -585,6 +587,7 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
   return r;
 }
 
+
 // The capacity depends on where the ring has joints for the hinges to roll to (the hinges at collapse
 // sit where the thrust line grazes a face; a joint nearer that point lets the path go on): the path is
 // followed again on a ring whose voussoirs next to the hinges at collapse are halved, until they are
@@ -684,11 +687,8 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
     out.rolls = rolls;
   }
   if (out.status == SpreadStatus::success && !converged) {
-    // Most often a state at d = 0 that each finer ring resolves into other contacts: a thrust line that
-    // grazes a face over several joints (the extrados of a pointed arch, nearly parallel to it beside
-    // the crown) or at a place the joints do not settle (a point load's). Where the path on a finer ring
-    // snaps at once, the contact it rolls to has jumped more than kRollJoints joints of that ring in one
-    // increment and is taken for a new hinge beside the old one.
+    // Most often a state at d = 0 that each finer ring resolves into other contacts (a point load's, a
+    // settling springing's), or, on walls, a finer ring's path that snaps where a hinge rolls.
     out.status = SpreadStatus::not_converged;
     out.message = fmt::format("the capacity moved by {:.2g} of itself at the last refinement of the joints{}{}", change,
                               other_start ? " (whose ring changed the state at d = 0: the coarser ring's path is given)" : "",

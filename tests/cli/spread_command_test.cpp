@@ -203,13 +203,15 @@ TEST_CASE("cli: spread gives a pointed arch its four hinges and a capacity") {
 }
 
 TEST_CASE("cli: spread prints a not_converged row's numbers, the message the capacity's last change, exit 3") {
-  // The equilateral arch at t = 0.08 L with the true weight of its voussoirs: a finer ring changes the
-  // state at d = 0 and the capacity moves by 2.2e-3 of itself there (joints where the line grazes the
-  // faces at d = 0 do not settle it). The summary and the --path rows give the coarser ring's path (the
-  // same capacity), each saying not_converged and by how much.
-  const Run sum = run({"spread", "--eccentricity", "0.5", "--thickness-ratio", "0.08", "--weight", "voussoir"});
-  const Run path = run({"spread", "--eccentricity", "0.5", "--thickness-ratio", "0.08", "--weight", "voussoir", "--path",
-                        "--steps", "3"});
+  // The semicircle at t = 0.075 L whose right springing settles by three times its spread: a finer ring
+  // changes the state at d = 0 and the capacity moves by 2.2e-3 of itself there. The summary and the
+  // --path rows give the coarser ring's path (the same capacity), each saying not_converged and by how much.
+  const std::vector<std::string> scene = {"spread", "--thickness-ratio", "0.075", "--moving", "right",
+                                          "--right-settlement-share", "3"};
+  std::vector<std::string> with_path = scene;
+  for (const char* more : {"--path", "--steps", "3"}) with_path.push_back(more);
+  const Run sum = run(scene);
+  const Run path = run(with_path);
   CHECK(sum.status == 3);
   CHECK(path.status == 3);
   CHECK(sum.err.empty());
@@ -259,22 +261,19 @@ TEST_CASE("cli: spread --joints vertical: the mechanism starts at limit's H_min 
                                        "joints,status,H_plateau,spread_capacity_ratio"};
     spread.insert(spread.end(), scene.begin(), scene.end());
     const Run r = run(spread);
-    // Radial joints converge, the path on a ring with joints where the least-thrust line grazes the faces
-    // at d = 0 (its least thrust above the limit ring's by the square of their distance: 2e-7 of it);
-    // with vertical ones the capacity moves by 1.2e-3 of itself at the last refinement: the row gives the
-    // numbers, not_converged, exit 3.
+    // Both converge, the path on a ring with joints where the least-thrust line grazes the faces at d = 0
+    // (its least thrust above the limit ring's by the square of their distance: 2e-7 of it).
     constexpr double kGrazingJoints = 1e-6;
-    const bool radial = std::string(joints) == "radial";
-    REQUIRE(r.status == (radial ? 0 : 3));
+    REQUIRE(r.status == 0);
     std::vector<std::string> limit = {"limit", "--joints", joints, "--joints-count", "201", "--columns", "H_min"};
     limit.insert(limit.end(), scene.begin(), scene.end());
     const Run lim = run(limit);
     REQUIRE(lim.status == 0);
     const Table t = table(r.out);
     CHECK(t.at(0, "joints") == joints);
-    CHECK(t.at(0, "status") == (radial ? "success" : "not_converged"));
+    CHECK(t.at(0, "status") == "success");
     CHECK(t.number(0, "H_plateau") >= table(lim.out).number(0, "H_min") * (1 - kSameState));
-    CHECK(close(t.number(0, "H_plateau"), table(lim.out).number(0, "H_min"), radial ? kGrazingJoints : kSameState));
+    CHECK(close(t.number(0, "H_plateau"), table(lim.out).number(0, "H_min"), kGrazingJoints));
     capacity[joints[0] == 'v' ? 1 : 0] = t.number(0, "spread_capacity_ratio");
   }
   CHECK(capacity[0] > 0);
