@@ -587,7 +587,6 @@ SpreadResult follow(const Ring& ring, const LimitResult& base, const LimitOption
   return r;
 }
 
-
 // The capacity depends on where the ring has joints for the hinges to roll to (the hinges at collapse
 // sit where the thrust line grazes a face; a joint nearer that point lets the path go on): the path is
 // followed again on a ring whose voussoirs next to the hinges at collapse are halved, until they are
@@ -628,13 +627,13 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
   bool other_start = false;  // the last refinement changed the state at d = 0
   bool grazed = false;       // joints were put where the line grazes the faces at d = 0
   std::optional<std::pair<SpreadResult, double>> before;  // the path and change before that
-  // With a finite strength, and on walls, the capacity follows the hinges at d = 0 (spreading.hpp): they
-  // are refined next to as well, and a finer ring that only slides them along their faces resolves them.
+  // With a finite strength, and on walls, the capacity follows the hinges at d = 0 (spreading.hpp): they are refined
+  // next to as well (to kSpreadJointSpacing), and a finer ring that only slides them along their faces resolves them.
   const bool follows_start = std::isfinite(limit.compressive_strength) || scene.has_walls();
   for (int refinement = 0; r.status == SpreadStatus::success && refinement < kMostSpreadRefinements; ++refinement) {
     std::vector<Hinge> rolling = rolling_hinges(r.ring, r.path.back().hinges);
-    if (follows_start)
-      for (const Hinge& h : rolling_hinges(r.ring, r.path.front().hinges)) rolling.push_back(h);
+    for (const Hinge& h : follows_start ? rolling_hinges(r.ring, r.path.front().hinges) : std::vector<Hinge>{})
+      if (coarsest_next_to(r.ring, {h}) > kSpreadJointSpacing * r.ring.span) rolling.push_back(h);
     if (rolling.empty() || r.d_max == 0 || (refinement > 0 && coarsest_next_to(r.ring, rolling) <= kSpreadJointSpacing * r.ring.span &&
                             change <= kSpreadCapacityTolerance))
       break;
@@ -688,7 +687,7 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
   }
   if (out.status == SpreadStatus::success && !converged) {
     // Most often a state at d = 0 that each finer ring resolves into other contacts (a point load's, a
-    // settling springing's), or, on walls, a finer ring's path that snaps where a hinge rolls.
+    // springing's that settles), the path from each another.
     out.status = SpreadStatus::not_converged;
     out.message = fmt::format("the capacity moved by {:.2g} of itself at the last refinement of the joints{}{}", change,
                               other_start ? " (whose ring changed the state at d = 0: the coarser ring's path is given)" : "",
