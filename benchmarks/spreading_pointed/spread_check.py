@@ -105,11 +105,12 @@ class Half:
         F = np.stack([np.full(n + 2, H), W], axis=1)
         M = Mw - H * y0
         dj = Em - Im
-        s = (M - cross(Im, F)) / cross(dj, F)
+        with np.errstate(invalid='ignore', divide='ignore'):  # a degenerate joint (none on a path)
+            s = (M - cross(Im, F)) / cross(dj, F)
         h = np.linalg.norm(dj, axis=1)
         # the crown joint carries (H, 0): its point is y0 on the vertical joint
         s[n + 1] = (y0 - Im[n + 1][1]) / (Em[n + 1][1] - Im[n + 1][1])
-        lo_m, hi_m = s * h, (1 - s) * h
+        lo_m, hi_m = np.nan_to_num(s * h, nan=-np.inf), np.nan_to_num((1 - s) * h, nan=-np.inf)
         lo_m[b] = np.inf
         hi_m[c] = np.inf
         ji, je = int(np.argmin(lo_m)), int(np.argmin(hi_m))
