@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <tuple>
 #include <stdexcept>
 
 #include <Eigen/Geometry>
@@ -185,10 +186,12 @@ class Path {
   // On walls, where the last state a wall does not carry gives way (after the bisection: the collapse's).
   const Tipping& tipping() const { return tipping_; }
 
-  // Whether `to` is settled on `hinges` alone, its other contacts grazing beside them (grazed_mechanism).
+  // Whether `to` is settled on `hinges` alone, its other contacts grazing beside them (grazed_mechanism):
+  // with a finite strength within kNewHingeReach; without, on the short joints of a refined ring only
+  // (within 2 kSpreadJointSpacing), where a line nearly parallel to a face touches two joints at once.
   bool grazed_beside(const std::vector<Hinge>& hinges, State& to) const {
-    if (!std::isfinite(compressive_strength_)) return false;
-    Mechanism mech = grazed_mechanism(ring0_, moved_, hinges, to.contacts, vL_.twist, vR_.twist, kNewHingeReach * ring0_.span);
+    const double reach = (std::isfinite(compressive_strength_) ? kNewHingeReach : 2 * kSpreadJointSpacing) * ring0_.span;
+    Mechanism mech = grazed_mechanism(ring0_, moved_, hinges, to.contacts, vL_.twist, vR_.twist, reach);
     if (!mech.found()) return false;
     to.mechanism = std::move(mech);
     to.step.H_work = thrust_by_work(to, to.step.V_left, to.step.V_right);
@@ -622,13 +625,15 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
   int increments = r.increments, rolls = r.rolls;
   double change = 0;  // no refinement: nothing moved
   bool other_start = false;  // the last refinement changed the state at d = 0
-  // With a finite strength, and on walls, the capacity follows the hinges at d = 0 (spreading.hpp): they
-  // are refined next to as well, and a finer ring that only slides them along their faces resolves them.
+  bool grazed = false;       // joints were put where the line grazes the faces at d = 0
+  std::optional<std::pair<SpreadResult, double>> before;  // the path and change before that
+  // With a finite strength, and on walls, the capacity follows the hinges at d = 0 (spreading.hpp): they are refined
+  // next to as well (to kSpreadJointSpacing), and a finer ring that only slides them along their faces resolves them.
   const bool follows_start = std::isfinite(limit.compressive_strength) || scene.has_walls();
   for (int refinement = 0; r.status == SpreadStatus::success && refinement < kMostSpreadRefinements; ++refinement) {
     std::vector<Hinge> rolling = rolling_hinges(r.ring, r.path.back().hinges);
-    if (follows_start)
-      for (const Hinge& h : rolling_hinges(r.ring, r.path.front().hinges)) rolling.push_back(h);
+    for (const Hinge& h : follows_start ? rolling_hinges(r.ring, r.path.front().hinges) : std::vector<Hinge>{})
+      if (coarsest_next_to(r.ring, {h}) > kSpreadJointSpacing * r.ring.span) rolling.push_back(h);
     if (rolling.empty() || r.d_max == 0 || (refinement > 0 && coarsest_next_to(r.ring, rolling) <= kSpreadJointSpacing * r.ring.span &&
                             change <= kSpreadCapacityTolerance))
       break;
@@ -636,9 +641,9 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
     fractions = limit_detail::merged_fractions(std::move(fractions));
     Ring finer_ring = limit_detail::make_ring_at(scene, frictionless, fractions);
     SpreadResult finer = follow(finer_ring, start, limit, round);
-    increments += finer.increments;
-    rolls += finer.rolls;
-    if (finer.status != SpreadStatus::success) return finer;
+    increments += finer.increments, rolls += finer.rolls;
+    if (finer.status != SpreadStatus::success && !before) return finer;
+    if (finer.status != SpreadStatus::success && (change = std::numeric_limits<double>::infinity())) break;
     // Relative to the capacity, but not below kSpreadCapacityFloor of the span (an arch near t_min,
     // whose capacity is next to nothing).
     change = std::abs(finer.d_max - r.d_max) / std::max(finer.d_max, kSpreadCapacityFloor * r.ring.span / sides);
@@ -648,23 +653,41 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
     // finite strength hinges at d = 0 that only slid along their faces are that state resolved further).
     if (!same_places(finer.path.front().hinges, r.path.front().hinges, r.ring.span) &&
         !(follows_start && slid_along(finer.path.front().hinges, r.path.front().hinges, kNewHingeReach * r.ring.span))) {
-      other_start = true;
-      break;
+      // A hinge at d = 0 that stays to collapse (a pointed arch's haunch) carries the capacity with its
+      // joint: once, joints where the least-thrust line grazes the continuous arch's faces, which the
+      // finer rings keep (on walls and with crushing the refinement next to those hinges resolves them).
+      const bool graze_now = !follows_start && !grazed && change > kSpreadCapacityTolerance;
+      const std::vector<double> graze = graze_now ? grazing_fractions(base.ring, base.min_state, base.min_state.hinges)
+                                                  : std::vector<double>{};
+      grazed = true;
+      if ((other_start = graze.empty())) break;
+      before.emplace(r, change);  // what stands where the ring with them does not converge
+      fractions.insert(fractions.end(), graze.begin(), graze.end());
+      fractions = limit_detail::merged_fractions(std::move(fractions));
+      r = follow(limit_detail::make_ring_at(scene, frictionless, fractions), start, limit, round);
+      increments += r.increments, rolls += r.rolls;
+      change = std::numeric_limits<double>::infinity(), refinement = -1;  // starts over from that ring
+      continue;
     }
     r = std::move(finer);
     if (scene.has_walls()) system = std::move(finer_ring);
   }
-  const bool converged = r.status != SpreadStatus::success || change <= kSpreadCapacityTolerance;
+  if (before && !(r.status == SpreadStatus::success && change <= kSpreadCapacityTolerance)) {
+    std::tie(r, change) = *before;  // the ring with grazing joints did not settle it: as without them
+    other_start = true;
+  }
+  const bool converged = r.status != SpreadStatus::success || change <= kSpreadCapacityTolerance;  // to 1e-3
   SpreadResult out = r;
   if (spread.whole_path || spread.stop_ratio < std::numeric_limits<double>::infinity()) {
     out = follow(scene.has_walls() ? system : r.ring, start, limit, spread);
-    out.increments += increments;
-    out.rolls += rolls;
+    out.increments += increments, out.rolls += rolls;
   } else {
     out.increments = increments;
     out.rolls = rolls;
   }
   if (out.status == SpreadStatus::success && !converged) {
+    // Most often a state at d = 0 that each finer ring resolves into other contacts (a point load's, a
+    // springing's that settles), the path from each another.
     out.status = SpreadStatus::not_converged;
     out.message = fmt::format("the capacity moved by {:.2g} of itself at the last refinement of the joints{}{}", change,
                               other_start ? " (whose ring changed the state at d = 0: the coarser ring's path is given)" : "",

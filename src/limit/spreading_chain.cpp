@@ -308,4 +308,37 @@ double coarsest_next_to(const Ring& ring, const std::vector<Hinge>& hinges) {
   return most;
 }
 
+std::vector<double> grazing_fractions(const Ring& ring, const ThrustState& st, const std::vector<Hinge>& hinges) {
+  std::vector<double> out;
+  const int first = ring.left_springing(), m = ring.crown_joint() - first;  // voussoirs per side
+  const std::vector<double>& f = ring.joint_fractions;
+  if (!st.found() || static_cast<int>(f.size()) + 1 != m) return out;
+  // A side joint's fraction (0 the springing, 1 the crown) and the crossing's distance from a face.
+  const auto at = [&](int i) { return i <= 0 ? 0.0 : i >= m ? 1.0 : f[static_cast<std::size_t>(i - 1)]; };
+  const auto inside = [&](int j, Face face) {
+    const Joint& jt = ring.joints[static_cast<std::size_t>(j)];
+    const Vec e = jt.extrados - jt.intrados;
+    const double s = (st.crossing[static_cast<std::size_t>(j)] - jt.intrados).dot(e) / e.norm();
+    return face == Face::intrados ? s : e.norm() - s;
+  };
+  for (const Hinge& h : hinges) {
+    if (h.face == Face::axis) continue;
+    const int j = h.joint - first;
+    const int i = j <= m ? j : 2 * m - j;  // its side's joint, counted from the springing
+    if (i < 1 || i + 1 >= m) continue;     // a springing's, the crown's or the one beside the crown
+    const int step = j <= m ? 1 : -1;       // towards the crown along the ring
+    const double e0 = inside(h.joint - step, h.face), e1 = inside(h.joint, h.face), e2 = inside(h.joint + step, h.face);
+    const double f0 = at(i - 1), f1 = at(i), f2 = at(i + 1);
+    if (!(e0 > e1 && e2 > e1)) continue;  // no graze: the line crosses the face there, or a kink
+    // The parabola's vertex through (f0, e0), (f1, e1), (f2, e2).
+    const double a = (f1 - f0) * (e1 - e2), b = (f1 - f2) * (e1 - e0);
+    const double vertex = f1 - 0.5 * ((f1 - f0) * a - (f1 - f2) * b) / (a - b);
+    if (!(vertex > f0 && vertex < f2)) continue;
+    if (std::none_of(f.begin(), f.end(), [&](double x) { return std::abs(x - vertex) <= 1e-12; }) &&
+        std::none_of(out.begin(), out.end(), [&](double x) { return std::abs(x - vertex) <= 1e-12; }))
+      out.push_back(vertex);
+  }
+  return out;
+}
+
 }  // namespace ogive::spreading_detail

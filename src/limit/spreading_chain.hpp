@@ -182,4 +182,12 @@ bool same_places(const std::vector<Hinge>& a, const std::vector<Hinge>& b, doubl
 std::vector<Hinge> rolling_hinges(const Ring& ring, const std::vector<Hinge>& hinges);
 double coarsest_next_to(const Ring& ring, const std::vector<Hinge>& hinges);
 
+// Where the thrust line `st` on `ring` (an arch on the ground, its joints at ring.joint_fractions) grazes
+// a face at one of `hinges` on the continuous arch: for each hinge on a face strictly inside a side
+// whose neighbours' crossings lie inside that face, the vertex of the parabola through the three joints'
+// distances from the face against their fractions (Ring::joint_fractions' measure), where none of the
+// ring's joints is already (to 1e-12). A joint there lets the least-thrust line touch the face where it
+// would on the continuous arch, whatever joints are added beside it.
+std::vector<double> grazing_fractions(const Ring& ring, const ThrustState& st, const std::vector<Hinge>& hinges);
+
 }  // namespace ogive::spreading_detail

@@ -159,8 +159,9 @@ TEST_CASE("cli: spread --right-settlement-share: the cracking part settles too, 
   // 1e-2 L either way; the settling springing sheds load; the cracking arch falls towards the plateau.
   const Run r = run({"spread", "--path", "--thickness-ratio", "0.075", "--moving", "right", "--right-settlement-share",
                      "2", "--steps", "10", "--all-columns"});
-  // A finer ring changes the state at d = 0 and the capacity moves by 3.8e-3 of itself there: the
-  // mechanism's rows say not_converged and by how much, exit 3.
+  // A finer ring changes the state at d = 0 and the capacity moves by 3.8e-3 of itself there (joints
+  // where the line grazes the faces at d = 0 do not settle it): the mechanism's rows say not_converged and
+  // by how much, exit 3.
   REQUIRE(r.status == 3);
   const Table t = table(r.out);
   const auto cracking = rows_of_part(t, "cracking");
@@ -190,31 +191,34 @@ TEST_CASE("cli: spread --right-settlement-share: the cracking part settles too, 
 }
 
 TEST_CASE("cli: spread gives a pointed arch its four hinges and a capacity") {
-  // A finer ring changes the state at d = 0 and the capacity moves by 2.2e-3 of itself there: the row
-  // gives the numbers, says not_converged and by how much, exit 3.
+  // With joints where the least-thrust line grazes the faces at d = 0 the capacity converges.
   const Run r = run({"spread", "--eccentricity", "0.5", "--thickness-ratio", "0.08"});
-  CHECK(r.status == 3);
+  CHECK(r.status == 0);
   const Table t = table(r.out);
-  CHECK(t.at(0, "status") == "not_converged");
+  CHECK(t.at(0, "status") == "success");
   const std::string hinges = t.at(0, "hinges");
   CHECK(std::count(hinges.begin(), hinges.end(), ';') == 3);
   CHECK(!t.at(0, "spread_capacity_ratio").empty());
-  CHECK(t.at(0, "message").rfind("the capacity moved by 0.0022 of itself", 0) == 0);
+  CHECK(t.at(0, "message").empty());
 }
 
 TEST_CASE("cli: spread prints a not_converged row's numbers, the message the capacity's last change, exit 3") {
-  // The equilateral arch at t = 0.06 L: a finer ring changes the state at d = 0 and the capacity moves by
-  // 4.2e-3 of itself there. The summary and the --path rows give the coarser ring's path (the same
-  // capacity), each saying not_converged and by how much.
-  const Run sum = run({"spread", "--eccentricity", "0.5", "--thickness-ratio", "0.06"});
-  const Run path = run({"spread", "--eccentricity", "0.5", "--thickness-ratio", "0.06", "--path", "--steps", "3"});
+  // The semicircle at t = 0.075 L whose right springing settles by three times its spread: a finer ring
+  // changes the state at d = 0 and the capacity moves by 2.2e-3 of itself there. The summary and the
+  // --path rows give the coarser ring's path (the same capacity), each saying not_converged and by how much.
+  const std::vector<std::string> scene = {"spread", "--thickness-ratio", "0.075", "--moving", "right",
+                                          "--right-settlement-share", "3"};
+  std::vector<std::string> with_path = scene;
+  for (const char* more : {"--path", "--steps", "3"}) with_path.push_back(more);
+  const Run sum = run(scene);
+  const Run path = run(with_path);
   CHECK(sum.status == 3);
   CHECK(path.status == 3);
   CHECK(sum.err.empty());
   const Table s = table(sum.out), p = table(path.out);
   CHECK(s.at(0, "status") == "not_converged");
   const std::string message = s.at(0, "message");
-  CHECK(message.rfind("the capacity moved by 0.0042 of itself at the last refinement of the joints", 0) == 0);
+  CHECK(message.rfind("the capacity moved by 0.0022 of itself at the last refinement of the joints", 0) == 0);
   for (const char* column : {"H_over_V_plateau", "spread_capacity_ratio", "H_over_V_collapse", "crown_drop_ratio"})
     CHECK(s.number(0, column) > 0);
   CHECK(s.at(0, "collapse") == "thrust_leaves_arch");
@@ -257,17 +261,19 @@ TEST_CASE("cli: spread --joints vertical: the mechanism starts at limit's H_min 
                                        "joints,status,H_plateau,spread_capacity_ratio"};
     spread.insert(spread.end(), scene.begin(), scene.end());
     const Run r = run(spread);
-    // The capacity moves by 2.2e-3 (radial) and 1.2e-3 (vertical) of itself at the last refinement of
-    // the joints: the rows give the numbers, not_converged, exit 3.
-    REQUIRE(r.status == 3);
+    // Both converge, the path on a ring with joints where the least-thrust line grazes the faces at d = 0
+    // (its least thrust above the limit ring's by the square of their distance: 2e-7 of it).
+    constexpr double kGrazingJoints = 1e-6;
+    REQUIRE(r.status == 0);
     std::vector<std::string> limit = {"limit", "--joints", joints, "--joints-count", "201", "--columns", "H_min"};
     limit.insert(limit.end(), scene.begin(), scene.end());
     const Run lim = run(limit);
     REQUIRE(lim.status == 0);
     const Table t = table(r.out);
     CHECK(t.at(0, "joints") == joints);
-    CHECK(t.at(0, "status") == "not_converged");
-    CHECK(close(t.number(0, "H_plateau"), table(lim.out).number(0, "H_min"), kSameState));
+    CHECK(t.at(0, "status") == "success");
+    CHECK(t.number(0, "H_plateau") >= table(lim.out).number(0, "H_min") * (1 - kSameState));
+    CHECK(close(t.number(0, "H_plateau"), table(lim.out).number(0, "H_min"), kGrazingJoints));
     capacity[joints[0] == 'v' ? 1 : 0] = t.number(0, "spread_capacity_ratio");
   }
   CHECK(capacity[0] > 0);

@@ -352,3 +352,24 @@ TEST_CASE("spreading walls: a friction the walls and the arch never use gives th
   }
 }
 
+
+TEST_CASE("spreading walls: the equilateral arch on walls converges in the joints") {
+  // Its haunch hinges at d = 0 sit where the least-thrust line grazes the intrados; refined next to no
+  // finer than kSpreadJointSpacing (a joint nearer that point touches the line as well), the path settles.
+  for (const double t : {0.06, 0.1, 0.14}) {
+    CAPTURE(t);
+    Scene scene = paper_scene(0.5, t);
+    const double L = scene.span();
+    scene.left_wall = scene.right_wall = Wall{L, 0.25 * L, scene.material.density, 0.0, 0.5};
+    LimitOptions coarse, fine;
+    coarse.weight = fine.weight = WeightModel::axis;
+    fine.joints_count = 401;
+    const SpreadOptions o;
+    const SpreadResult a = analyse_spreading(scene, coarse, o), b = analyse_spreading(scene, fine, o);
+    CAPTURE(a.message);
+    CAPTURE(b.message);
+    REQUIRE(a.status == SpreadStatus::success);
+    REQUIRE(b.status == SpreadStatus::success);
+    CHECK(close(spread_capacity_ratio(a, o), spread_capacity_ratio(b, o), kSpreadCapacityTolerance));
+  }
+}
