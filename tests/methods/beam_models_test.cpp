@@ -517,7 +517,8 @@ TEST_CASE("curved bar: a curved springing's held face couples N and the turn, th
   CHECK(std::abs(between.NM - 0.01768) < kBetweenNodes);
   // benchmarks/continuum/reference.csv: the clamped catenary (rise L/2), whose Timoshenko error passes
   // through zero between t/L 0.15 and 0.2; the curved bar's is at most half of it.
-  for (const auto& [thickness, continuum] : {std::pair{1.5, 0.3857498}, std::pair{2.0, 0.3682138}}) {
+  for (const std::pair<double, double>& row : {std::pair{1.5, 0.3857498}, std::pair{2.0, 0.3682138}}) {
+    const double thickness = row.first, continuum = row.second;
     CAPTURE(thickness);
     Scene catenary;
     catenary.curve = make_catenary(10.0, 0.5);
