@@ -182,12 +182,17 @@ bool same_places(const std::vector<Hinge>& a, const std::vector<Hinge>& b, doubl
 std::vector<Hinge> rolling_hinges(const Ring& ring, const std::vector<Hinge>& hinges);
 double coarsest_next_to(const Ring& ring, const std::vector<Hinge>& hinges);
 
-// Where the thrust line `st` on `ring` (an arch on the ground, its joints at ring.joint_fractions) grazes
-// a face at one of `hinges` on the continuous arch: for each hinge on a face strictly inside a side
+// Where the least-thrust line of `base` (analyse_limit's on `scene` with `options`: an arch on the ground,
+// its joints at ring.joint_fractions) grazes a face at one of its hinges on the continuous arch: for each
+// hinge on a face strictly inside a side, not on a load's edge joint (where the line's curvature jumps),
 // whose neighbours' crossings lie inside that face, the vertex of the parabola through the three joints'
 // distances from the face against their fractions (Ring::joint_fractions' measure), where none of the
 // ring's joints is already (to 1e-12). A joint there lets the least-thrust line touch the face where it
 // would on the continuous arch, whatever joints are added beside it.
-std::vector<double> grazing_fractions(const Ring& ring, const ThrustState& st, const std::vector<Hinge>& hinges);
+std::vector<double> grazing_fractions(const Scene& scene, const LimitOptions& options, const LimitResult& base);
+// `fractions` (Ring::joint_fractions' measure, with any walls' encoded beds) with joints at `graze`
+// (grazing_fractions' on `ring`) instead of those within half kSpreadJointSpacing of the span of them,
+// merged (merged_fractions).
+std::vector<double> with_grazing(const Ring& ring, std::vector<double> fractions, const std::vector<double>& graze);
 
 }  // namespace ogive::spreading_detail
