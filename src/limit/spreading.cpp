@@ -657,12 +657,12 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
       // joint: once, joints where the least-thrust line grazes the continuous arch's faces, which the
       // finer rings keep (on walls and with crushing the refinement next to those hinges resolves them).
       const bool graze_now = !follows_start && !grazed && change > kSpreadCapacityTolerance;
-      const std::vector<double> graze = graze_now ? grazing_fractions(scene, frictionless, base)
+      const std::vector<double> graze = graze_now ? grazing_fractions(scene, frictionless, r.ring, start_state(r.ring, r.path.front()))
                                                   : std::vector<double>{};
       grazed = true;
       if ((other_start = graze.empty())) break;
       before.emplace(r, change);  // what stands where the ring with them does not converge
-      fractions = with_grazing(base.ring, std::move(fractions), graze);
+      fractions = with_grazing(r.ring, std::move(fractions), graze);
       r = follow(limit_detail::make_ring_at(scene, frictionless, fractions), start, limit, round);
       increments += r.increments, rolls += r.rolls;
       change = std::numeric_limits<double>::infinity(), refinement = -1;  // starts over from that ring

@@ -311,9 +311,20 @@ double coarsest_next_to(const Ring& ring, const std::vector<Hinge>& hinges) {
   return most;
 }
 
-std::vector<double> grazing_fractions(const Scene& scene, const LimitOptions& options, const LimitResult& base) {
-  const Ring& ring = base.ring;
-  const ThrustState& st = base.min_state;
+ThrustState start_state(const Ring& ring, const SpreadStep& s) {
+  if (s.hinges.empty()) return {};
+  const Hinge& h = s.hinges.front();
+  const limit_detail::LoadsLeftOfJoints left = limit_detail::loads_left_of_joints(ring);
+  const double live = ring.has_live_load() ? 1.0 : 0.0;  // the path's live loads at their full value
+  const std::size_t j = static_cast<std::size_t>(h.joint);
+  // The force across the hinge's joint and its moment about the origin (thrust_state's M_left there).
+  const Vec F(s.H, s.V_left - left.dead[j].force - live * left.live[j].force);
+  const double M = limit_detail::cross(h.point, F) + left.dead[j].moment + live * left.live[j].moment;
+  return thrust_state(ring, s.H, s.V_left, M, 1.0);
+}
+
+std::vector<double> grazing_fractions(const Scene& scene, const LimitOptions& options, const Ring& ring,
+                                      const ThrustState& st) {
   const std::vector<double> edges = limit_detail::load_fractions(*scene.curve, scene.thickness, scene.loads, options);
   std::vector<double> out;
   const int first = ring.left_springing(), m = ring.crown_joint() - first;  // voussoirs per side
