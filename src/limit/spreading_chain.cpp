@@ -344,8 +344,8 @@ std::vector<double> grazing_fractions(const Scene& scene, const LimitOptions& op
     const int i = j <= m ? j : 2 * m - j;  // its side's joint, counted from the springing
     if (i < 1 || i + 1 >= m) continue;     // a springing's, the crown's or the one beside the crown
     // At a load's edge the line bends more on one side than on the other: no parabola fits it there.
-    if (std::any_of(edges.begin(), edges.end(), [&](double x) { return std::abs(x - at(i)) <= limit_detail::kFractionGap; }))
-      continue;
+    const auto at_edge = [&](double x) { return std::abs(x - at(i)) <= limit_detail::kFractionGap; };
+    if (std::any_of(edges.begin(), edges.end(), at_edge)) continue;
     const int step = j <= m ? 1 : -1;       // towards the crown along the ring
     const double e0 = inside(h.joint - step, h.face), e1 = inside(h.joint, h.face), e2 = inside(h.joint + step, h.face);
     const double f0 = at(i - 1), f1 = at(i), f2 = at(i + 1);
@@ -368,7 +368,7 @@ std::vector<double> with_grazing(const Ring& ring, std::vector<double> fractions
     side += (ring.joints[static_cast<std::size_t>(j + 1)].intrados - ring.joints[static_cast<std::size_t>(j)].intrados).norm();
   // A joint this near a grazing point touches the line too (the line's distance from a face grows with
   // the square of the distance from the point): the contact would stand on two joints. The refinements
-  // that follow halve the voussoirs beside it no finer than kSpreadJointSpacing L, keeping as far off.
+  // that follow halve the voussoirs beside it to kSpreadJointSpacing L where the capacity settles there.
   const double reach = 0.5 * kSpreadJointSpacing * ring.span / side;
   std::erase_if(fractions, [&](double x) {
     return !limit_detail::is_wall_fraction(x) &&

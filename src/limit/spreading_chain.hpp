@@ -192,8 +192,8 @@ ThrustState start_state(const Ring& ring, const SpreadStep& s);
 // hinge on a face strictly inside a side, not on a load's edge joint (where the line's curvature jumps),
 // whose neighbours' crossings lie inside that face, the vertex of the parabola through the three joints'
 // distances from the face against their fractions (Ring::joint_fractions' measure), where none of the
-// ring's joints is already (to 1e-12). A joint there lets the least-thrust line touch the face where it
-// would on the continuous arch, whatever joints are added beside it.
+// ring's joints is already (to 1e-12). A joint there lets the line touch the face where it would on the
+// continuous arch, whatever joints are added beside it (but within reach: with_grazing).
 std::vector<double> grazing_fractions(const Scene& scene, const LimitOptions& options, const Ring& ring,
                                       const ThrustState& st);
 // `fractions` (Ring::joint_fractions' measure, with any walls' encoded beds) with joints at `graze`
