@@ -22,7 +22,9 @@ The model (docs/spreading.md):
   1e-7 L).
 
 Options: --joints N (radial joints over the half, default 4000), --thickness-ratio LIST, --increment
-(the span's increase per step over L, default 2.5e-4). Prints t/L, the capacity (the span's increase at
+(the span's increase per step over L, default 2.5e-4), --weight axis (the default) or voussoir (each
+voussoir's true weight at its centroid, `--weight voussoir`: an annular sector's, and for the crown
+wedge the extrados' sector less the triangle of its centre and the crown joint). Prints t/L, the capacity (the span's increase at
 collapse over L), H/V at d = 0 and at collapse, and the hinges' x/L (on the ring at d = 0).
 """
 import argparse
@@ -44,7 +46,7 @@ class Half:
     """The left half: joints 0 (springing bed) .. n (radial, through the intrados' crown point) and n + 1
     (the vertical crown joint); voussoirs 0 .. n (the last one the crown wedge)."""
 
-    def __init__(self, n, t, extra=()):
+    def __init__(self, n, t, extra=(), weight='axis'):
         ri, re = R - t / 2, R + t / 2
         a_i = math.acos((CENTRE[0] - L / 2) / ri)
         a_e = math.acos((CENTRE[0] - L / 2) / re)
@@ -61,8 +63,24 @@ class Half:
         da = hi - lo
         mid = 0.5 * (lo + hi)
         w = t * R * da  # unit weight: rho g = 1
-        rc = R * np.sin(da / 2) / (da / 2)
+        if weight == 'axis':
+            rc = R * np.sin(da / 2) / (da / 2)
+        else:  # the annular sector's centroid (its area is t R da too)
+            rc = 2.0 / 3.0 * (re**3 - ri**3) / (re**2 - ri**2) * np.sin(da / 2) / (da / 2)
         g = CENTRE + rc[:, None] * np.stack([-np.cos(mid), np.sin(mid)], axis=1)
+        if weight == 'voussoir':
+            # The crown wedge, from the radial joint through the intrados' crown point to the vertical
+            # crown joint under the extrados: the extrados' sector from a_i to a_e less the triangle of
+            # the centre and the crown joint's two ends.
+            th = a_e - a_i
+            sector_area = 0.5 * re**2 * th
+            sector_c = CENTRE + (4 * re * math.sin(th / 2) / (3 * th)) * np.array([-math.cos(a_i + th / 2),
+                                                                                   math.sin(a_i + th / 2)])
+            tri = [CENTRE, I[-1], E[-1]]
+            tri_area = 0.5 * abs(cross(tri[1] - tri[0], tri[2] - tri[0]))
+            tri_c = (tri[0] + tri[1] + tri[2]) / 3
+            w[-1] = sector_area - tri_area
+            g[-1] = (sector_area * sector_c - tri_area * tri_c) / w[-1]
         self.n, self.t, self.I, self.E, self.w, self.g, self.a = n, t, I, E, w, g, a
         self.V = w.sum()
 
@@ -173,14 +191,14 @@ def start(half, tol):
     return b, c
 
 
-def tangent_angles(t):
+def tangent_angles(t, weight):
     """The hinges of the continuous arch at d = 0: the angles (from the springing) of the intrados and
     extrados points where the least-thrust line touches the faces. Any line inside the arch passes
     above the intrados at b and below the extrados at c, so its thrust is at least that of the line
     through both (horizontal at the crown): the least thrust is the largest of those, found over the
     two angles on a ring with joints there alone (the loads' moments do not depend on the joints)."""
     def H(x):
-        half = Half(0, t, x)
+        half = Half(0, t, x, weight)
         ib, ic = int(np.searchsorted(half.a, x[0])), int(np.searchsorted(half.a, x[1]))
         st = half.state(ib, ic, 0.0)
         return st[0]
@@ -215,8 +233,8 @@ def golden(f, lo, hi, tol=1e-13):
     return 0.5 * (lo + hi)
 
 
-def capacity(n, t, increment, tol_ratio=1e-12, exact=True):
-    half = Half(n, t, tangent_angles(t) if exact else ())
+def capacity(n, t, increment, tol_ratio=1e-12, exact=True, weight='axis'):
+    half = Half(n, t, tangent_angles(t, weight) if exact else (), weight)
     tol = tol_ratio * L
     b, c = start(half, tol)
     H0 = half.state(b, c, 0.0)[0]
@@ -245,10 +263,11 @@ def main():
     p.add_argument('--joints', type=int, default=4000)
     p.add_argument('--thickness-ratio', default='0.06,0.1,0.14')
     p.add_argument('--increment', type=float, default=2.5e-4)
+    p.add_argument('--weight', choices=('axis', 'voussoir'), default='axis')
     o = p.parse_args()
     print('joints,thickness_ratio,capacity,H_over_V_d0,H_over_V_collapse,hinges_d0,hinges_collapse')
     for t in o.thickness_ratio.split(','):
-        cap, hv0, hv, h0, h1, _ = capacity(o.joints, float(t), o.increment)
+        cap, hv0, hv, h0, h1, _ = capacity(o.joints, float(t), o.increment, weight=o.weight)
         print(f'{o.joints},{t},{cap:.6f},{hv0:.6f},{hv:.6f},{h0[0]:.6f}:intrados;{h0[1]:.6f}:extrados,'
               f'{h1[0]:.6f}:intrados;{h1[1]:.6f}:extrados', flush=True)
 

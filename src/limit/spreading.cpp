@@ -654,16 +654,16 @@ SpreadResult analyse_spreading(const Scene& scene, const LimitOptions& limit, co
     if (!same_places(finer.path.front().hinges, r.path.front().hinges, r.ring.span) &&
         !(follows_start && slid_along(finer.path.front().hinges, r.path.front().hinges, kNewHingeReach * r.ring.span))) {
       // A hinge at d = 0 that stays to collapse (a pointed arch's haunch) carries the capacity with its
-      // joint: once, joints where the least-thrust line grazes the continuous arch's faces, which the
+      // joint: once, joints where the path's line at d = 0 grazes the continuous arch's faces, which the
       // finer rings keep (on walls and with crushing the refinement next to those hinges resolves them).
       const bool graze_now = !follows_start && !grazed && change > kSpreadCapacityTolerance;
-      const std::vector<double> graze = graze_now ? grazing_fractions(base.ring, base.min_state, base.min_state.hinges)
-                                                  : std::vector<double>{};
+      const std::vector<double> graze =
+          graze_now ? grazing_fractions(scene, frictionless, r.ring, start_state(r.ring, r.path.front()))
+                    : std::vector<double>{};
       grazed = true;
       if ((other_start = graze.empty())) break;
       before.emplace(r, change);  // what stands where the ring with them does not converge
-      fractions.insert(fractions.end(), graze.begin(), graze.end());
-      fractions = limit_detail::merged_fractions(std::move(fractions));
+      fractions = with_grazing(r.ring, std::move(fractions), graze);
       r = follow(limit_detail::make_ring_at(scene, frictionless, fractions), start, limit, round);
       increments += r.increments, rolls += r.rolls;
       change = std::numeric_limits<double>::infinity(), refinement = -1;  // starts over from that ring

@@ -7,6 +7,9 @@
 
 #include <Eigen/SVD>
 
+#include "limit/limit_internal.hpp"
+#include "ogive/limit/spreading.hpp"
+
 namespace ogive::spreading_detail {
 
 VerticalLoad moved_load(const VerticalLoad& l, const Rigid& m) {
@@ -308,7 +311,21 @@ double coarsest_next_to(const Ring& ring, const std::vector<Hinge>& hinges) {
   return most;
 }
 
-std::vector<double> grazing_fractions(const Ring& ring, const ThrustState& st, const std::vector<Hinge>& hinges) {
+ThrustState start_state(const Ring& ring, const SpreadStep& s) {
+  if (s.hinges.empty()) return {};
+  const Hinge& h = s.hinges.front();
+  const limit_detail::LoadsLeftOfJoints left = limit_detail::loads_left_of_joints(ring);
+  const double live = ring.has_live_load() ? 1.0 : 0.0;  // the path's live loads at their full value
+  const std::size_t j = static_cast<std::size_t>(h.joint);
+  // The force across the hinge's joint and its moment about the origin (thrust_state's M_left there).
+  const Vec F(s.H, s.V_left - left.dead[j].force - live * left.live[j].force);
+  const double M = limit_detail::cross(h.point, F) + left.dead[j].moment + live * left.live[j].moment;
+  return thrust_state(ring, s.H, s.V_left, M, 1.0);
+}
+
+std::vector<double> grazing_fractions(const Scene& scene, const LimitOptions& options, const Ring& ring,
+                                      const ThrustState& st) {
+  const std::vector<double> edges = limit_detail::load_fractions(*scene.curve, scene.thickness, scene.loads, options);
   std::vector<double> out;
   const int first = ring.left_springing(), m = ring.crown_joint() - first;  // voussoirs per side
   const std::vector<double>& f = ring.joint_fractions;
@@ -321,11 +338,14 @@ std::vector<double> grazing_fractions(const Ring& ring, const ThrustState& st, c
     const double s = (st.crossing[static_cast<std::size_t>(j)] - jt.intrados).dot(e) / e.norm();
     return face == Face::intrados ? s : e.norm() - s;
   };
-  for (const Hinge& h : hinges) {
+  for (const Hinge& h : st.hinges) {
     if (h.face == Face::axis) continue;
     const int j = h.joint - first;
     const int i = j <= m ? j : 2 * m - j;  // its side's joint, counted from the springing
     if (i < 1 || i + 1 >= m) continue;     // a springing's, the crown's or the one beside the crown
+    // At a load's edge the line bends more on one side than on the other: no parabola fits it there.
+    const auto at_edge = [&](double x) { return std::abs(x - at(i)) <= limit_detail::kFractionGap; };
+    if (std::any_of(edges.begin(), edges.end(), at_edge)) continue;
     const int step = j <= m ? 1 : -1;       // towards the crown along the ring
     const double e0 = inside(h.joint - step, h.face), e1 = inside(h.joint, h.face), e2 = inside(h.joint + step, h.face);
     const double f0 = at(i - 1), f1 = at(i), f2 = at(i + 1);
@@ -339,6 +359,23 @@ std::vector<double> grazing_fractions(const Ring& ring, const ThrustState& st, c
       out.push_back(vertex);
   }
   return out;
+}
+
+std::vector<double> with_grazing(const Ring& ring, std::vector<double> fractions, const std::vector<double>& graze) {
+  // The intrados' length of a side (m), the fractions' measure: its chords, to well within the reach below.
+  double side = 0;
+  for (int j = ring.left_springing(); j < ring.crown_joint(); ++j)
+    side += (ring.joints[static_cast<std::size_t>(j + 1)].intrados - ring.joints[static_cast<std::size_t>(j)].intrados).norm();
+  // A joint this near a grazing point touches the line too (the line's distance from a face grows with
+  // the square of the distance from the point): the contact would stand on two joints. The refinements
+  // that follow halve the voussoirs beside it to kSpreadJointSpacing L where the capacity settles there.
+  const double reach = 0.5 * kSpreadJointSpacing * ring.span / side;
+  std::erase_if(fractions, [&](double x) {
+    return !limit_detail::is_wall_fraction(x) &&
+           std::any_of(graze.begin(), graze.end(), [&](double g) { return std::abs(x - g) < reach; });
+  });
+  fractions.insert(fractions.end(), graze.begin(), graze.end());
+  return limit_detail::merged_fractions(std::move(fractions));
 }
 
 }  // namespace ogive::spreading_detail

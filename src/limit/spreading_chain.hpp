@@ -10,6 +10,7 @@
 #include <Eigen/Geometry>
 
 #include "ogive/limit/limit.hpp"
+#include "ogive/limit/spreading.hpp"
 
 namespace ogive::spreading_detail {
 
@@ -182,12 +183,22 @@ bool same_places(const std::vector<Hinge>& a, const std::vector<Hinge>& b, doubl
 std::vector<Hinge> rolling_hinges(const Ring& ring, const std::vector<Hinge>& hinges);
 double coarsest_next_to(const Ring& ring, const std::vector<Hinge>& hinges);
 
-// Where the thrust line `st` on `ring` (an arch on the ground, its joints at ring.joint_fractions) grazes
-// a face at one of `hinges` on the continuous arch: for each hinge on a face strictly inside a side
+// The thrust state of the path's state at d = 0 `s` on `ring` (an arch on the ground): its H and V_left,
+// through its first hinge's point (the least-work state: limit's minimum-thrust one unless a springing
+// settles). No state (not found()) where it has no hinge.
+ThrustState start_state(const Ring& ring, const SpreadStep& s);
+// Where the line `st` on `ring` (of `scene` with `options`: an arch on the ground, its joints at
+// ring.joint_fractions) grazes a face at one of its hinges on the continuous arch: for each
+// hinge on a face strictly inside a side, not on a load's edge joint (where the line's curvature jumps),
 // whose neighbours' crossings lie inside that face, the vertex of the parabola through the three joints'
 // distances from the face against their fractions (Ring::joint_fractions' measure), where none of the
-// ring's joints is already (to 1e-12). A joint there lets the least-thrust line touch the face where it
-// would on the continuous arch, whatever joints are added beside it.
-std::vector<double> grazing_fractions(const Ring& ring, const ThrustState& st, const std::vector<Hinge>& hinges);
+// ring's joints is already (to 1e-12). A joint there lets the line touch the face where it would on the
+// continuous arch, whatever joints are added beside it (but within reach: with_grazing).
+std::vector<double> grazing_fractions(const Scene& scene, const LimitOptions& options, const Ring& ring,
+                                      const ThrustState& st);
+// `fractions` (Ring::joint_fractions' measure, with any walls' encoded beds) with joints at `graze`
+// (grazing_fractions' on `ring`) instead of those within half kSpreadJointSpacing of the span of them,
+// merged (merged_fractions).
+std::vector<double> with_grazing(const Ring& ring, std::vector<double> fractions, const std::vector<double>& graze);
 
 }  // namespace ogive::spreading_detail
