@@ -168,7 +168,8 @@ def least_by_milp(A, c, G, lam_max, least=True, seconds=300):
     if r.x is None:
         return None, r
     u, y, b = r.x[:4], r.x[4:4 + R], r.x[4 + R:]
-    return (u, y, np.flatnonzero(b > 0.5)), r
+    # The mechanism's rows: in S with a multiplier (a row in S with y = 0 is merely tight).
+    return (u, y, np.flatnonzero((b > 0.5) & (y > 1e-9 * np.max(y)))), r
 
 
 def fixed_point(A, c, G, u, mu):
