@@ -182,8 +182,10 @@ SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptio
           a.outcome == LimitLp::Outcome::infeasible
               ? fmt::format("no state with the joints' normal forces held at iteration {}: the last state's normal "
                             "forces (factor {:.6g}) differed from the held ones by {:.3g} of the loads, and steps "
-                            "towards them down to {:.0e} of the way left no state",
-                            it, last_factor, previous, kSlidingRetryFloor)
+                            "towards them down to {:.0e} of the way left no state{}; a non-associative collapse state "
+                            "need not exist (a search of every one finds none on some arches: docs/limit-analysis.md)",
+                            it, last_factor, previous, kSlidingRetryFloor,
+                            faces ? " (nor did the faces of fixed points its bases certify)" : "")
               : fmt::format("no state with the joints' normal forces held at iteration {} ({})", it,
                             a.outcome == LimitLp::Outcome::unbounded ? "unbounded"
                                                                       : (a.failure ? a.failure : "LP failure"));

@@ -310,6 +310,16 @@ bool horizontal_collapse(const Ring& ring, const LimitOptions& options, Work& wo
   return true;
 }
 
+// The least of the non-associative collapse states the iteration reaches is one, but another (other
+// joints sliding) can have a lower factor: benchmarks/limit/nonassociative_enumeration.py finds one at
+// factor 0 where the associative optimum is itself a fixed point (docs/limit-analysis.md). The least of
+// all is a program with complementarity conditions, which ogive does not solve: every answer says so.
+constexpr const char* kNotLeast = "non-associative: a collapse state of a lower factor with other joints sliding is "
+                                  "not excluded (the least of all is not proven)";
+bool non_associative(const LimitOptions& o) {
+  return o.friction > 0 && o.friction_model == FrictionModel::non_associative;
+}
+
 // Why a collapse load factor has no kinematic one to check it against.
 std::string no_mechanism_note(const LimitResult& r, const LimitOptions& options) {
   if (r.collapse_state.hinges.size() > kMaxMechanismHinges)
@@ -475,6 +485,8 @@ Round analyse_round(const Scene& scene, const LimitOptions& options, const std::
   if (!bracketed) r.message = fmt::format("t_min below {} m: not searched further", hi);
   add_notes(r, options, walls.note, forceless, unbounded_thrust, live, sliding_failure);
   if (!sliding_note.empty()) r.message += (r.message.empty() ? "" : "; ") + sliding_note;
+  if (non_associative(options) && !std::isnan(r.load_factor()))
+    r.message += std::string(r.message.empty() ? "" : "; ") + kNotLeast;
   return round;
 }
 
@@ -624,6 +636,8 @@ LimitResult analyse_limit(const Scene& scene, const LimitOptions& options) {
     r.horizontal_ring = std::move(h.ring);
     if (!h.collapse.sliding_note.empty())
       r.message += std::string(r.message.empty() ? "" : "; ") + "a_c " + h.collapse.sliding_note;
+    if (non_associative(options) && std::isnan(r.load_factor()) && !std::isnan(r.horizontal_load_factor()))
+      r.message += std::string(r.message.empty() ? "" : "; ") + "a_c " + kNotLeast;
     if (!h.collapse.mechanism_hinges.empty()) r.horizontal_state.hinges = std::move(h.collapse.mechanism_hinges);
     if (fails_virtual_work(r, "collapse acceleration", r.horizontal_load_factor(), r.horizontal_load_factor_mechanism))
       return r;
