@@ -139,6 +139,29 @@ std::string face_note(LimitLp& lp, const std::vector<int>& face, double factor) 
 
 }  // namespace
 
+std::optional<LimitLp::Answer> least_thrust_collapse(LimitLp& lp, const Ring& ring, const LimitOptions& options,
+                                                     double load_scale, const SolveWarm& solve) {
+  if (!(options.friction > 0) || options.friction_model != FrictionModel::non_associative ||
+      std::isfinite(options.compressive_strength))
+    return std::nullopt;
+  lp.hold_sliding({});
+  const LimitLp::Answer least = lp.extreme_thrust(0.0, false);
+  if (least.outcome != LimitLp::Outcome::optimal) return std::nullopt;
+  // Held at the least thrust's own normal forces, the program's optimum is a fixed point of the
+  // iteration when its normal forces are those (the same test as every iterate's): the arch at that
+  // thrust slides under its weight alone and no live load raises it.
+  const std::vector<double> held = lp.normal_forces(least);
+  lp.hold_sliding(held);
+  const LimitLp::Answer c = solve(nullptr);
+  std::optional<LimitLp::Answer> out;
+  if (c.outcome == LimitLp::Outcome::optimal) {
+    Iterate i = iterate_at(lp, ring, load_scale, c, held);
+    if (i.change <= kSlidingTolerance) out = std::move(i.answer);
+  }
+  lp.hold_sliding({});
+  return out;
+}
+
 SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptions& options,
                                  const LimitLp::Answer& first, double load_scale, const SolveWarm& solve) {
   SlidingIteration out;

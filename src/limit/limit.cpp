@@ -310,6 +310,10 @@ bool horizontal_collapse(const Ring& ring, const LimitOptions& options, Work& wo
   return true;
 }
 
+// A load factor of 0 (an arch that a sliding state holds at its weight alone) is round-off's from one
+// ring or program to the next: its changes count relative to the programs' own accuracy at least.
+constexpr double kZeroFactor = 1e-9;
+
 // The least of the non-associative collapse states the iteration reaches is one, but another (other
 // joints sliding) can have a lower factor: benchmarks/limit/nonassociative_enumeration.py finds one at
 // factor 0 where the associative optimum is itself a fixed point (docs/limit-analysis.md). The least of
@@ -359,6 +363,16 @@ LimitLp::Answer collapse_answer(LimitLp& lp, const Ring& ring, const LimitOption
   failure = sliding.failure;
   note = sliding.note;
   if (!failure.empty()) sliding.answer.outcome = LimitLp::Outcome::infeasible;
+  else if (std::optional<LimitLp::Answer> low =
+               limit_detail::least_thrust_collapse(lp, ring, options, std::abs(ring.total_live()), collapse);
+           low && sliding.answer.outcome == LimitLp::Outcome::optimal &&
+           low->load_factor <
+               sliding.answer.load_factor - kLimitTolerance * std::max(std::abs(sliding.answer.load_factor), kZeroFactor)) {
+    note = fmt::format("non-associative: the arch at its least thrust under its own weight slides at factor {:.6g}, "
+                       "below the {:.6g} the iteration from the associative optimum reached",
+                       low->load_factor, sliding.answer.load_factor);
+    return *low;
+  }
   return sliding.answer;
 }
 
@@ -502,9 +516,6 @@ double largest_change(const LimitResult& a, const LimitResult& b) {
     const double scale = std::max({std::abs(x), std::abs(y), floor});
     if (scale > 0) worst = std::max(worst, std::abs(x - y) / scale);
   };
-  // A load factor of 0 (an arch that a sliding state holds at its weight alone) is round-off's from one
-  // ring to the next: its changes count relative to the programs' own accuracy at least.
-  constexpr double kZeroFactor = 1e-9;
   compare(a.H_min(), b.H_min());
   compare(a.H_max(), b.H_max());
   compare(a.thickness_min, b.thickness_min);

@@ -286,6 +286,14 @@ using SolveWarm = std::function<LimitLp::Answer(const std::vector<int>*)>;
 // `load_scale`: the live load's magnitude at factor 1 (added to the dead loads times the factor found).
 SlidingIteration non_associative(LimitLp& lp, const Ring& ring, const LimitOptions& options,
                                  const LimitLp::Answer& first, double load_scale, const SolveWarm& solve);
+// A second start of the non-associative search: the state of least thrust under the dead loads alone
+// (the thrust a spreading arch falls to), its friction rows held at its own normal forces. Where the
+// program's optimum then passes the iteration's test, it is a collapse state (inside every cone, a
+// fixed point), often at a factor of 0: the arch at its least thrust slides under its weight, a
+// mechanism the iteration from the associative optimum need not reach (it can be a fixed point
+// itself). None without non-associative friction, with crushing, or where the test fails.
+std::optional<LimitLp::Answer> least_thrust_collapse(LimitLp& lp, const Ring& ring, const LimitOptions& options,
+                                                     double load_scale, const SolveWarm& solve);
 // With friction: appends the refinement (add_refinement's) next to the joints of `st` whose force lies
 // on Coulomb's cone. A sliding joint bounds a state as a hinge does, and a finer ring moves it (with
 // vertical joints the one next to a springing, nearly along the thrust, slides first, and lies closer to
